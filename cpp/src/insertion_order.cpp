@@ -1,0 +1,102 @@
+#include "insertion_order.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace geocdt {
+
+std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y) {
+  std::uint32_t d = 0;
+  for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+    const std::uint32_t rx = (x & s) ? 1 : 0;
+    const std::uint32_t ry = (y & s) ? 1 : 0;
+    d += s * s * ((3 * rx) ^ ry);
+    if (ry == 0) {  // rotate the quadrant so that the curve stays continuous
+      if (rx == 1) {
+        x = 0xFFFF - x;
+        y = 0xFFFF - y;
+      }
+      std::swap(x, y);
+    }
+  }
+  return d;
+}
+
+namespace {
+
+// Sorts ids[begin, end) by their Hilbert keys with a two-pass 16-bit radix sort.
+void sortByKey(std::vector<std::uint64_t>& items, std::vector<std::uint64_t>& scratch,
+               std::size_t begin, std::size_t end) {
+  std::vector<std::uint32_t> count(1u << 16);
+  for (int pass = 0; pass < 2; ++pass) {
+    const int shift = 32 + 16 * pass;
+    std::fill(count.begin(), count.end(), 0);
+    for (std::size_t i = begin; i < end; ++i) ++count[(items[i] >> shift) & 0xFFFF];
+    std::uint32_t sum = static_cast<std::uint32_t>(begin);
+    for (auto& c : count) {
+      const std::uint32_t n = c;
+      c = sum;
+      sum += n;
+    }
+    for (std::size_t i = begin; i < end; ++i) scratch[count[(items[i] >> shift) & 0xFFFF]++] = items[i];
+    std::copy(scratch.begin() + begin, scratch.begin() + end, items.begin() + begin);
+  }
+}
+
+std::uint32_t toCell(double v, double min, double scale) {
+  const double c = (v - min) * scale;
+  if (!(c > 0)) return 0;
+  return c >= 65535.0 ? 65535u : static_cast<std::uint32_t>(c);
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
+                                          InsertionOrder order) {
+  std::vector<std::uint32_t> ids(count);
+  std::iota(ids.begin(), ids.end(), 0u);
+  if (order == InsertionOrder::Input || count < 3) return ids;
+
+  double minX = xy[0], minY = xy[1], maxX = xy[0], maxY = xy[1];
+  for (std::uint32_t i = 1; i < count; ++i) {
+    minX = std::min(minX, xy[2 * i]);
+    maxX = std::max(maxX, xy[2 * i]);
+    minY = std::min(minY, xy[2 * i + 1]);
+    maxY = std::max(maxY, xy[2 * i + 1]);
+  }
+  // One scale for both axes keeps the curve's cells square.
+  const double extent = std::max(maxX - minX, maxY - minY);
+  const double scale = extent > 0 ? 65535.0 / extent : 0.0;
+
+  std::vector<std::uint64_t> items(count), scratch(count);
+  if (order == InsertionOrder::Brio) {
+    // Random rounds of doubling size (a fixed seed keeps results reproducible).
+    std::uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (std::uint32_t i = count; i > 1; --i) {
+      state ^= state << 13;
+      state ^= state >> 7;
+      state ^= state << 17;
+      std::swap(ids[i - 1], ids[state % i]);
+    }
+  }
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::uint32_t id = ids[i];
+    const std::uint64_t key =
+        hilbertIndex(toCell(xy[2 * id], minX, scale), toCell(xy[2 * id + 1], minY, scale));
+    items[i] = key << 32 | id;
+  }
+  if (order == InsertionOrder::Hilbert) {
+    sortByKey(items, scratch, 0, count);
+  } else {
+    // Rounds of halving size from the back: [n/2, n), [n/4, n/2), ..., each sorted alone.
+    for (std::size_t end = count; end > 0;) {
+      const std::size_t begin = end > 64 ? end / 2 : 0;
+      sortByKey(items, scratch, begin, end);
+      end = begin;
+    }
+  }
+  for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(items[i]);
+  return ids;
+}
+
+}  // namespace geocdt

@@ -1,0 +1,18 @@
+#pragma once
+// The order in which a batch of points is inserted. Spatially coherent orders keep the
+// walk short and the memory traffic local.
+#include <cstdint>
+#include <vector>
+
+#include "geocdt/triangulation.h"
+
+namespace geocdt {
+
+// Returns the indices 0..count-1 of the points xy in the order to insert them.
+std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
+                                          InsertionOrder order);
+
+// Position along a Hilbert curve of 2^16 x 2^16 cells, x and y in [0, 65535].
+std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y);
+
+}  // namespace geocdt

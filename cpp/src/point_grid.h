@@ -1,0 +1,63 @@
+#pragma once
+// Skvortsov's dynamic uniform grid: m x m cells over a bounding box, each remembering a
+// triangle near it. It starts at m = 1 and doubles per axis when the points inserted exceed
+// density * m * m, each old cell handing its triangle to its four children.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace geocdt {
+
+class PointGrid {
+ public:
+  void reset(double minX, double minY, double maxX, double maxY, double density) {
+    minX_ = minX;
+    minY_ = minY;
+    const double w = maxX - minX, h = maxY - minY;
+    // A degenerate box maps every point to one column or row: the walk does the rest.
+    scaleX_ = w > 0 ? 1.0 / w : 0.0;
+    scaleY_ = h > 0 ? 1.0 / h : 0.0;
+    density_ = density > 0 ? density : 1.0;
+    m_ = 1;
+    cells_.assign(1, -1);
+  }
+
+  bool empty() const { return cells_.empty(); }
+  std::uint32_t size() const { return m_; }
+  std::size_t memoryBytes() const { return cells_.capacity() * sizeof(std::int32_t); }
+
+  std::int32_t& cellAt(double x, double y) {
+    return cells_[static_cast<std::size_t>(row(y)) * m_ + column(x)];
+  }
+
+  // Called after each insertion with the number of points inserted so far.
+  void grow(std::uint64_t inserted) {
+    if (static_cast<double>(inserted) <= density_ * m_ * m_ || m_ >= kMaxSize) return;
+    const std::uint32_t m = m_ * 2;
+    std::vector<std::int32_t> cells(static_cast<std::size_t>(m) * m);
+    for (std::uint32_t j = 0; j < m; ++j)
+      for (std::uint32_t i = 0; i < m; ++i)
+        cells[static_cast<std::size_t>(j) * m + i] = cells_[static_cast<std::size_t>(j / 2) * m_ + i / 2];
+    cells_.swap(cells);
+    m_ = m;
+  }
+
+  void fill(std::int32_t triangle) { std::fill(cells_.begin(), cells_.end(), triangle); }
+
+ private:
+  static constexpr std::uint32_t kMaxSize = 1u << 13;
+
+  std::uint32_t column(double x) const { return clampCell((x - minX_) * scaleX_); }
+  std::uint32_t row(double y) const { return clampCell((y - minY_) * scaleY_); }
+  std::uint32_t clampCell(double unit) const {
+    const double c = unit * m_;
+    if (!(c > 0)) return 0;  // also catches NaN from out-of-range arithmetic
+    return c >= m_ ? m_ - 1 : static_cast<std::uint32_t>(c);
+  }
+
+  double minX_ = 0, minY_ = 0, scaleX_ = 0, scaleY_ = 0, density_ = 2;
+  std::uint32_t m_ = 0;
+  std::vector<std::int32_t> cells_;
+};
+
+}  // namespace geocdt

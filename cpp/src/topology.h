@@ -1,0 +1,96 @@
+#pragma once
+// Triangles as flat arrays in delaunator's layout, closed by a ghost vertex at infinity so
+// that every half-edge has a twin. Slots of removed triangles go to a free list for reuse.
+#include <cstdint>
+#include <vector>
+
+namespace geocdt {
+
+inline constexpr std::uint32_t kGhost = 0xFFFFFFFFu;  // the vertex at infinity
+inline constexpr std::uint32_t kFreeSlot = 0xFFFFFFFEu;
+
+inline std::int32_t nextEdge(std::int32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
+inline std::int32_t prevEdge(std::int32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
+
+struct Topology {
+  std::vector<std::uint32_t> tri;    // 3 vertex ids per slot
+  std::vector<std::int32_t> adj;     // twin of each half-edge
+  std::vector<std::uint8_t> fixed;   // 1 when the half-edge is constrained
+  std::vector<std::int32_t> freeSlots;
+
+  std::int32_t slotCount() const { return static_cast<std::int32_t>(tri.size() / 3); }
+  bool isFree(std::int32_t t) const { return tri[3 * t] == kFreeSlot; }
+  bool isGhost(std::int32_t t) const {
+    return tri[3 * t] == kGhost || tri[3 * t + 1] == kGhost || tri[3 * t + 2] == kGhost;
+  }
+
+  void reserve(std::size_t slots) {
+    tri.reserve(3 * slots);
+    adj.reserve(3 * slots);
+    fixed.reserve(3 * slots);
+  }
+
+  void clear() {
+    tri.clear();
+    adj.clear();
+    fixed.clear();
+    freeSlots.clear();
+  }
+
+  // A slot for a new triangle; its twins are left unset (-1) for the caller to link.
+  std::int32_t addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    std::int32_t t;
+    if (!freeSlots.empty()) {
+      t = freeSlots.back();
+      freeSlots.pop_back();
+    } else {
+      t = slotCount();
+      tri.resize(tri.size() + 3);
+      adj.resize(adj.size() + 3);
+      fixed.resize(fixed.size() + 3);
+    }
+    setTriangle(t, a, b, c);
+    for (int k = 0; k < 3; ++k) {
+      adj[3 * t + k] = -1;
+      fixed[3 * t + k] = 0;
+    }
+    return t;
+  }
+
+  void setTriangle(std::int32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    tri[3 * t] = a;
+    tri[3 * t + 1] = b;
+    tri[3 * t + 2] = c;
+  }
+
+  void removeTriangle(std::int32_t t) {
+    tri[3 * t] = tri[3 * t + 1] = tri[3 * t + 2] = kFreeSlot;
+    freeSlots.push_back(t);
+  }
+
+  void link(std::int32_t e, std::int32_t f) {
+    adj[e] = f;
+    if (f >= 0) adj[f] = e;
+  }
+
+  // Replaces the diagonal of the quad formed by the triangles of e and its twin.
+  // Before: e = x->y in (x, y, v), f = y->x in (y, x, d). After: (d, y, v) and (v, x, d);
+  // the new diagonal is prevEdge(e) = v->d and prevEdge(f) = d->v.
+  void flip(std::int32_t e) {
+    const std::int32_t f = adj[e];
+    const std::int32_t e2 = prevEdge(e), f2 = prevEdge(f);
+    const std::uint32_t v = tri[e2], d = tri[f2];
+    const std::int32_t twinE2 = adj[e2], twinF2 = adj[f2];
+    const std::uint8_t fixedE2 = fixed[e2], fixedF2 = fixed[f2];
+    tri[e] = d;
+    tri[f] = v;
+    link(e, twinF2);
+    fixed[e] = fixedF2;
+    link(f, twinE2);
+    fixed[f] = fixedE2;
+    link(e2, f2);
+    fixed[e2] = fixed[f2] = 0;
+  }
+};
+
+}  // namespace geocdt

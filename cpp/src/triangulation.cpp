@@ -1,0 +1,160 @@
+#include "geocdt/triangulation.h"
+
+#include <cmath>
+#include <new>
+#include <string>
+
+#include "triangulation_state.h"
+
+namespace geocdt {
+
+namespace {
+
+Status checkCoordinates(const double* xy, std::size_t count, const char* what) {
+  if (count > 0 && xy == nullptr)
+    return {StatusCode::InvalidArgument, std::string(what) + ": null coordinates with a count"};
+  for (std::size_t i = 0; i < 2 * count; ++i) {
+    const double v = xy[i];
+    if (std::isfinite(v) && std::fabs(v) <= kMaxCoordinate) continue;
+    const std::size_t point = i / 2;
+    std::string message = std::string(what) + " " + std::to_string(point) + " has " +
+                          (i % 2 ? "y" : "x") + " = " +
+                          (std::isnan(v) ? std::string("NaN") : std::to_string(v)) + ": ";
+    message += std::isfinite(v) ? "coordinates must lie within +-1e150"
+                                : "coordinates must be finite numbers";
+    Status s{StatusCode::InvalidCoordinate, message, point};
+    return s;
+  }
+  return Status::success();
+}
+
+Status outOfMemory() {
+  return {StatusCode::OutOfMemory, "out of memory: the input is too large for the available memory"};
+}
+
+}  // namespace
+
+Triangulation::Triangulation(const Options& options)
+    : state_(std::make_unique<State>(options)) {}
+Triangulation::~Triangulation() = default;
+Triangulation::Triangulation(Triangulation&&) noexcept = default;
+Triangulation& Triangulation::operator=(Triangulation&&) noexcept = default;
+
+std::size_t Triangulation::vertexCount() const { return state_->delaunay.vertexCount(); }
+const std::vector<double>& Triangulation::points() const { return state_->delaunay.xy; }
+const Stats& Triangulation::stats() const { return state_->delaunay.stats; }
+std::size_t Triangulation::polylineCount() const { return state_->constraints.polylineCount; }
+
+std::size_t Triangulation::triangleCount() const {
+  const Topology& topo = state_->delaunay.topo;
+  std::size_t n = 0;
+  for (std::int32_t t = 0; t < topo.slotCount(); ++t)
+    if (!topo.isFree(t) && !topo.isGhost(t)) ++n;
+  return n;
+}
+
+Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds) {
+  Status s = checkCoordinates(xy, count, "point");
+  if (!s.ok()) return s;
+  Delaunay& d = state_->delaunay;
+  if (count >= kGhost - 2 - d.vertexCount())
+    return {StatusCode::InvalidArgument, "too many points: at most 4294967293 vertices"};
+  try {
+    std::vector<std::uint32_t> scratch;
+    std::uint32_t* ids = vertexIds;
+    if (ids == nullptr) {
+      scratch.resize(count);
+      ids = scratch.data();
+    }
+    d.topo.reserve(d.topo.tri.size() / 3 + 2 * count + 4);
+    state_->slotMapValid = false;
+    s = d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
+  } catch (const std::bad_alloc&) {
+    d.clear();
+    state_->constraints.clear();
+    state_->slotMapValid = false;
+    return outOfMemory();
+  }
+  return s;
+}
+
+Location Triangulation::locate(double x, double y) const {
+  Location loc;
+  if (!std::isfinite(x) || !std::isfinite(y)) return loc;
+  Delaunay& d = state_->delaunay;
+  const Hit h = d.locate(x, y);
+  const Topology& topo = d.topo;
+  if (h.kind == Hit::Kind::Empty || h.kind == Hit::Kind::Failed) return loc;
+  if (!state_->slotMapValid) {
+    state_->slotToTriangle = slotIndices(topo);
+    state_->slotMapValid = true;
+  }
+  std::int32_t e = h.edge;
+  switch (h.kind) {
+    case Hit::Kind::Outside:
+      loc.kind = Location::Kind::Outside;
+      loc.vertices[0] = topo.tri[e];
+      loc.vertices[1] = topo.tri[nextEdge(e)];
+      return loc;
+    case Hit::Kind::Vertex:
+      loc.kind = Location::Kind::Vertex;
+      loc.vertices[0] = topo.tri[e];
+      // Turn around the vertex until a real triangle holds it.
+      for (int guard = 0; topo.isGhost(e / 3) && guard < 3; ++guard) e = topo.adj[prevEdge(e)];
+      break;
+    case Hit::Kind::Edge:
+      loc.kind = Location::Kind::Edge;
+      loc.vertices[0] = topo.tri[e];
+      loc.vertices[1] = topo.tri[nextEdge(e)];
+      if (topo.isGhost(e / 3)) e = topo.adj[e];
+      break;
+    default:
+      loc.kind = Location::Kind::Face;
+      break;
+  }
+  loc.triangle = state_->slotToTriangle[e / 3];
+  if (loc.kind == Location::Kind::Face)
+    for (int k = 0; k < 3; ++k) loc.vertices[k] = topo.tri[3 * (e / 3) + k];
+  return loc;
+}
+
+Mesh Triangulation::mesh(const MeshOptions& options) const {
+  return exportMesh(state_->delaunay, state_->constraints, options);
+}
+
+Mesh Triangulation::release(const MeshOptions& options) {
+  Mesh m = exportMesh(state_->delaunay, state_->constraints, options);
+  m.points = std::move(state_->delaunay.xy);
+  state_->delaunay.clear();
+  state_->constraints.clear();
+  state_->slotMapValid = false;
+  return m;
+}
+
+Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
+                   std::size_t polylineCount, const Options& options,
+                   const MeshOptions& meshOptions, Mesh& out,
+                   std::vector<std::uint32_t>* inputToVertex) {
+  Triangulation t(options);
+  std::vector<std::uint32_t> ids;
+  Status s;
+  try {
+    std::size_t total = count;
+    for (std::size_t i = 0; i < polylineCount; ++i) total += polylines[i].count;
+    ids.resize(total);
+    s = t.insertPoints(xy, count, ids.data());
+    std::size_t offset = count;
+    for (std::size_t i = 0; s.ok() && i < polylineCount; ++i) {
+      s = t.insertPolyline(polylines[i].xy, polylines[i].count, ids.data() + offset);
+      offset += polylines[i].count;
+    }
+    if (!s.ok()) return s;
+    out = t.release(meshOptions);
+  } catch (const std::bad_alloc&) {
+    return outOfMemory();
+  }
+  if (inputToVertex) inputToVertex->swap(ids);
+  return s;
+}
+
+}  // namespace geocdt

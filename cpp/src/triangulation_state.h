@@ -1,0 +1,27 @@
+#pragma once
+// What a Triangulation holds: the Delaunay engine and the constraints inserted into it.
+#include <cstdint>
+#include <vector>
+
+#include "constraint_store.h"
+#include "delaunay.h"
+#include "geocdt/triangulation.h"
+
+namespace geocdt {
+
+struct Triangulation::State {
+  explicit State(const Options& options) : delaunay(options) {}
+  Delaunay delaunay;
+  ConstraintStore constraints;
+  // Slot -> index in mesh().triangles / 3, rebuilt on demand after a change.
+  std::vector<std::int32_t> slotToTriangle;
+  bool slotMapValid = false;
+};
+
+// Builds the caller's arrays from the internal slots: ghost and free slots dropped.
+Mesh exportMesh(const Delaunay& delaunay, const ConstraintStore& constraints,
+                const MeshOptions& options);
+// Index of each slot among the exported triangles, or -1 for ghost and free slots.
+std::vector<std::int32_t> slotIndices(const Topology& topo);
+
+}  // namespace geocdt

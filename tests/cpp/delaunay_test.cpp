@@ -1,0 +1,246 @@
+// Delaunay triangulation of points: every result goes through the one invariant checker.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "geocdt/predicates.h"
+#include "geocdt/triangulation.h"
+#include "invariants.h"
+#include "point_generators.h"
+
+namespace geocdt {
+namespace {
+
+using testing::checkTriangulation;
+using testing::CheckOptions;
+
+struct Built {
+  Status status;
+  Mesh mesh;
+  std::vector<std::uint32_t> ids;
+};
+
+Built build(const std::vector<double>& xy, const Options& options = {}) {
+  Built b;
+  b.status = triangulate(xy.data(), xy.size() / 2, nullptr, 0, options, {}, b.mesh, &b.ids);
+  return b;
+}
+
+std::string check(const std::vector<double>& xy, const Options& options = {}) {
+  Built b = build(xy, options);
+  if (!b.status.ok()) return "status: " + b.status.message;
+  CheckOptions c;
+  c.inputXY = &xy;
+  c.inputToVertex = &b.ids;
+  return checkTriangulation(b.mesh, c);
+}
+
+TEST(Delaunay, FewPointsGiveNoTriangles) {
+  for (std::size_t n : {0, 1, 2}) {
+    const std::vector<double> xy = testing::uniformPoints(n, 7);
+    Built b = build(xy);
+    ASSERT_TRUE(b.status.ok());
+    EXPECT_EQ(b.mesh.triangles.size(), 0u);
+    EXPECT_EQ(b.mesh.points.size(), 2 * n);
+    EXPECT_EQ(check(xy), "");
+  }
+}
+
+TEST(Delaunay, ThreePointsInEitherOrientation) {
+  for (const std::vector<double>& xy : {std::vector<double>{0, 0, 1, 0, 0, 1},
+                                        std::vector<double>{0, 0, 0, 1, 1, 0}}) {
+    Built b = build(xy);
+    ASSERT_TRUE(b.status.ok());
+    EXPECT_EQ(b.mesh.triangles.size(), 3u);
+    EXPECT_EQ(check(xy), "");
+  }
+}
+
+TEST(Delaunay, AllCollinearGivesNoTrianglesAndMergesDuplicates) {
+  std::vector<double> xy = testing::collinearPoints(500, 3);
+  Built b = build(xy);
+  ASSERT_TRUE(b.status.ok());
+  EXPECT_EQ(b.mesh.triangles.size(), 0u);
+  EXPECT_EQ(check(xy), "");
+  // Then one point off the line makes it a fan of triangles.
+  xy.push_back(5);
+  xy.push_back(0);
+  EXPECT_EQ(check(xy), "");
+}
+
+TEST(Delaunay, AllDuplicatesGiveOneVertex) {
+  std::vector<double> xy;
+  for (int i = 0; i < 100; ++i) {
+    xy.push_back(2.5);
+    xy.push_back(-1.0);
+  }
+  Built b = build(xy);
+  ASSERT_TRUE(b.status.ok());
+  EXPECT_EQ(b.mesh.points.size(), 2u);
+  for (const std::uint32_t id : b.ids) EXPECT_EQ(id, 0u);
+}
+
+TEST(Delaunay, DuplicatesKeepFirstOccurrenceOrder) {
+  const std::vector<double> base = testing::uniformPoints(3000, 11);
+  std::vector<double> xy;
+  for (int copy = 0; copy < 3; ++copy) xy.insert(xy.end(), base.begin(), base.end());
+  Built b = build(xy);
+  ASSERT_TRUE(b.status.ok());
+  EXPECT_EQ(b.mesh.points.size(), base.size());
+  for (std::size_t i = 0; i < b.ids.size(); ++i) EXPECT_EQ(b.ids[i], i % 3000);
+  EXPECT_EQ(check(xy), "");
+}
+
+TEST(Delaunay, UniformGaussianLatticeCircle) {
+  EXPECT_EQ(check(testing::uniformPoints(20000, 1)), "");
+  EXPECT_EQ(check(testing::gaussianClusters(20000, 2)), "");
+  EXPECT_EQ(check(testing::latticePoints(120)), "");
+  EXPECT_EQ(check(testing::circlePoints(2000)), "");
+}
+
+TEST(Delaunay, HullWithManyCollinearPoints) {
+  // The border of a lattice: 4 long collinear sides, plus a few interior points.
+  std::vector<double> xy;
+  for (int i = 0; i <= 200; ++i) {
+    for (const double v : {0.0 + i, 0.0, 200.0, 0.0 + i, 0.0 + i, 200.0, 0.0, 0.0 + i}) xy.push_back(v);
+  }
+  for (const double v : {50.5, 70.25, 120.0, 3.0, 199.0, 199.0}) xy.push_back(v);
+  Built b = build(xy);
+  ASSERT_TRUE(b.status.ok());
+  EXPECT_EQ(testing::hullSize(b.mesh), 800u);
+  EXPECT_EQ(check(xy), "");
+}
+
+TEST(Delaunay, EveryOrderAndLocateStart) {
+  const std::vector<double> sets[] = {testing::uniformPoints(5000, 5), testing::latticePoints(60),
+                                      testing::gaussianClusters(5000, 6)};
+  for (const auto order : {InsertionOrder::Input, InsertionOrder::Hilbert, InsertionOrder::Brio})
+    for (const auto start : {LocateStart::Grid, LocateStart::LastTriangle})
+      for (const auto& xy : sets) {
+        Options o;
+        o.order = order;
+        o.start = start;
+        EXPECT_EQ(check(xy, o), "") << "order " << int(order) << " start " << int(start);
+      }
+}
+
+TEST(Delaunay, ScaledFrom1e_9To1e9) {
+  const std::vector<double> sets[] = {testing::uniformPoints(3000, 8), testing::latticePoints(40),
+                                      testing::circlePoints(500), testing::gaussianClusters(3000, 9)};
+  for (const auto& xy : sets)
+    for (double scale = 1e-9; scale <= 1e9 * 1.01; scale *= 10)
+      EXPECT_EQ(check(testing::transformed(xy, scale, 0, 0)), "") << "scale " << scale;
+}
+
+TEST(Delaunay, TinyBoxAtHugeOffsetAndMercatorAndLonLat) {
+  EXPECT_EQ(check(testing::transformed(testing::uniformPoints(5000, 12), 1e-6, 1e7, -3e7)), "");
+  // Web Mercator metres with sub-metre spacing.
+  EXPECT_EQ(check(testing::transformed(testing::latticePoints(50), 0.25, 1.6e7, 4.2e6)), "");
+  EXPECT_EQ(check(testing::transformed(testing::uniformPoints(5000, 13), 0.37, 1.6e7, 4.2e6)), "");
+  // lon/lat, and a lattice of lon/lat with a step that is not exact in binary.
+  EXPECT_EQ(check(testing::transformed(testing::uniformPoints(5000, 14), 360, -180, 0)), "");
+  EXPECT_EQ(check(testing::transformed(testing::latticePoints(40), 0.1, -73.9, 40.7)), "");
+}
+
+TEST(Delaunay, InvalidCoordinatesNameTheIndexAndInsertNothing) {
+  const double bad[] = {std::numeric_limits<double>::quiet_NaN(),
+                        std::numeric_limits<double>::infinity(), -1e151};
+  for (const double v : bad) {
+    std::vector<double> xy = testing::uniformPoints(10, 4);
+    xy[11] = v;  // point 5, y
+    Triangulation t;
+    Status s = t.insertPoints(xy.data(), 10);
+    EXPECT_EQ(s.code, StatusCode::InvalidCoordinate);
+    EXPECT_EQ(s.index, 5u);
+    EXPECT_NE(s.message.find("point 5"), std::string::npos) << s.message;
+    EXPECT_EQ(t.vertexCount(), 0u);
+  }
+  std::vector<double> ok = {1e150, -1e150, 0, 1e150, -1e150, 0};
+  EXPECT_EQ(check(ok), "");
+}
+
+TEST(Delaunay, IncrementalBatchesKeepIdsAndStayValid) {
+  const std::vector<double> all = testing::uniformPoints(6000, 21);
+  Triangulation t;
+  std::vector<std::uint32_t> ids(3000);
+  ASSERT_TRUE(t.insertPoints(all.data(), 3000, ids.data()).ok());
+  const Mesh first = t.mesh();
+  // The second batch repeats 100 points of the first and adds new ones outside the first box.
+  std::vector<double> more(all.begin() + 6000, all.end());
+  more.insert(more.end(), all.begin(), all.begin() + 200);
+  for (std::size_t i = 0; i < more.size(); i += 2) more[i] += 0.5;
+  std::vector<std::uint32_t> ids2(more.size() / 2);
+  ASSERT_TRUE(t.insertPoints(more.data(), more.size() / 2, ids2.data()).ok());
+  const Mesh second = t.mesh();
+  for (std::size_t i = 0; i < first.points.size(); ++i) EXPECT_EQ(first.points[i], second.points[i]);
+  std::vector<double> input(all.begin(), all.begin() + 6000);
+  input.insert(input.end(), more.begin(), more.end());
+  std::vector<std::uint32_t> map(ids);
+  map.insert(map.end(), ids2.begin(), ids2.end());
+  CheckOptions c;
+  c.inputXY = &input;
+  c.inputToVertex = &map;
+  EXPECT_EQ(checkTriangulation(second, c), "");
+}
+
+TEST(Delaunay, DeterministicResult) {
+  const std::vector<double> xy = testing::latticePoints(50);
+  Built a = build(xy), b = build(xy);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.mesh.halfedges, b.mesh.halfedges);
+}
+
+TEST(Delaunay, LocateAgreesWithExactPredicates) {
+  const std::vector<double> xy = testing::latticePoints(30);
+  Triangulation t;
+  ASSERT_TRUE(t.insertPoints(xy.data(), xy.size() / 2).ok());
+  const Mesh m = t.mesh();
+  const std::vector<double>& p = m.points;
+  testing::Random r(5);
+  for (int i = 0; i < 3000; ++i) {
+    // Queries on vertices, on edges (half-integers) and in faces, inside and outside.
+    const double x = std::floor(r.uniform() * 70 - 20) / 2, y = std::floor(r.uniform() * 70 - 20) / 2;
+    const Location loc = t.locate(x, y);
+    const bool inside = x >= 0 && x <= 29 && y >= 0 && y <= 29;
+    if (!inside) {
+      EXPECT_EQ(loc.kind, Location::Kind::Outside) << x << "," << y;
+      continue;
+    }
+    ASSERT_GE(loc.triangle, 0) << x << "," << y;
+    const std::uint32_t* v = &m.triangles[3 * loc.triangle];
+    int zeros = 0;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = v[k], b = v[(k + 1) % 3];
+      const Sign s = orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], x, y);
+      EXPECT_NE(s, Sign::Negative);
+      zeros += s == Sign::Zero;
+    }
+    const Location::Kind expected = zeros == 0   ? Location::Kind::Face
+                                    : zeros == 1 ? Location::Kind::Edge
+                                                 : Location::Kind::Vertex;
+    EXPECT_EQ(loc.kind, expected) << x << "," << y;
+    if (loc.kind == Location::Kind::Vertex) {
+      EXPECT_EQ(p[2 * loc.vertices[0]], x);
+      EXPECT_EQ(p[2 * loc.vertices[0] + 1], y);
+    }
+  }
+}
+
+TEST(Delaunay, WalkStaysShortInHilbertOrder) {
+  // Not a timing: the number of triangles visited per insertion, which the paper's O(N)
+  // argument needs to stay flat as n grows.
+  double previous = 0;
+  for (std::size_t n : {10000, 100000}) {
+    const std::vector<double> xy = testing::uniformPoints(n, 31);
+    Triangulation t;
+    ASSERT_TRUE(t.insertPoints(xy.data(), n).ok());
+    const double mean = double(t.stats().walkSteps) / double(t.stats().locates);
+    EXPECT_LT(mean, 8.0);
+    if (previous > 0) EXPECT_LT(mean, previous * 1.5);
+    previous = mean;
+  }
+}
+
+}  // namespace
+}  // namespace geocdt

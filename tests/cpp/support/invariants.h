@@ -1,0 +1,24 @@
+#pragma once
+// One checker for every test: the properties a valid (constrained) Delaunay triangulation
+// must have, decided with exact predicates. Returns "" when all hold, else the first failure.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geocdt/triangulation.h"
+
+namespace geocdt::testing {
+
+struct CheckOptions {
+  // Input points that must be vertices: x, y pairs and the vertex id each one got.
+  const std::vector<double>* inputXY = nullptr;
+  const std::vector<std::uint32_t>* inputToVertex = nullptr;
+  bool delaunay = true;  // check local Delaunay of unconstrained interior edges
+};
+
+std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options = {});
+
+// Hull vertex count of the mesh (boundary loop length), for tests that predict it.
+std::size_t hullSize(const Mesh& mesh);
+
+}  // namespace geocdt::testing
