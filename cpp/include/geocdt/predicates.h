@@ -1,0 +1,96 @@
+#pragma once
+// The geometric kernel: the only place that decides orientation and in-circle.
+// Convention: y up, counter-clockwise positive. Every answer is exact for finite inputs
+// with |coordinate| <= 1e150 (see kMaxCoordinate), including subnormal coordinates.
+//
+// How: an inline floating-point filter with a static error bound decides almost every call.
+// When it cannot, an out-of-line exact path takes over:
+//  - inputs whose exponents fit the window of the expansion code (orient2d: every nonzero
+//    |coordinate| in [2^-398, 2^501); incircle: [2^-173, 2^251)) go straight to adaptive
+//    expansion arithmetic: the exact determinant of the rounded differences; if some
+//    difference was inexact, plus a first-order correction for the lost bits with an error
+//    bound; if that is still undecided, the full determinant of the raw coordinates;
+//  - otherwise, when the span from the largest exponent to the lowest significant bit is
+//    at most 950 bits (orient2d) or 475 bits (incircle), all coordinates are multiplied by
+//    one power of two, which is exact and keeps the sign, to land in that window;
+//  - wider spans (say 1e150 with 1e-300, or 1.0 with a subnormal, in one call) are
+//    evaluated with fixed-point big integers on the common lowest exponent.
+// So the answers are in fact exact for every finite double; kMaxCoordinate is the limit
+// the triangulation accepts, not a limit of these functions. Non-finite inputs give Zero.
+// Requires IEEE binary64 arithmetic rounding to nearest (x86-64 SSE2, ARM64, wasm). The
+// filters stay valid if a compiler fuses their multiply-adds; the exact path is compiled
+// with -ffp-contract=off and uses Dekker splitting, never a hardware FMA.
+#include <cstdint>
+
+namespace geocdt {
+
+enum class Sign : std::int8_t { Negative = -1, Zero = 0, Positive = 1 };
+
+// Positive when a, b, c turn counter-clockwise, Negative when clockwise, Zero when collinear.
+Sign orient2d(double ax, double ay, double bx, double by, double cx, double cy);
+
+// Positive when d lies strictly inside the circle through a, b, c (given counter-clockwise),
+// Negative when strictly outside, Zero when the four points are cocircular.
+Sign incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+              double dy);
+
+namespace detail {
+
+// The exact paths, out of line so that the filters stay small enough to inline.
+Sign orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy);
+Sign incircle_exact(double ax, double ay, double bx, double by, double cx, double cy,
+                    double dx, double dy);
+
+// u = 2^-53 is the unit roundoff. The relative bounds hold while nothing underflows; with
+// underflow every product may also be off by up to 2^-1075 (half the smallest subnormal).
+// kUnderflowSlack covers that with a wide margin, and is the smallest normal double so
+// that the bound is never computed in subnormals, which are slow on x86.
+inline constexpr double kUnitRoundoff = 1.0 / 9007199254740992.0;
+// (3u + 64u^2): error of det = (acx * bcy) - (acy * bcx) relative to |left| + |right|.
+inline constexpr double kOrient2dBound = (3.0 + 64.0 * kUnitRoundoff) * kUnitRoundoff;
+// (10u + 256u^2): error of the lifted 3x3 determinant relative to its permanent.
+inline constexpr double kIncircleBound = (10.0 + 256.0 * kUnitRoundoff) * kUnitRoundoff;
+inline constexpr double kUnderflowSlack = 0x1p-1022;
+
+}  // namespace detail
+
+inline Sign orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
+  const double left = (ax - cx) * (by - cy);
+  const double right = (ay - cy) * (bx - cx);
+  const double det = left - right;
+  const double magnitude = (left < 0 ? -left : left) + (right < 0 ? -right : right);
+  // Overflow makes the bound infinite or NaN, so both tests fail and the exact path runs.
+  const double bound = detail::kOrient2dBound * magnitude + detail::kUnderflowSlack;
+  if (det > bound) return Sign::Positive;
+  if (-det > bound) return Sign::Negative;
+  return detail::orient2d_exact(ax, ay, bx, by, cx, cy);
+}
+
+inline Sign incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                     double dy) {
+  const double adx = ax - dx, ady = ay - dy;
+  const double bdx = bx - dx, bdy = by - dy;
+  const double cdx = cx - dx, cdy = cy - dy;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
+                     clift * (adxbdy - bdxady);
+  const double across = (bdxcdy < 0 ? -bdxcdy : bdxcdy) + (cdxbdy < 0 ? -cdxbdy : cdxbdy);
+  const double bcross = (cdxady < 0 ? -cdxady : cdxady) + (adxcdy < 0 ? -adxcdy : adxcdy);
+  const double ccross = (adxbdy < 0 ? -adxbdy : adxbdy) + (bdxady < 0 ? -bdxady : bdxady);
+  const double permanent = alift * across + blift * bcross + clift * ccross;
+  // An underflowing product's absolute error gets multiplied by a lift or a cross term:
+  // bound those amplifiers by their sum.
+  const double amplifiers = (alift + blift + clift) + (across + bcross + ccross) + 1.0;
+  const double bound =
+      detail::kIncircleBound * permanent + detail::kUnderflowSlack * amplifiers;
+  if (det > bound) return Sign::Positive;
+  if (-det > bound) return Sign::Negative;
+  return detail::incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+}  // namespace geocdt
