@@ -29,6 +29,7 @@ Along alongSegment(const double* a, const double* b, const double* q) {
 void Delaunay::clear() {
   xy.clear();
   topo.clear();
+  constraints.clear();
   pending_.clear();
   stack_.clear();
   built_ = false;
@@ -333,6 +334,7 @@ std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
       insertInFace(h.edge / 3, v);
       break;
     case Hit::Kind::Edge:
+      if (topo.fixed[h.edge]) constraints.split(topo.tri[h.edge], topo.tri[nextEdge(h.edge)], v);
       splitEdge(h.edge, v);
       break;
     case Hit::Kind::Empty:

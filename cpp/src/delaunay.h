@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "constraint_store.h"
 #include "geocdt/status.h"
 #include "geocdt/triangulation.h"
 #include "point_grid.h"
@@ -28,6 +29,7 @@ class Delaunay {
 
   std::vector<double> xy;  // 2 per vertex
   Topology topo;
+  ConstraintStore constraints;
   Stats stats;
 
   bool built() const { return built_; }

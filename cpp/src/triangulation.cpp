@@ -43,7 +43,7 @@ Triangulation& Triangulation::operator=(Triangulation&&) noexcept = default;
 std::size_t Triangulation::vertexCount() const { return state_->delaunay.vertexCount(); }
 const std::vector<double>& Triangulation::points() const { return state_->delaunay.xy; }
 const Stats& Triangulation::stats() const { return state_->delaunay.stats; }
-std::size_t Triangulation::polylineCount() const { return state_->constraints.polylineCount; }
+std::size_t Triangulation::polylineCount() const { return state_->delaunay.constraints.polylineCount; }
 
 std::size_t Triangulation::triangleCount() const {
   const Topology& topo = state_->delaunay.topo;
@@ -69,9 +69,9 @@ Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uin
     d.topo.reserve(d.topo.tri.size() / 3 + 2 * count + 4);
     state_->slotMapValid = false;
     s = d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
+    if (s.ok()) s = insertPendingSegments(d);
   } catch (const std::bad_alloc&) {
     d.clear();
-    state_->constraints.clear();
     state_->slotMapValid = false;
     return outOfMemory();
   }
@@ -119,14 +119,13 @@ Location Triangulation::locate(double x, double y) const {
 }
 
 Mesh Triangulation::mesh(const MeshOptions& options) const {
-  return exportMesh(state_->delaunay, state_->constraints, options);
+  return exportMesh(state_->delaunay, options);
 }
 
 Mesh Triangulation::release(const MeshOptions& options) {
-  Mesh m = exportMesh(state_->delaunay, state_->constraints, options);
+  Mesh m = exportMesh(state_->delaunay, options);
   m.points = std::move(state_->delaunay.xy);
   state_->delaunay.clear();
-  state_->constraints.clear();
   state_->slotMapValid = false;
   return m;
 }
@@ -143,11 +142,7 @@ Status triangulate(const double* xy, std::size_t count, const PolylineView* poly
     for (std::size_t i = 0; i < polylineCount; ++i) total += polylines[i].count;
     ids.resize(total);
     s = t.insertPoints(xy, count, ids.data());
-    std::size_t offset = count;
-    for (std::size_t i = 0; s.ok() && i < polylineCount; ++i) {
-      s = t.insertPolyline(polylines[i].xy, polylines[i].count, ids.data() + offset);
-      offset += polylines[i].count;
-    }
+    if (s.ok() && polylineCount > 0) s = t.insertPolylines(polylines, polylineCount, ids.data() + count);
     if (!s.ok()) return s;
     out = t.release(meshOptions);
   } catch (const std::bad_alloc&) {

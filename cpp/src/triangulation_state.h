@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "constraint_store.h"
 #include "delaunay.h"
 #include "geocdt/triangulation.h"
 
@@ -11,16 +10,16 @@ namespace geocdt {
 
 struct Triangulation::State {
   explicit State(const Options& options) : delaunay(options) {}
-  Delaunay delaunay;
-  ConstraintStore constraints;
+  Delaunay delaunay;  // owns the constraints too
   // Slot -> index in mesh().triangles / 3, rebuilt on demand after a change.
   std::vector<std::int32_t> slotToTriangle;
   bool slotMapValid = false;
 };
 
 // Builds the caller's arrays from the internal slots: ghost and free slots dropped.
-Mesh exportMesh(const Delaunay& delaunay, const ConstraintStore& constraints,
-                const MeshOptions& options);
+Mesh exportMesh(const Delaunay& delaunay, const MeshOptions& options);
+// Inserts the segments that waited for the triangulation to have triangles.
+Status insertPendingSegments(Delaunay& delaunay);
 // Index of each slot among the exported triangles, or -1 for ghost and free slots.
 std::vector<std::int32_t> slotIndices(const Topology& topo);
 

@@ -237,7 +237,9 @@ TEST(Delaunay, WalkStaysShortInHilbertOrder) {
     ASSERT_TRUE(t.insertPoints(xy.data(), n).ok());
     const double mean = double(t.stats().walkSteps) / double(t.stats().locates);
     EXPECT_LT(mean, 8.0);
-    if (previous > 0) EXPECT_LT(mean, previous * 1.5);
+    if (previous > 0) {
+      EXPECT_LT(mean, previous * 1.5);
+    }
     previous = mean;
   }
 }

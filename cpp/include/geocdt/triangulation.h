@@ -107,6 +107,10 @@ class Triangulation {
   // vertexIds, if not null, receives count ids. Nothing is inserted on invalid input.
   Status insertPolyline(const double* xy, std::size_t count,
                         std::uint32_t* vertexIds = nullptr);
+  // Inserts several polylines at once: all their points in one spatially sorted batch,
+  // then their segments in order. vertexIds receives one id per point of every polyline.
+  Status insertPolylines(const PolylineView* polylines, std::size_t count,
+                         std::uint32_t* vertexIds = nullptr);
   std::size_t polylineCount() const;
 
   Location locate(double x, double y) const;

@@ -1,0 +1,127 @@
+// Triangulation's constraint API: polylines in, their points as one batch, then their
+// segments one by one through the SegmentInserter.
+#include <cmath>
+#include <new>
+#include <string>
+
+#include "geocdt/triangulation.h"
+#include "segment_inserter.h"
+#include "triangulation_state.h"
+
+namespace geocdt {
+
+namespace {
+
+Status checkPolyline(const PolylineView& line, std::size_t index) {
+  if (line.count > 0 && line.xy == nullptr)
+    return {StatusCode::InvalidArgument, "polyline " + std::to_string(index) + ": null coordinates with a count", index};
+  for (std::size_t i = 0; i < 2 * line.count; ++i) {
+    const double v = line.xy[i];
+    if (std::isfinite(v) && std::fabs(v) <= kMaxCoordinate) continue;
+    Status s{StatusCode::InvalidCoordinate,
+             "polyline " + std::to_string(index) + " point " + std::to_string(i / 2) + " has " +
+                 (i % 2 ? "y" : "x") + " = " + (std::isnan(v) ? std::string("NaN") : std::to_string(v)) +
+                 (std::isfinite(v) ? ": coordinates must lie within +-1e150" : ": coordinates must be finite numbers"),
+             index};
+    s.segment = i / 2;
+    return s;
+  }
+  return Status::success();
+}
+
+Status unresolved(const Status& s, std::size_t polyline, std::size_t segment) {
+  Status out = s;
+  out.index = polyline;
+  out.segment = segment;
+  out.message = "polyline " + std::to_string(polyline) + " segment " + std::to_string(segment) + ": " + s.message;
+  return out;
+}
+
+}  // namespace
+
+Status insertPendingSegments(Delaunay& d) {
+  ConstraintStore& store = d.constraints;
+  if (!d.built() || store.pending.empty()) return Status::success();
+  std::vector<PendingSegment> pending;
+  pending.swap(store.pending);
+  SegmentInserter inserter(d);
+  for (const PendingSegment& s : pending) {
+    const Status status = inserter.insert(s.u, s.v, s.src);
+    if (!status.ok()) return unresolved(status, s.polyline, s.index);
+  }
+  return Status::success();
+}
+
+Status Triangulation::insertPolyline(const double* xy, std::size_t count, std::uint32_t* vertexIds) {
+  const PolylineView line{xy, count};
+  return insertPolylines(&line, 1, vertexIds);
+}
+
+Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t count,
+                                      std::uint32_t* vertexIds) {
+  if (count > 0 && polylines == nullptr)
+    return {StatusCode::InvalidArgument, "null polylines with a count"};
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Status s = checkPolyline(polylines[i], i);
+    if (!s.ok()) return s;
+    total += polylines[i].count;
+  }
+  Delaunay& d = state_->delaunay;
+  ConstraintStore& store = d.constraints;
+  try {
+    std::vector<std::uint32_t> scratch;
+    std::uint32_t* ids = vertexIds;
+    if (ids == nullptr) {
+      scratch.resize(total);
+      ids = scratch.data();
+    }
+    // All points first, in one spatially sorted batch.
+    Status s;
+    if (count == 1) {
+      s = insertPoints(polylines[0].xy, polylines[0].count, ids);
+    } else {
+      std::vector<double> all;
+      all.reserve(2 * total);
+      for (std::size_t i = 0; i < count; ++i)
+        all.insert(all.end(), polylines[i].xy, polylines[i].xy + 2 * polylines[i].count);
+      s = insertPoints(all.data(), total, ids);
+    }
+    if (!s.ok()) return s;
+    state_->slotMapValid = false;
+
+    SegmentInserter inserter(d);
+    std::size_t offset = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      const PolylineView& line = polylines[i];
+      const std::uint32_t* lineIds = ids + offset;
+      offset += line.count;
+      const std::uint32_t id = store.polylineCount++;
+      const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
+      store.isRing.push_back(ring);
+      ++d.stats.polylines;
+      for (std::size_t k = 0; k + 1 < line.count; ++k) {
+        const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
+        if (u == v) continue;  // a repeated point: nothing to constrain
+        EdgeSource src;
+        src.segment = static_cast<std::uint32_t>(store.segments.size());
+        src.winding = ring ? 1 : 0;
+        src.polyline = id;
+        store.segments.push_back({line.xy[2 * k], line.xy[2 * k + 1], line.xy[2 * k + 2], line.xy[2 * k + 3]});
+        if (!d.built()) {
+          store.pending.push_back({u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
+          continue;
+        }
+        const Status status = inserter.insert(u, v, src);
+        if (!status.ok()) return unresolved(status, i, k);
+      }
+    }
+  } catch (const std::bad_alloc&) {
+    d.clear();
+    state_->slotMapValid = false;
+    return {StatusCode::OutOfMemory, "out of memory: the input is too large for the available memory"};
+  }
+  return insertPendingSegments(d);
+}
+
+}  // namespace geocdt

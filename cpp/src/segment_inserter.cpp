@@ -1,0 +1,313 @@
+#include "segment_inserter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "geocdt/predicates.h"
+
+namespace geocdt {
+
+
+Status SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src) {
+  pieces_.clear();
+  pieces_.push_back({u, v, src});
+  // Each round either inserts a piece, adds a vertex or re-routes a crossed constraint;
+  // the bound turns a cycle between snapped vertices into an error instead of a hang.
+  const std::uint64_t budget = 1000 + 8 * static_cast<std::uint64_t>(d_.vertexCount());
+  for (std::uint64_t round = 0; !pieces_.empty(); ++round) {
+    if (round > budget)
+      return {StatusCode::ConstraintUnresolved, "the segment could not be resolved against the constraints it crosses"};
+    const Piece piece = pieces_.back();
+    if (piece.a == piece.b) {
+      pieces_.pop_back();
+      continue;
+    }
+    const Walk w = walk(piece.a, piece.b);
+    if (w.reached == kGhost && w.blocking < 0)
+      return {StatusCode::InternalError, "lost the segment while walking along it"};
+    if (w.blocking >= 0) {
+      const std::size_t depth = pieces_.size();
+      const std::uint32_t x = resolveCrossing(piece, w.blocking);
+      if (x == kGhost) continue;  // the crossed constraint now bends through this piece's end
+      // Split this piece at x: first a -> x, then x -> b, below any re-routed pieces.
+      pieces_[depth - 1] = {x, piece.b, piece.src};
+      pieces_.insert(pieces_.begin() + static_cast<std::ptrdiff_t>(depth), {piece.a, x, piece.src});
+      continue;
+    }
+    if (w.existing >= 0) {
+      markConstrained(w.existing, piece.src);
+    } else if (!flipIn(piece.a, w.reached, piece.src)) {
+      return {StatusCode::InternalError, "re-triangulating along a segment failed"};
+    }
+    pieces_.back().a = w.reached;
+    ++d_.stats.segments;
+  }
+  return Status::success();
+}
+
+void SegmentInserter::restoreDelaunay() {
+  Topology& topo = d_.topo;
+  std::vector<std::int32_t>& stack = d_.flipStack();
+  while (!stack.empty()) {
+    const std::int32_t e = stack.back();
+    stack.pop_back();
+    if (topo.fixed[e] || d_.isLocallyDelaunay(e)) continue;
+    const std::int32_t f = topo.adj[e];
+    topo.flip(e);
+    ++d_.stats.flips;
+    stack.push_back(e);
+    stack.push_back(nextEdge(e));
+    stack.push_back(f);
+    stack.push_back(nextEdge(f));
+  }
+}
+
+std::int32_t SegmentInserter::edgeOutOf(std::uint32_t a) {
+  const Hit h = d_.locate(d_.xy[2 * a], d_.xy[2 * a + 1]);
+  return h.kind == Hit::Kind::Vertex ? h.edge : -1;
+}
+
+void SegmentInserter::markConstrained(std::int32_t e, const EdgeSource& src) {
+  Topology& t = d_.topo;
+  t.fixed[e] = 1;
+  t.fixed[t.adj[e]] = 1;
+  d_.constraints.mark(t.tri[e], t.tri[nextEdge(e)], src);
+}
+
+SegmentInserter::Walk SegmentInserter::walk(std::uint32_t a, std::uint32_t b) {
+  Walk result;
+  const double* p = d_.xy.data();
+  const Topology& topo = d_.topo;
+  const double ax = p[2 * a], ay = p[2 * a + 1], bx = p[2 * b], by = p[2 * b + 1];
+  const int axis = ax != bx ? 0 : 1;
+  const bool increasing = axis == 0 ? ax < bx : ay < by;
+  const auto ahead = [&](std::uint32_t x) {  // x collinear with a, b: on a's side toward b?
+    const double c = p[2 * x + axis], s = axis == 0 ? ax : ay;
+    return increasing ? c > s : c < s;
+  };
+  const auto side = [&](std::uint32_t x) { return orient2d(ax, ay, bx, by, p[2 * x], p[2 * x + 1]); };
+
+  crossed_.clear();
+  const std::int32_t start = edgeOutOf(a);
+  if (start < 0) return result;
+  std::int32_t e = start, h = -1;
+  do {  // turn around a to find the triangle the segment enters, or an edge along it
+    const std::uint32_t x = topo.tri[nextEdge(e)], y = topo.tri[prevEdge(e)];
+    if (x != kGhost) {
+      if (x == b) {
+        result.reached = b;
+        result.existing = e;
+        return result;
+      }
+      const Sign sx = side(x);
+      if (sx == Sign::Zero && ahead(x)) {
+        result.reached = x;
+        result.existing = e;
+        return result;
+      }
+      if (y != kGhost && sx == Sign::Negative && side(y) == Sign::Positive) {
+        h = nextEdge(e);
+        break;
+      }
+    }
+    e = topo.adj[prevEdge(e)];
+  } while (e != start);
+  if (h < 0) return result;
+
+  for (;;) {  // cross edges h = right -> left until a vertex on the segment
+    if (topo.fixed[h]) {
+      result.blocking = h;
+      return result;
+    }
+    crossed_.push_back(h);
+    const std::int32_t f = topo.adj[h];
+    const std::uint32_t c = topo.tri[prevEdge(f)];
+    if (c == kGhost) return Walk{};
+    if (c == b) {
+      result.reached = b;
+      return result;
+    }
+    const Sign sc = side(c);
+    if (sc == Sign::Zero) {
+      result.reached = c;
+      return result;
+    }
+    h = sc == Sign::Negative ? prevEdge(f) : nextEdge(f);
+  }
+}
+
+// Sloan's flips: flip crossed edges whose quad is convex until none crosses a -> w; edges
+// that still cross are met again on the next walk. Then Lawson flips restore the Delaunay
+// property around every triangle touched. Dangling constrained edges inside the crossed
+// region are never crossed, so they need no special case.
+bool SegmentInserter::flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src) {
+  Topology& topo = d_.topo;
+  const double* p = d_.xy.data();
+  const auto orient = [p](std::uint32_t u, std::uint32_t v, std::uint32_t x) {
+    return orient2d(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], p[2 * x], p[2 * x + 1]);
+  };
+  touched_.clear();
+  queue_.clear();
+  for (const std::int32_t h : crossed_) queue_.push_back({topo.tri[h], topo.tri[nextEdge(h)], h});
+  // Sloan: a crossed edge in a convex quad is flipped; its new diagonal goes to the back
+  // of the queue while it still crosses; a non-convex one waits its turn again. FIFO order
+  // is what makes this terminate.
+  const std::uint64_t bound = 1000 + 64 * static_cast<std::uint64_t>(queue_.size()) * queue_.size();
+  for (std::uint64_t step = 0; !queue_.empty(); ++step) {
+    if (step > bound) return false;
+    QueuedEdge q = queue_.front();
+    queue_.pop_front();
+    std::int32_t h = q.hint;
+    if (topo.tri[h] != q.u || topo.tri[nextEdge(h)] != q.v) h = findEdge(q.u, q.v);
+    if (h < 0) return false;
+    const std::int32_t f = topo.adj[h];
+    const std::uint32_t x = q.u, y = q.v, v = topo.tri[prevEdge(h)], d = topo.tri[prevEdge(f)];
+    if (orient(v, x, d) != Sign::Positive || orient(d, y, v) != Sign::Positive) {
+      queue_.push_back({x, y, h});
+      continue;
+    }
+    topo.flip(h);
+    touched_.push_back(h / 3);
+    touched_.push_back(f / 3);
+    // The new diagonal v-d (now prevEdge(h)) crosses a-w when v and d lie strictly apart.
+    if (v != a && v != w && d != a && d != w) {
+      const Sign sv = orient(a, w, v), sd = orient(a, w, d);
+      if (sv != Sign::Zero && sd != Sign::Zero && sv != sd) queue_.push_back({v, d, prevEdge(h)});
+    }
+  }
+  const std::int32_t e = findEdge(a, w);
+  if (e < 0) return false;
+  markConstrained(e, src);
+  d_.setLastTriangle(e / 3);
+  // Lawson: every edge of every touched triangle, flips spreading to their neighbours.
+  std::vector<std::int32_t>& stack = d_.flipStack();
+  for (const std::int32_t t : touched_)
+    for (int k = 0; k < 3; ++k) stack.push_back(3 * t + k);
+  restoreDelaunay();
+  return true;
+}
+
+namespace {
+
+// Where the lines through (a, b) and (c, d) meet, in floating point.
+bool lineCrossing(const InputSegment& ab, const InputSegment& cd, double& x, double& y) {
+  const double ex = ab.bx - ab.ax, ey = ab.by - ab.ay, fx = cd.bx - cd.ax, fy = cd.by - cd.ay;
+  const double s = ((cd.ax - ab.ax) * fy - (cd.ay - ab.ay) * fx) / (ex * fy - ey * fx);
+  x = ab.ax + s * ex;
+  y = ab.ay + s * ey;
+  return std::isfinite(x) && std::isfinite(y);
+}
+
+}  // namespace
+
+std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t h) {
+  Topology& topo = d_.topo;
+  ConstraintStore& store = d_.constraints;
+  const double* p = d_.xy.data();
+  const std::uint32_t r = topo.tri[h], l = topo.tri[nextEdge(h)];
+  const std::uint32_t c1 = topo.tri[prevEdge(h)], c2 = topo.tri[prevEdge(topo.adj[h])];
+  const auto segmentOf = [p](std::uint32_t u, std::uint32_t v) {
+    return InputSegment{p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]};
+  };
+  const EdgeSource* crossedSource = store.find(r, l);
+  const InputSegment ab = store.segments[piece.src.segment];
+  const InputSegment cd = crossedSource ? store.segments[crossedSource->segment] : segmentOf(r, l);
+  // Position along a segment's direction, to keep each constraint from doubling back.
+  const auto along = [](const InputSegment& g, double x, double y) {
+    return (x - g.ax) * (g.bx - g.ax) + (y - g.ay) * (g.by - g.ay);
+  };
+  const auto between = [&](const InputSegment& g, double x, double y, std::uint32_t lo, std::uint32_t hi) {
+    const double t = along(g, x, y), t0 = along(g, p[2 * lo], p[2 * lo + 1]), t1 = along(g, p[2 * hi], p[2 * hi + 1]);
+    return std::min(t0, t1) < t && t < std::max(t0, t1);
+  };
+  const auto fits = [&](double x, double y) {
+    return between(ab, x, y, piece.a, piece.b) && between(cd, x, y, r, l);
+  };
+
+  // The crossing of the two original input segments, unless rounding and earlier bends put
+  // it outside the two pieces that actually cross here: then the crossing of the pieces.
+  double x = 0, y = 0;
+  if (!lineCrossing(ab, cd, x, y) || !fits(x, y)) {
+    if (!lineCrossing(segmentOf(piece.a, piece.b), segmentOf(r, l), x, y)) {
+      x = 0.5 * (p[2 * r] + p[2 * l]);  // parallel in floating point: the edge's middle
+      y = 0.5 * (p[2 * r + 1] + p[2 * l + 1]);
+    }
+  }
+  const auto strictlyLeft = [&](std::uint32_t u, std::uint32_t v) {
+    return orient2d(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], x, y) == Sign::Positive;
+  };
+  const auto distance = [&](std::uint32_t v) { return std::hypot(p[2 * v] - x, p[2 * v + 1] - y); };
+  const double snapDistance =
+      1e-12 * (std::hypot(ab.bx - ab.ax, ab.by - ab.ay) + std::hypot(cd.bx - cd.ax, cd.by - cd.ay));
+  std::uint32_t nearest = r;
+  for (const std::uint32_t v : {l, piece.a, piece.b})
+    if (distance(v) < distance(nearest)) nearest = v;
+  const bool near = distance(nearest) <= snapDistance;
+
+  if (!near && strictlyLeft(c1, r) && strictlyLeft(r, c2) && strictlyLeft(l, c1) && strictlyLeft(c2, l)) {
+    // The usual case: the point splits the crossed edge.
+    const std::uint32_t v = d_.vertexCount();
+    d_.xy.push_back(x);
+    d_.xy.push_back(y);
+    store.split(r, l, v);
+    d_.splitEdge(h, v);
+    ++d_.stats.crossings;
+    ++d_.stats.inserted;
+    return v;
+  }
+  // Otherwise both constraints pass through one vertex w: the one the point is (nearly)
+  // equal to, or a new one inserted wherever the point lies (thin triangles).
+  std::uint32_t w = nearest;
+  if (!near) {
+    w = d_.vertexCount();
+    d_.xy.push_back(x);
+    d_.xy.push_back(y);
+    const std::uint32_t got = d_.insertVertex(w);
+    if (got != w) {
+      d_.xy.resize(2 * static_cast<std::size_t>(w));
+      if (got == kGhost) return kGhost;
+      w = got;
+    } else {
+      ++d_.stats.crossings;
+    }
+  }
+  const double wx = p[2 * w], wy = p[2 * w + 1];
+  const bool pieceEnd = w == piece.a || w == piece.b;
+  const bool crossedEnd = w == r || w == l;
+  const bool pieceOk = pieceEnd || between(ab, wx, wy, piece.a, piece.b);
+  const bool crossedOk = crossedEnd || between(cd, wx, wy, r, l);
+  if (!pieceOk || !crossedOk) {
+    // w would make a constraint double back: bend the piece through the crossed edge's
+    // end that lies within it instead (one always does, as the two cross).
+    const bool rFits = between(ab, p[2 * r], p[2 * r + 1], piece.a, piece.b);
+    const bool lFits = between(ab, p[2 * l], p[2 * l + 1], piece.a, piece.b);
+    if (rFits != lFits) return rFits ? r : l;
+    return std::hypot(p[2 * r] - wx, p[2 * r + 1] - wy) <= std::hypot(p[2 * l] - wx, p[2 * l + 1] - wy) ? r : l;
+  }
+  if (!crossedEnd) {
+    const std::int32_t e = findEdge(r, l);
+    if (e >= 0) {
+      const EdgeSource moved = store.take(r, l);
+      topo.fixed[e] = topo.fixed[topo.adj[e]] = 0;
+      pieces_.push_back({r, w, moved});
+      pieces_.push_back({w, l, moved});
+      d_.flipStack().push_back(e);  // no longer constrained: it may have to flip now
+      restoreDelaunay();
+    }
+  }
+  return pieceEnd ? kGhost : w;
+}
+
+std::int32_t SegmentInserter::findEdge(std::uint32_t u, std::uint32_t v) {
+  const std::int32_t start = edgeOutOf(u);
+  if (start < 0) return -1;
+  std::int32_t e = start;
+  do {
+    if (d_.topo.tri[nextEdge(e)] == v) return e;
+    e = d_.topo.adj[prevEdge(e)];
+  } while (e != start);
+  return -1;
+}
+
+}  // namespace geocdt

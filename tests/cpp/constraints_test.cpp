@@ -1,0 +1,272 @@
+// Constrained triangulation: polylines of any form, checked by both halves of the checker.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "constraint_invariants.h"
+#include "geocdt/triangulation.h"
+#include "invariants.h"
+#include "point_generators.h"
+
+namespace geocdt {
+namespace {
+
+using testing::Polylines;
+
+struct Result {
+  Status status;
+  Mesh mesh;
+  std::vector<std::uint32_t> ids;
+};
+
+Result run(const std::vector<double>& points, const Polylines& lines, const MeshOptions& mo = {}) {
+  std::vector<PolylineView> views;
+  for (const auto& l : lines) views.push_back({l.data(), l.size() / 2});
+  Result r;
+  r.status = triangulate(points.data(), points.size() / 2, views.data(), views.size(), {}, mo, r.mesh, &r.ids);
+  return r;
+}
+
+// Runs the whole checker; returns "" when everything holds.
+std::string check(const std::vector<double>& points, const Polylines& lines) {
+  Result r = run(points, lines);
+  if (!r.status.ok()) return "status: " + r.status.message;
+  std::vector<double> input(points);
+  for (const auto& l : lines) input.insert(input.end(), l.begin(), l.end());
+  testing::CheckOptions c;
+  c.inputXY = &input;
+  c.inputToVertex = &r.ids;
+  std::string s = testing::checkTriangulation(r.mesh, c);
+  if (!s.empty()) return s;
+  const std::vector<std::uint32_t> lineIds(r.ids.begin() + points.size() / 2, r.ids.end());
+  return testing::checkConstraints(r.mesh, lines, lineIds);
+}
+
+Polylines scaled(const Polylines& lines, double scale, double dx, double dy) {
+  Polylines out;
+  for (const auto& l : lines) out.push_back(testing::transformed(l, scale, dx, dy));
+  return out;
+}
+
+TEST(Constraints, OneSegmentAcrossRandomPoints) {
+  const std::vector<double> pts = testing::uniformPoints(2000, 1);
+  EXPECT_EQ(check(pts, {{0.01, 0.02, 0.98, 0.97}}), "");
+  EXPECT_EQ(check(pts, {{0.5, 0.0, 0.5, 1.0}, {0.0, 0.5, 1.0, 0.5}}), "");
+}
+
+TEST(Constraints, StarOf64SegmentsThroughOnePoint) {
+  Polylines rays, diameters;
+  for (int i = 0; i < 64; ++i) {
+    const double a = 2 * M_PI * i / 64, x = std::cos(a), y = std::sin(a);
+    rays.push_back({0, 0, x, y});
+    if (i < 32) diameters.push_back({x, y, -x, -y});  // all cross at the origin, not an input point
+  }
+  EXPECT_EQ(check(testing::uniformPoints(300, 2), rays), "");
+  EXPECT_EQ(check({}, diameters), "");
+  EXPECT_EQ(check(testing::transformed(testing::uniformPoints(300, 3), 2, -1, -1), diameters), "");
+}
+
+TEST(Constraints, CollinearOverlappingChains) {
+  const Polylines lines = {{0, 0, 10, 0}, {2, 0, 5, 0, 12, 0}, {-3, 0, 1, 0, 1, 0, 7, 0}, {0, 0, 10, 0},
+                           {5, -5, 5, 5}, {0, 0, 5, 5, 10, 10}, {3, 3, 8, 8}};
+  EXPECT_EQ(check({-5, -5, 15, 8, 4, 7, 6, -2}, lines), "");
+}
+
+TEST(Constraints, PolylineThatBacktracks) {
+  EXPECT_EQ(check({0, 10, 10, -3}, {{0, 0, 6, 6, 2, 2, 9, 9, 1, 1, 4, 1, 0, 0, 9, 9}}), "");
+}
+
+TEST(Constraints, RepeatedPointsAndZeroLengthSegments) {
+  EXPECT_EQ(check({0, 0, 5, 5}, {{1, 1, 1, 1, 2, 3, 2, 3, 2, 3, 4, 1}, {3, 3}, {2, 2, 2, 2}}), "");
+}
+
+TEST(Constraints, ThousandsOfRandomCrossingSegments) {
+  testing::Random r(9);
+  Polylines lines;
+  for (int i = 0; i < 1500; ++i) lines.push_back({r.uniform(), r.uniform(), r.uniform(), r.uniform()});
+  EXPECT_EQ(check(testing::uniformPoints(1000, 4), lines), "");
+}
+
+TEST(Constraints, RandomPolylinesScaledAndOffset) {
+  testing::Random r(10);
+  Polylines lines;
+  for (int i = 0; i < 60; ++i) {
+    std::vector<double> l;
+    double x = r.uniform(), y = r.uniform();
+    for (int k = 0; k < 12; ++k) {
+      l.push_back(x);
+      l.push_back(y);
+      x += (r.uniform() - 0.5) * 0.3;
+      y += (r.uniform() - 0.5) * 0.3;
+    }
+    lines.push_back(l);
+  }
+  const std::vector<double> pts = testing::uniformPoints(500, 5);
+  for (double scale = 1e-9; scale <= 1.01e9; scale *= 100)
+    EXPECT_EQ(check(testing::transformed(pts, scale, 0, 0), scaled(lines, scale, 0, 0)), "") << scale;
+  EXPECT_EQ(check(testing::transformed(pts, 0.37, 1.6e7, 4.2e6), scaled(lines, 0.37, 1.6e7, 4.2e6)), "");
+  EXPECT_EQ(check(testing::transformed(pts, 1e-6, 1e7, -3e7), scaled(lines, 1e-6, 1e7, -3e7)), "");
+}
+
+// Rings: a square with a hole, an island in the hole, a lake in the island; rings that
+// share vertices and edges.
+Polylines nestedRings() {
+  return {
+      {0, 0, 10, 0, 10, 10, 0, 10, 0, 0},  // outer
+      {2, 2, 8, 2, 8, 8, 2, 8, 2, 2},      // hole
+      {3, 3, 7, 3, 7, 7, 3, 7, 3, 3},      // island in the hole
+      {4, 4, 6, 4, 6, 6, 4, 6, 4, 4},      // lake in the island
+      {10, 0, 14, 0, 14, 10, 10, 10, 10, 0},  // shares an edge with the outer ring
+      {14, 10, 16, 12, 12, 12, 14, 10},       // shares a vertex
+      {0, 0, 10, 0, 5, -4, 0, 0},             // shares an edge, other side
+  };
+}
+
+void expectInsideMatchesOracle(const Polylines& rings, const Mesh& m) {
+  ASSERT_EQ(m.inside.size(), m.triangles.size() / 3);
+  int compared = 0;
+  for (std::size_t t = 0; t < m.inside.size(); ++t) {
+    double x = 0, y = 0;
+    for (int k = 0; k < 3; ++k) {
+      x += m.points[2 * m.triangles[3 * t + k]] / 3;
+      y += m.points[2 * m.triangles[3 * t + k] + 1] / 3;
+    }
+    if (testing::distanceToPolylines(rings, x, y) < 1e-9) continue;
+    EXPECT_EQ(m.inside[t] != 0, testing::insideEvenOdd(rings, x, y)) << "triangle " << t << " at " << x << "," << y;
+    ++compared;
+  }
+  EXPECT_GT(compared, 0);
+}
+
+TEST(Constraints, NestedRingsEvenOdd) {
+  const Polylines rings = nestedRings();
+  EXPECT_EQ(check(testing::transformed(testing::uniformPoints(400, 6), 20, -3, -5), rings), "");
+  MeshOptions mo;
+  mo.insideFlags = true;
+  Result r = run(testing::transformed(testing::uniformPoints(400, 6), 20, -3, -5), rings, mo);
+  ASSERT_TRUE(r.status.ok());
+  expectInsideMatchesOracle(rings, r.mesh);
+}
+
+TEST(Constraints, KeepInsideDropsOutsideTriangles) {
+  const Polylines rings = nestedRings();
+  MeshOptions all, inside;
+  all.insideFlags = true;
+  inside.keep = Keep::Inside;
+  Result a = run({}, rings, all), b = run({}, rings, inside);
+  ASSERT_TRUE(a.status.ok() && b.status.ok());
+  std::size_t expected = 0;
+  for (const std::uint8_t f : a.mesh.inside) expected += f;
+  EXPECT_EQ(b.mesh.triangles.size() / 3, expected);
+  EXPECT_GT(expected, 0u);
+  // The kept triangles' twins are symmetric and point only at kept triangles.
+  for (std::size_t e = 0; e < b.mesh.halfedges.size(); ++e)
+    if (b.mesh.halfedges[e] >= 0) {
+      EXPECT_EQ(b.mesh.halfedges[b.mesh.halfedges[e]], std::int32_t(e));
+    }
+}
+
+TEST(Constraints, NonZeroWindingDiffersFromEvenOdd) {
+  // Two overlapping squares wound the same way: the overlap has winding 2.
+  const Polylines rings = {{0, 0, 4, 0, 4, 4, 0, 4, 0, 0}, {2, 2, 6, 2, 6, 6, 2, 6, 2, 2}};
+  MeshOptions eo, nz;
+  eo.insideFlags = nz.insideFlags = true;
+  nz.fill = FillRule::NonZero;
+  Result a = run({}, rings, eo), b = run({}, rings, nz);
+  ASSERT_TRUE(a.status.ok() && b.status.ok());
+  ASSERT_EQ(a.mesh.triangles, b.mesh.triangles);
+  int differ = 0;
+  for (std::size_t t = 0; t < a.mesh.inside.size(); ++t) {
+    double x = 0, y = 0;
+    for (int k = 0; k < 3; ++k) {
+      x += a.mesh.points[2 * a.mesh.triangles[3 * t + k]] / 3;
+      y += a.mesh.points[2 * a.mesh.triangles[3 * t + k] + 1] / 3;
+    }
+    const bool overlap = x > 2 && x < 4 && y > 2 && y < 4;
+    EXPECT_EQ(b.mesh.inside[t] != 0, (x < 4 && y < 4) || (x > 2 && y > 2)) << x << "," << y;
+    EXPECT_EQ(a.mesh.inside[t] != 0, ((x < 4 && y < 4) != (x > 2 && y > 2))) << x << "," << y;
+    differ += overlap;
+  }
+  EXPECT_GT(differ, 0);
+}
+
+TEST(Constraints, ProvenanceListsEveryPolylineOfAnEdge) {
+  // Polylines 0 and 1 overlap on 2..5; polyline 2 crosses them at (3, 0).
+  const Polylines lines = {{0, 0, 5, 0}, {2, 0, 8, 0}, {3, -1, 3, 1}};
+  Result r = run({}, lines);
+  ASSERT_TRUE(r.status.ok());
+  const Mesh& m = r.mesh;
+  ASSERT_EQ(m.sourceOffsets.size(), m.constraintEdges.size() + 1);
+  int shared = 0;
+  for (std::size_t i = 0; i < m.constraintEdges.size(); ++i) {
+    const std::uint32_t e = m.constraintEdges[i];
+    ASSERT_TRUE(m.constrained[e]);
+    const std::uint32_t u = m.triangles[e], v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
+    const double x0 = std::min(m.points[2 * u], m.points[2 * v]), x1 = std::max(m.points[2 * u], m.points[2 * v]);
+    const bool horizontal = m.points[2 * u + 1] == 0 && m.points[2 * v + 1] == 0;
+    std::vector<std::uint32_t> src(m.sources.begin() + m.sourceOffsets[i], m.sources.begin() + m.sourceOffsets[i + 1]);
+    std::sort(src.begin(), src.end());
+    std::vector<std::uint32_t> expected;
+    if (horizontal && x1 <= 5) expected.push_back(0);
+    if (horizontal && x0 >= 2) expected.push_back(1);
+    if (!horizontal) expected.push_back(2);
+    EXPECT_EQ(src, expected) << "edge " << x0 << ".." << x1;
+    shared += src.size() == 2;
+  }
+  EXPECT_GT(shared, 0);
+  // The crossing at (3, 0) is an input vertex of neither horizontal line: it was added.
+  EXPECT_EQ(m.points.size() / 2, 7u);
+}
+
+TEST(Constraints, IncrementalPointsAndPolylinesStayValid) {
+  Triangulation t;
+  const std::vector<double> pts = testing::uniformPoints(500, 7);
+  ASSERT_TRUE(t.insertPoints(pts.data(), 250).ok());
+  const std::vector<double> a = {0.1, 0.1, 0.9, 0.9, 0.9, 0.1}, b = {0.1, 0.9, 0.9, 0.2};
+  ASSERT_TRUE(t.insertPolyline(a.data(), 3).ok());
+  ASSERT_TRUE(t.insertPoints(pts.data() + 500, 250).ok());  // points after constraints
+  ASSERT_TRUE(t.insertPolyline(b.data(), 2).ok());
+  const std::vector<double> onEdge = {0.5, 0.5, 0.7, 0.7};  // exactly on constraint a
+  ASSERT_TRUE(t.insertPoints(onEdge.data(), 2).ok());
+  const Mesh m = t.mesh();
+  EXPECT_EQ(testing::checkTriangulation(m), "");
+  // Re-derive the polyline vertex ids by exact coordinates for the constraint check.
+  std::vector<std::uint32_t> ids;
+  for (const auto* l : {&a, &b})
+    for (std::size_t k = 0; k < l->size(); k += 2) {
+      const Location loc = t.locate((*l)[k], (*l)[k + 1]);
+      ASSERT_EQ(loc.kind, Location::Kind::Vertex);
+      ids.push_back(loc.vertices[0]);
+    }
+  EXPECT_EQ(testing::checkConstraints(m, {a, b}, ids), "");
+}
+
+TEST(Constraints, ConstraintsBeforeAnyTriangle) {
+  // Collinear points first: the segment waits until a point off the line arrives.
+  Triangulation t;
+  const std::vector<double> line = {0, 0, 4, 0}, off = {2, 3, 2, -3};
+  ASSERT_TRUE(t.insertPolyline(line.data(), 2).ok());
+  EXPECT_EQ(t.triangleCount(), 0u);
+  ASSERT_TRUE(t.insertPoints(off.data(), 2).ok());
+  const Mesh m = t.mesh();
+  EXPECT_EQ(testing::checkTriangulation(m), "");
+  EXPECT_EQ(testing::checkConstraints(m, {line}, {0, 1}), "");
+  int constrained = 0;
+  for (const std::uint8_t c : m.constrained) constrained += c;
+  EXPECT_EQ(constrained, 2);  // the segment 0-1 crossing the diagonal 2-3
+}
+
+TEST(Constraints, InvalidPolylineNamesItAndInsertsNothing) {
+  Triangulation t;
+  const std::vector<double> good = {0, 0, 1, 0, 1, 1}, bad = {0, 0, NAN, 1};
+  const PolylineView views[] = {{good.data(), 3}, {bad.data(), 2}};
+  const Status s = t.insertPolylines(views, 2);
+  EXPECT_EQ(s.code, StatusCode::InvalidCoordinate);
+  EXPECT_EQ(s.index, 1u);
+  EXPECT_EQ(s.segment, 1u);
+  EXPECT_NE(s.message.find("polyline 1 point 1"), std::string::npos) << s.message;
+  EXPECT_EQ(t.vertexCount(), 0u);
+}
+
+}  // namespace
+}  // namespace geocdt
