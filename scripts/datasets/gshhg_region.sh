@@ -1,0 +1,25 @@
+#!/bin/sh
+# Writes a ~2M-point real dataset with crossings: the GSHHG full-resolution shorelines,
+# rivers and national borders of one region, as one .gpl file of lon/lat polylines.
+# Rivers cross borders and end on shorelines, so the constraints cross and touch.
+# Needs Debian packages gmt and gmt-gshhg-full.
+# Usage: scripts/datasets/gshhg_region.sh [output folder, default build/data] [region]
+# The default region, western and central Europe, gives about 2.0M points.
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out_dir=${1:-"$here/../../build/data"}
+region=${2:-"-12/45/33/68"}
+command -v gmt >/dev/null || { echo "gmt is missing: apt-get install gmt gmt-gshhg-full" >&2; exit 1; }
+mkdir -p "$out_dir"
+out="$(cd "$out_dir" && pwd)/gshhg_region.gpl"
+# gmt leaves a gmt.history file in its working folder: give it a scratch one.
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+cd "$scratch"
+# coast -M dumps one feature kind per run: shorelines (-W), all rivers (-Ia), all borders (-Na).
+{
+  gmt coast -R"$region" -Df -W -M
+  gmt coast -R"$region" -Df -Ia -M
+  gmt coast -R"$region" -Df -Na -M
+} | node "$here/gmt_text_to_gpl.mjs" "$out"
+echo "region $region"
