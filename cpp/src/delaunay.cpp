@@ -63,6 +63,8 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   if (count == 0) return Status::success();
   const std::uint32_t base = vertexCount();
   std::vector<std::uint32_t> order = insertionOrder(input, count, options_.order);
+  // Reserved after the sort's buffers are gone, to keep the peak low: about 2 triangles a point.
+  topo.reserve(topo.tri.size() / 3 + 2 * static_cast<std::size_t>(count) + 8);
   // While inserting, vertex base + k holds the k-th point in insertion order, so that the
   // walk and the flips read coordinates that sit next to each other in memory.
   xy.resize(2 * (static_cast<std::size_t>(base) + count));
@@ -80,6 +82,7 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   }
   if (grid_.empty()) grid_.reset(minX, minY, maxX, maxY, options_.gridDensity);
   // ids[input index] = the vertex (in insertion numbering) the point became or equals.
+  batchStart_ = true;
   if (!built_) {
     Status s = insertPending(base, count, order, ids);
     if (!s.ok()) return s;
@@ -192,8 +195,8 @@ void Delaunay::dedupCollinear(std::uint32_t base, const std::vector<std::uint32_
   std::sort(pending_.begin(), pending_.end());
 }
 
-std::int32_t Delaunay::startTriangle(double x, double y) {
-  if (options_.start == LocateStart::Grid) {
+std::int32_t Delaunay::startTriangle(double x, double y, bool fromGrid) {
+  if (fromGrid) {
     const std::int32_t t = grid_.cellAt(x, y);
     if (t >= 0 && t < topo.slotCount() && !topo.isFree(t)) return t;
   }
@@ -203,9 +206,9 @@ std::int32_t Delaunay::startTriangle(double x, double y) {
   return -1;
 }
 
-Hit Delaunay::locate(double x, double y) {
+Hit Delaunay::locate(double x, double y, bool fromGrid) {
   if (!built_) return Hit{};
-  Hit h = walk(x, y, startTriangle(x, y));
+  Hit h = walk(x, y, startTriangle(x, y, fromGrid));
   if (h.kind == Hit::Kind::Failed) {
     ++stats.walkFallbacks;
     h = scan(x, y);
@@ -324,7 +327,10 @@ Hit Delaunay::scan(double x, double y) const {
 
 std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
   const double x = xy[2 * v], y = xy[2 * v + 1];
-  const Hit h = locate(x, y);
+  // The first point of a batch has no useful last triangle: the grid knows better.
+  const bool fromGrid = options_.start == LocateStart::Grid || batchStart_;
+  batchStart_ = false;
+  const Hit h = locate(x, y, fromGrid);
   switch (h.kind) {
     case Hit::Kind::Vertex:
       ++stats.duplicates;

@@ -45,8 +45,8 @@ class Delaunay {
   // Returns kGhost when location failed (an internal error, described by lastError()).
   std::uint32_t insertVertex(std::uint32_t v);
 
-  // Locates (x, y), starting from the grid or from the last triangle.
-  Hit locate(double x, double y);
+  // Locates (x, y), starting from the grid's cell or from the last triangle.
+  Hit locate(double x, double y, bool fromGrid);
   // Splits triangle slot t (real or ghost) at new vertex v and restores Delaunay.
   // Both return a half-edge starting at v.
   std::int32_t insertInFace(std::int32_t t, std::uint32_t v);
@@ -75,12 +75,13 @@ class Delaunay {
                      std::vector<std::uint32_t>& order, std::uint32_t* ids);
   Hit walk(double x, double y, std::int32_t t);
   Hit scan(double x, double y) const;
-  std::int32_t startTriangle(double x, double y);
+  std::int32_t startTriangle(double x, double y, bool fromGrid);
   bool beyondGhostEdge(std::int32_t e, std::uint32_t v) const;
 
   Options options_;
   PointGrid grid_;
   bool built_ = false;
+  bool batchStart_ = false;
   std::int32_t last_ = -1;
   std::vector<std::uint32_t> pending_;  // vertices waiting for a non-collinear triple
   std::vector<std::int32_t> stack_;

@@ -5,16 +5,19 @@
 
 namespace geocdt {
 
-std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y) {
+std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y) { return hilbertIndex(x, y, 16); }
+
+std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y, int bits) {
   std::uint32_t d = 0;
-  for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+  const std::uint32_t mask = (1u << bits) - 1;
+  for (std::uint32_t s = 1u << (bits - 1); s > 0; s >>= 1) {
     const std::uint32_t rx = (x & s) ? 1 : 0;
     const std::uint32_t ry = (y & s) ? 1 : 0;
     d += s * s * ((3 * rx) ^ ry);
     if (ry == 0) {  // rotate the quadrant so that the curve stays continuous
       if (rx == 1) {
-        x = 0xFFFF - x;
-        y = 0xFFFF - y;
+        x = mask - x;
+        y = mask - y;
       }
       std::swap(x, y);
     }
@@ -43,10 +46,10 @@ void sortByKey(std::vector<std::uint64_t>& items, std::vector<std::uint64_t>& sc
   }
 }
 
-std::uint32_t toCell(double v, double min, double scale) {
+std::uint32_t toCell(double v, double min, double scale, double top) {
   const double c = (v - min) * scale;
   if (!(c > 0)) return 0;
-  return c >= 65535.0 ? 65535u : static_cast<std::uint32_t>(c);
+  return c >= top ? static_cast<std::uint32_t>(top) : static_cast<std::uint32_t>(c);
 }
 
 }  // namespace
@@ -64,9 +67,13 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
     minY = std::min(minY, xy[2 * i + 1]);
     maxY = std::max(maxY, xy[2 * i + 1]);
   }
-  // One scale for both axes keeps the curve's cells square.
+  // About one point per cell is fine enough: a coarser curve is cheaper to compute and
+  // sorts in the same two radix passes. One scale for both axes keeps the cells square.
+  int bits = 4;
+  while (bits < 16 && (1ull << (2 * bits)) < 4ull * count) ++bits;
+  const double top = static_cast<double>((1u << bits) - 1);
   const double extent = std::max(maxX - minX, maxY - minY);
-  const double scale = extent > 0 ? 65535.0 / extent : 0.0;
+  const double scale = extent > 0 ? top / extent : 0.0;
 
   std::vector<std::uint64_t> items(count), scratch(count);
   if (order == InsertionOrder::Brio) {
@@ -82,7 +89,7 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
   for (std::uint32_t i = 0; i < count; ++i) {
     const std::uint32_t id = ids[i];
     const std::uint64_t key =
-        hilbertIndex(toCell(xy[2 * id], minX, scale), toCell(xy[2 * id + 1], minY, scale));
+        hilbertIndex(toCell(xy[2 * id], minX, scale, top), toCell(xy[2 * id + 1], minY, scale, top), bits);
     items[i] = key << 32 | id;
   }
   if (order == InsertionOrder::Hilbert) {

@@ -40,65 +40,116 @@ std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill) {
 
 }  // namespace
 
+
+namespace {
+
+// The order in which compaction fills holes: the last kept slot moves into the first
+// dropped one, until they meet. Calls move(from, to) for each move; returns the count kept.
+template <typename Move>
+std::int32_t planCompaction(std::vector<std::uint8_t>& kept, Move move) {
+  const std::int32_t slots = static_cast<std::int32_t>(kept.size());
+  std::int32_t front = 0, back = slots - 1;
+  for (;;) {
+    while (front < slots && kept[front]) ++front;
+    while (back >= 0 && !kept[back]) --back;
+    if (front >= back) break;
+    move(back, front);
+    kept[front] = 1;
+    kept[back] = 0;
+  }
+  std::int32_t count = 0;
+  while (count < slots && kept[count]) ++count;
+  return count;
+}
+
+std::vector<std::uint8_t> realSlots(const std::vector<std::uint32_t>& tri) {
+  std::vector<std::uint8_t> kept(tri.size() / 3);
+  for (std::size_t t = 0; t < kept.size(); ++t)
+    kept[t] = tri[3 * t] < kFreeSlot && tri[3 * t + 1] < kFreeSlot && tri[3 * t + 2] < kFreeSlot;
+  return kept;
+}
+
+// Drops the slots not kept, in place: twins pointing at a dropped slot become -1, then
+// kept triangles from the end fill the holes, their twins told where they went. Only the
+// few dropped slots (ghosts, mostly) cost anything beyond one pass.
+void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::uint8_t> kept) {
+  std::vector<std::uint32_t>& tri = m.triangles;
+  std::vector<std::int32_t>& adj = m.halfedges;
+  std::vector<std::uint8_t>& fixed = m.constrained;
+  for (std::size_t t = 0; t < kept.size(); ++t) {
+    if (!kept[t]) continue;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int32_t twin = adj[3 * t + k];
+      if (twin >= 0 && !kept[twin / 3]) adj[3 * t + k] = -1;
+    }
+  }
+  const std::int32_t count = planCompaction(kept, [&](std::int32_t back, std::int32_t front) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t from = 3 * back + k, to = 3 * front + k;
+      tri[to] = tri[from];
+      fixed[to] = fixed[from];
+      adj[to] = adj[from];
+      if (adj[to] >= 0) adj[adj[to]] = to;
+    }
+    if (flags) (*flags)[front] = (*flags)[back];
+  });
+  tri.resize(3 * static_cast<std::size_t>(count));
+  adj.resize(3 * static_cast<std::size_t>(count));
+  fixed.resize(3 * static_cast<std::size_t>(count));
+  if (flags) flags->resize(count);
+}
+
+void addProvenance(const Delaunay& d, Mesh& m) {
+  if (d.constraints.edgeCount() == 0) return;
+  m.sourceOffsets.push_back(0);
+  for (std::size_t e = 0; e < m.triangles.size(); ++e) {
+    if (!m.constrained[e]) continue;
+    const std::int32_t twin = m.halfedges[e];
+    if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;  // listed from its twin
+    const std::uint32_t u = m.triangles[e];
+    const std::uint32_t v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
+    const EdgeSource* src = d.constraints.find(u, v);
+    if (!src) continue;
+    m.constraintEdges.push_back(static_cast<std::uint32_t>(e));
+    d.constraints.forEachPolyline(*src, [&m](std::uint32_t p) { m.sources.push_back(p); });
+    m.sourceOffsets.push_back(static_cast<std::uint32_t>(m.sources.size()));
+  }
+}
+
+}  // namespace
+
 std::vector<std::int32_t> slotIndices(const Topology& topo) {
-  std::vector<std::int32_t> index(topo.slotCount(), -1);
-  std::int32_t n = 0;
-  for (std::int32_t t = 0; t < topo.slotCount(); ++t)
-    if (!topo.isFree(t) && !topo.isGhost(t)) index[t] = n++;
+  std::vector<std::uint8_t> kept = realSlots(topo.tri);
+  std::vector<std::int32_t> index(kept.size(), -1);
+  for (std::size_t t = 0; t < kept.size(); ++t)
+    if (kept[t]) index[t] = static_cast<std::int32_t>(t);
+  planCompaction(kept, [&](std::int32_t back, std::int32_t front) { index[back] = front; });
   return index;
 }
 
-Mesh exportMesh(const Delaunay& d, const MeshOptions& options) {
-  const Topology& topo = d.topo;
+Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
   const bool classify = options.insideFlags || options.keep == Keep::Inside;
   std::vector<std::uint8_t> inside;
   if (classify) inside = insideSlots(d, options.fill);
-
-  std::vector<std::int32_t> index(topo.slotCount(), -1);
-  std::int32_t count = 0;
-  for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
-    if (topo.isFree(t) || topo.isGhost(t)) continue;
-    if (options.keep == Keep::Inside && !inside[t]) continue;
-    index[t] = count++;
-  }
-
   Mesh m;
-  m.points = d.xy;
-  const std::size_t halfedges = 3 * static_cast<std::size_t>(count);
-  m.triangles.resize(halfedges);
-  m.halfedges.resize(halfedges);
-  m.constrained.resize(halfedges);
-  if (options.insideFlags) m.inside.resize(count);
-  for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
-    const std::int32_t n = index[t];
-    if (n < 0) continue;
-    if (options.insideFlags) m.inside[n] = inside[t];
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t e = 3 * t + k, out = 3 * n + k;
-      m.triangles[out] = topo.tri[e];
-      const std::int32_t twin = topo.adj[e];
-      const std::int32_t twinTriangle = index[twin / 3];
-      m.halfedges[out] = twinTriangle < 0 ? -1 : 3 * twinTriangle + twin % 3;
-      m.constrained[out] = topo.fixed[e];
-    }
+  Topology& topo = d.topo;
+  if (consume) {
+    m.points = std::move(d.xy);
+    m.triangles = std::move(topo.tri);
+    m.halfedges = std::move(topo.adj);
+    m.constrained = std::move(topo.fixed);
+  } else {
+    m.points = d.xy;
+    m.triangles = topo.tri;
+    m.halfedges = topo.adj;
+    m.constrained = topo.fixed;
   }
-
-  // Provenance: one half-edge per constrained edge, with the polylines it came from.
-  if (d.constraints.edgeCount() > 0) {
-    m.sourceOffsets.push_back(0);
-    for (std::size_t e = 0; e < halfedges; ++e) {
-      if (!m.constrained[e]) continue;
-      const std::int32_t twin = m.halfedges[e];
-      if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;  // listed from its twin
-      const std::uint32_t u = m.triangles[e];
-      const std::uint32_t v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
-      const EdgeSource* src = d.constraints.find(u, v);
-      if (!src) continue;
-      m.constraintEdges.push_back(static_cast<std::uint32_t>(e));
-      d.constraints.forEachPolyline(*src, [&m](std::uint32_t p) { m.sources.push_back(p); });
-      m.sourceOffsets.push_back(static_cast<std::uint32_t>(m.sources.size()));
-    }
-  }
+  std::vector<std::uint8_t> kept = realSlots(m.triangles);
+  if (options.keep == Keep::Inside)
+    for (std::size_t t = 0; t < kept.size(); ++t) kept[t] &= inside[t];
+  compact(m, classify ? &inside : nullptr, std::move(kept));
+  if (options.insideFlags) m.inside = std::move(inside);
+  addProvenance(d, m);
   return m;
 }
 

@@ -64,7 +64,8 @@ void SegmentInserter::restoreDelaunay() {
 }
 
 std::int32_t SegmentInserter::edgeOutOf(std::uint32_t a) {
-  const Hit h = d_.locate(d_.xy[2 * a], d_.xy[2 * a + 1]);
+  // Pieces follow each other, so the last triangle is usually next to a.
+  const Hit h = d_.locate(d_.xy[2 * a], d_.xy[2 * a + 1], false);
   return h.kind == Hit::Kind::Vertex ? h.edge : -1;
 }
 

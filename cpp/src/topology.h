@@ -43,16 +43,21 @@ struct Topology {
     if (!freeSlots.empty()) {
       t = freeSlots.back();
       freeSlots.pop_back();
-    } else {
-      t = slotCount();
-      tri.resize(tri.size() + 3);
-      adj.resize(adj.size() + 3);
-      fixed.resize(fixed.size() + 3);
+      setTriangle(t, a, b, c);
+      for (int k = 0; k < 3; ++k) {
+        adj[3 * t + k] = -1;
+        fixed[3 * t + k] = 0;
+      }
+      return t;
     }
-    setTriangle(t, a, b, c);
+    // push_back inlines to a store when the capacity is there (reserved per batch).
+    t = slotCount();
+    tri.push_back(a);
+    tri.push_back(b);
+    tri.push_back(c);
     for (int k = 0; k < 3; ++k) {
-      adj[3 * t + k] = -1;
-      fixed[3 * t + k] = 0;
+      adj.push_back(-1);
+      fixed.push_back(0);
     }
     return t;
   }

@@ -66,7 +66,6 @@ Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uin
       scratch.resize(count);
       ids = scratch.data();
     }
-    d.topo.reserve(d.topo.tri.size() / 3 + 2 * count + 4);
     state_->slotMapValid = false;
     s = d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
     if (s.ok()) s = insertPendingSegments(d);
@@ -82,7 +81,7 @@ Location Triangulation::locate(double x, double y) const {
   Location loc;
   if (!std::isfinite(x) || !std::isfinite(y)) return loc;
   Delaunay& d = state_->delaunay;
-  const Hit h = d.locate(x, y);
+  const Hit h = d.locate(x, y, true);
   const Topology& topo = d.topo;
   if (h.kind == Hit::Kind::Empty || h.kind == Hit::Kind::Failed) return loc;
   if (!state_->slotMapValid) {
@@ -119,12 +118,11 @@ Location Triangulation::locate(double x, double y) const {
 }
 
 Mesh Triangulation::mesh(const MeshOptions& options) const {
-  return exportMesh(state_->delaunay, options);
+  return exportMesh(state_->delaunay, options, false);
 }
 
 Mesh Triangulation::release(const MeshOptions& options) {
-  Mesh m = exportMesh(state_->delaunay, options);
-  m.points = std::move(state_->delaunay.xy);
+  Mesh m = exportMesh(state_->delaunay, options, true);
   state_->delaunay.clear();
   state_->slotMapValid = false;
   return m;

@@ -16,8 +16,9 @@ struct Triangulation::State {
   bool slotMapValid = false;
 };
 
-// Builds the caller's arrays from the internal slots: ghost and free slots dropped.
-Mesh exportMesh(const Delaunay& delaunay, const MeshOptions& options);
+// Builds the caller's arrays from the internal slots: ghost and free slots dropped. With
+// consume, the arrays are moved out and compacted in place, leaving delaunay to be cleared.
+Mesh exportMesh(Delaunay& delaunay, const MeshOptions& options, bool consume);
 // Inserts the segments that waited for the triangulation to have triangles.
 Status insertPendingSegments(Delaunay& delaunay);
 // Index of each slot among the exported triangles, or -1 for ghost and free slots.

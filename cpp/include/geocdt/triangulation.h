@@ -23,6 +23,8 @@ enum class InsertionOrder : std::uint8_t {
   Brio,     // biased randomized rounds, each Hilbert-sorted
 };
 
+// Where the walk of each insertion starts. locate() and the first point of every batch
+// always start from the grid, which every insertion keeps up to date.
 enum class LocateStart : std::uint8_t {
   Grid,          // the dynamic uniform grid's cell hint (Skvortsov)
   LastTriangle,  // the triangle of the previous insertion
