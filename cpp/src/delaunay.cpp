@@ -94,7 +94,20 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
     }
   }
   renumberBatch(input, base, count, order, ids);
+  if (built_ && 8 * static_cast<std::uint64_t>(count) > vertexCount()) refreshGrid();
   return Status::success();
+}
+
+void Delaunay::refreshGrid() {
+  const std::uint32_t* tri = topo.tri.data();
+  const double* p = xy.data();
+  grid_.rebuild(topo.slotCount(), [&](std::int32_t t, double& x, double& y) {
+    const std::uint32_t v = tri[3 * t];
+    if (v >= kFreeSlot) return false;  // a ghost (at its first corner) or a free slot
+    x = p[2 * v];
+    y = p[2 * v + 1];
+    return true;
+  }, last_);
 }
 
 // Gives the batch's new vertices ids in input order, duplicates removed, and rewrites the

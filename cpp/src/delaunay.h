@@ -63,6 +63,7 @@ class Delaunay {
   std::int32_t lastTriangle() const { return last_; }
   void setLastTriangle(std::int32_t t) { last_ = t; }
   const Status& lastError() const { return error_; }
+  std::uint32_t gridSize() const { return grid_.size(); }
   void clear();
 
  private:
@@ -73,6 +74,7 @@ class Delaunay {
                       std::uint32_t* ids);
   void renumberBatch(const double* input, std::uint32_t base, std::uint32_t count,
                      std::vector<std::uint32_t>& order, std::uint32_t* ids);
+  void refreshGrid();
   Hit walk(double x, double y, std::int32_t t);
   Hit scan(double x, double y) const;
   std::int32_t startTriangle(double x, double y, bool fromGrid);

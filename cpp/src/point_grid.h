@@ -44,6 +44,27 @@ class PointGrid {
 
   void fill(std::int32_t triangle) { std::fill(cells_.begin(), cells_.end(), triangle); }
 
+  // Fresh hints after a large batch: for each cell, a triangle with a vertex in it; a cell
+  // with none takes its left (or upper) neighbour's. A spatially sorted batch leaves stale
+  // hints in the cells it never visited, which this replaces. at(t) gives a vertex of slot t.
+  template <typename VertexOf>
+  void rebuild(std::int32_t slots, VertexOf at, std::int32_t fallback) {
+    std::fill(cells_.begin(), cells_.end(), -1);
+    // About four triangles fall in a cell: every third is plenty, and a third of the writes.
+    for (std::int32_t t = 0; t < slots; t += 3) {
+      double x, y;
+      if (at(t, x, y)) cellAt(x, y) = t;
+    }
+    for (std::uint32_t j = 0; j < m_; ++j)
+      for (std::uint32_t i = 0; i < m_; ++i) {
+        std::int32_t& c = cells_[static_cast<std::size_t>(j) * m_ + i];
+        if (c >= 0) continue;
+        c = i > 0 ? cells_[static_cast<std::size_t>(j) * m_ + i - 1]
+                  : (j > 0 ? cells_[static_cast<std::size_t>(j - 1) * m_] : -1);
+        if (c < 0) c = fallback;
+      }
+  }
+
  private:
   static constexpr std::uint32_t kMaxSize = 1u << 13;
 

@@ -42,7 +42,10 @@ Triangulation& Triangulation::operator=(Triangulation&&) noexcept = default;
 
 std::size_t Triangulation::vertexCount() const { return state_->delaunay.vertexCount(); }
 const std::vector<double>& Triangulation::points() const { return state_->delaunay.xy; }
-const Stats& Triangulation::stats() const { return state_->delaunay.stats; }
+const Stats& Triangulation::stats() const {
+  state_->delaunay.stats.gridSize = state_->delaunay.gridSize();
+  return state_->delaunay.stats;
+}
 std::size_t Triangulation::polylineCount() const { return state_->delaunay.constraints.polylineCount; }
 
 std::size_t Triangulation::triangleCount() const {
