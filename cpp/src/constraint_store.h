@@ -4,9 +4,10 @@
 // and its net winding, which decides inside and outside. Keyed by the undirected vertex
 // pair, so it survives the flips and re-triangulations that move half-edges around.
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
+
+#include "edge_map.h"
 
 namespace geocdt {
 
@@ -43,12 +44,12 @@ class ConstraintStore {
   // Marks u-v with src, whose winding runs from u to v; merges with what u-v carries.
   void mark(std::uint32_t u, std::uint32_t v, EdgeSource src) {
     if (u > v) src.winding = -src.winding;
-    const auto [it, fresh] = edges_.try_emplace(key(u, v), src);
+    const auto [entry, fresh] = edges_.insert(key(u, v), src);
     if (fresh) {
-      if (src.extra >= 0) it->second.extra = copyExtra(src.extra);
+      if (src.extra >= 0) entry->extra = copyExtra(src.extra);
       return;
     }
-    EdgeSource& e = it->second;
+    EdgeSource& e = *entry;
     e.winding += src.winding;
     addPolyline(e, src.polyline);
     if (src.extra >= 0) {
@@ -59,25 +60,21 @@ class ConstraintStore {
 
   // Removes u-v and returns what it carried, winding from u to v.
   EdgeSource take(std::uint32_t u, std::uint32_t v) {
-    const auto it = edges_.find(key(u, v));
-    EdgeSource src = it->second;
-    edges_.erase(it);
+    EdgeSource src = *edges_.find(key(u, v));
+    edges_.erase(key(u, v));
     if (u > v) src.winding = -src.winding;
     return src;
   }
 
   // Edge u-v was split at w: both halves carry what u-v carried.
   void split(std::uint32_t u, std::uint32_t v, std::uint32_t w) {
-    if (edges_.find(key(u, v)) == edges_.end()) return;
+    if (!edges_.find(key(u, v))) return;
     const EdgeSource src = take(u, v);
     mark(u, w, src);
     mark(w, v, src);
   }
 
-  const EdgeSource* find(std::uint32_t u, std::uint32_t v) const {
-    const auto it = edges_.find(key(u, v));
-    return it == edges_.end() ? nullptr : &it->second;
-  }
+  const EdgeSource* find(std::uint32_t u, std::uint32_t v) const { return edges_.find(key(u, v)); }
 
   // Winding change met when crossing from the left of u->v to its right.
   std::int32_t windingAcross(std::uint32_t u, std::uint32_t v) const {
@@ -121,7 +118,7 @@ class ConstraintStore {
     return static_cast<std::int32_t>(extras_.size() - 1);
   }
 
-  std::unordered_map<std::uint64_t, EdgeSource> edges_;
+  EdgeMap<EdgeSource> edges_;
   std::vector<std::vector<std::uint32_t>> extras_;
 };
 

@@ -64,6 +64,8 @@ void SegmentInserter::restoreDelaunay() {
 }
 
 std::int32_t SegmentInserter::edgeOutOf(std::uint32_t a) {
+  // The piece before usually ended at a: its edge's twin starts here.
+  if (hint_ >= 0 && hint_ < 3 * d_.topo.slotCount() && d_.topo.tri[hint_] == a) return hint_;
   // Pieces follow each other, so the last triangle is usually next to a.
   const Hit h = d_.locate(d_.xy[2 * a], d_.xy[2 * a + 1], false);
   return h.kind == Hit::Kind::Vertex ? h.edge : -1;
@@ -71,6 +73,7 @@ std::int32_t SegmentInserter::edgeOutOf(std::uint32_t a) {
 
 void SegmentInserter::markConstrained(std::int32_t e, const EdgeSource& src) {
   Topology& t = d_.topo;
+  hint_ = t.adj[e];  // starts at the far end, where the next piece starts
   t.fixed[e] = 1;
   t.fixed[t.adj[e]] = 1;
   d_.constraints.mark(t.tri[e], t.tri[nextEdge(e)], src);
@@ -93,6 +96,14 @@ SegmentInserter::Walk SegmentInserter::walk(std::uint32_t a, std::uint32_t b) {
   const std::int32_t start = edgeOutOf(a);
   if (start < 0) return result;
   std::int32_t e = start, h = -1;
+  do {  // most segments are edges already: a turn around a comparing ids finds them
+    if (topo.tri[nextEdge(e)] == b) {
+      result.reached = b;
+      result.existing = e;
+      return result;
+    }
+    e = topo.adj[prevEdge(e)];
+  } while (e != start);
   do {  // turn around a to find the triangle the segment enters, or an edge along it
     const std::uint32_t x = topo.tri[nextEdge(e)], y = topo.tri[prevEdge(e)];
     if (x != kGhost) {

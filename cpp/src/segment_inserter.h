@@ -49,6 +49,7 @@ class SegmentInserter {
   };
   std::vector<std::int32_t> crossed_, touched_;
   std::deque<QueuedEdge> queue_;
+  std::int32_t hint_ = -1;  // a half-edge out of where the next piece likely starts
 };
 
 }  // namespace geocdt

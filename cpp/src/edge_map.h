@@ -1,0 +1,90 @@
+#pragma once
+// A flat hash map from an undirected edge key to a value: open addressing with linear
+// probing in two arrays, no allocation per entry. The constraint store keeps one entry per
+// constrained edge, hundreds of thousands on real data.
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace geocdt {
+
+template <typename Value>
+class EdgeMap {
+ public:
+  static constexpr std::uint64_t kEmpty = ~0ull;
+
+  std::size_t size() const { return size_; }
+
+  Value* find(std::uint64_t key) {
+    if (keys_.empty()) return nullptr;
+    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
+      if (keys_[i] == key) return &values_[i];
+      if (keys_[i] == kEmpty) return nullptr;
+    }
+  }
+  const Value* find(std::uint64_t key) const { return const_cast<EdgeMap*>(this)->find(key); }
+
+  // The value at key, and whether it was inserted (with value) rather than found.
+  std::pair<Value*, bool> insert(std::uint64_t key, const Value& value) {
+    if (2 * (size_ + 1) > keys_.size()) grow();
+    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
+      if (keys_[i] == key) return {&values_[i], false};
+      if (keys_[i] == kEmpty) {
+        keys_[i] = key;
+        values_[i] = value;
+        ++size_;
+        return {&values_[i], true};
+      }
+    }
+  }
+
+  // Removes key, shifting later entries of its probe run back so no tombstone is needed.
+  void erase(std::uint64_t key) {
+    if (keys_.empty()) return;
+    std::size_t i = slot(key);
+    while (keys_[i] != key) {
+      if (keys_[i] == kEmpty) return;
+      i = (i + 1) & mask_;
+    }
+    for (std::size_t j = (i + 1) & mask_; keys_[j] != kEmpty; j = (j + 1) & mask_) {
+      const std::size_t home = slot(keys_[j]);
+      // Move j back to i when i lies on the way from j's home slot to j.
+      if (((j - home) & mask_) >= ((j - i) & mask_)) {
+        keys_[i] = keys_[j];
+        values_[i] = values_[j];
+        i = j;
+      }
+    }
+    keys_[i] = kEmpty;
+    --size_;
+  }
+
+  void clear() {
+    keys_.clear();
+    values_.clear();
+    size_ = 0;
+    mask_ = 0;
+  }
+
+ private:
+  std::size_t slot(std::uint64_t key) const {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
+  }
+
+  void grow() {
+    std::vector<std::uint64_t> keys(keys_.empty() ? 64 : 2 * keys_.size(), kEmpty);
+    std::vector<Value> values(keys.size());
+    keys.swap(keys_);
+    values.swap(values_);
+    mask_ = keys_.size() - 1;
+    size_ = 0;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] != kEmpty) insert(keys[i], values[i]);
+  }
+
+  std::vector<std::uint64_t> keys_;
+  std::vector<Value> values_;
+  std::size_t size_ = 0, mask_ = 0;
+};
+
+}  // namespace geocdt
