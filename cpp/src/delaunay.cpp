@@ -65,14 +65,16 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   std::vector<std::uint32_t> order = insertionOrder(input, count, options_.order);
   // Reserved after the sort's buffers are gone, to keep the peak low: about 2 triangles a point.
   topo.reserve(topo.tri.size() / 3 + 2 * static_cast<std::size_t>(count) + 8);
-  // While inserting, vertex base + k holds the k-th point in insertion order, so that the
-  // walk and the flips read coordinates that sit next to each other in memory.
+  // A large batch is stored in insertion order while it is inserted, so that the walk and
+  // the flips read coordinates that sit next to each other in memory; it costs one pass
+  // over all triangles at the end, which a small batch (a click, a polyline) must not pay.
+  const bool large = !built_ || 8 * static_cast<std::uint64_t>(count) > base;
   xy.resize(2 * (static_cast<std::size_t>(base) + count));
   double* p = xy.data() + 2 * static_cast<std::size_t>(base);
   double minX = input[0], maxX = minX, minY = input[1], maxY = minY;
   for (std::uint32_t k = 0; k < count; ++k) {
-    const double x = input[2 * static_cast<std::size_t>(order[k])];
-    const double y = input[2 * static_cast<std::size_t>(order[k]) + 1];
+    const std::uint32_t i = large ? order[k] : k;
+    const double x = input[2 * static_cast<std::size_t>(i)], y = input[2 * static_cast<std::size_t>(i) + 1];
     p[2 * k] = x;
     p[2 * k + 1] = y;
     minX = std::min(minX, x);
@@ -81,21 +83,58 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
     maxY = std::max(maxY, y);
   }
   if (grid_.empty()) grid_.reset(minX, minY, maxX, maxY, options_.gridDensity);
-  // ids[input index] = the vertex (in insertion numbering) the point became or equals.
+  // ids[input index] = the vertex (in the batch's working numbering) it became or equals.
   batchStart_ = true;
+  const std::uint64_t duplicatesBefore = stats.duplicates;
   if (!built_) {
     Status s = insertPending(base, count, order, ids);
     if (!s.ok()) return s;
   } else {
     for (std::uint32_t k = 0; k < count; ++k) {
-      const std::uint32_t r = insertVertex(base + k);
+      const std::uint32_t v = base + (large ? k : order[k]);
+      const std::uint32_t r = insertVertex(v);
       if (r == kGhost) return error_;
       ids[order[k]] = r;
     }
   }
-  renumberBatch(input, base, count, order, ids);
-  if (built_ && 8 * static_cast<std::uint64_t>(count) > vertexCount()) refreshGrid();
+  if (large) {
+    renumberBatch(input, base, count, order, ids);
+    if (built_) refreshGrid();
+  } else if (stats.duplicates != duplicatesBefore) {
+    compactSmallBatch(base, count, ids);
+  }
   return Status::success();
+}
+
+// A small batch kept its input numbering; duplicates left holes in it. Each surviving new
+// vertex moves down to its place in first-appearance order, renamed in the triangles around
+// it, which a turn around the vertex finds. New ids never exceed old ones, and going up in
+// new ids means a target id is free by the time it is taken.
+void Delaunay::compactSmallBatch(std::uint32_t base, std::uint32_t count, std::uint32_t* ids) {
+  std::vector<std::uint32_t> newId(count, kGhost);
+  std::uint32_t next = base;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::uint32_t v = ids[i];
+    if (v < base) continue;
+    if (newId[v - base] == kGhost) newId[v - base] = next++;
+    ids[i] = newId[v - base];
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> moves;  // (new, old)
+  for (std::uint32_t k = 0; k < count; ++k)
+    if (newId[k] != kGhost && newId[k] != base + k) moves.push_back({newId[k], base + k});
+  std::sort(moves.begin(), moves.end());
+  for (const auto& [to, from] : moves) {
+    const Hit h = locate(xy[2 * static_cast<std::size_t>(from)], xy[2 * static_cast<std::size_t>(from) + 1], true);
+    xy[2 * static_cast<std::size_t>(to)] = xy[2 * static_cast<std::size_t>(from)];
+    xy[2 * static_cast<std::size_t>(to) + 1] = xy[2 * static_cast<std::size_t>(from) + 1];
+    if (h.kind != Hit::Kind::Vertex) continue;
+    std::int32_t e = h.edge;
+    do {
+      topo.tri[e] = to;
+      e = topo.adj[prevEdge(e)];
+    } while (e != h.edge);
+  }
+  xy.resize(2 * static_cast<std::size_t>(next));
 }
 
 void Delaunay::refreshGrid() {

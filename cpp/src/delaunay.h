@@ -72,6 +72,7 @@ class Delaunay {
                        std::uint32_t* ids);
   void dedupCollinear(std::uint32_t base, const std::vector<std::uint32_t>& order,
                       std::uint32_t* ids);
+  void compactSmallBatch(std::uint32_t base, std::uint32_t count, std::uint32_t* ids);
   void renumberBatch(const double* input, std::uint32_t base, std::uint32_t count,
                      std::vector<std::uint32_t>& order, std::uint32_t* ids);
   void refreshGrid();

@@ -1,6 +1,7 @@
 // Delaunay triangulation of points: every result goes through the one invariant checker.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -182,6 +183,44 @@ TEST(Delaunay, IncrementalBatchesKeepIdsAndStayValid) {
   c.inputXY = &input;
   c.inputToVertex = &map;
   EXPECT_EQ(checkTriangulation(second, c), "");
+}
+
+TEST(Delaunay, ManySmallBatchesWithDuplicates) {
+  // Small batches keep input numbering and rename only around the vertices that move.
+  const std::vector<double> pool = testing::uniformPoints(3000, 23);
+  Triangulation t;
+  ASSERT_TRUE(t.insertPoints(pool.data(), 1000).ok());
+  std::vector<double> input(pool.begin(), pool.begin() + 2000);
+  std::vector<std::uint32_t> map(1000);
+  for (std::uint32_t i = 0; i < 1000; ++i) map[i] = i;  // no duplicates in the first batch
+  testing::Random r(4);
+  for (int batch = 0; batch < 150; ++batch) {
+    std::vector<double> xy;
+    for (int k = 0; k < 12; ++k) {
+      // Each point is new, a repeat of an earlier point, or a repeat within the batch.
+      const std::size_t pick = r.next() % 3 == 0 ? r.next() % (input.size() / 2) : 1000 + r.next() % 2000;
+      const double* src = k > 0 && r.next() % 4 == 0 ? &xy[xy.size() - 2] : &pool[2 * pick];
+      const double x = src[0], y = src[1];
+      xy.push_back(x);
+      xy.push_back(y);
+    }
+    std::vector<std::uint32_t> ids(12);
+    ASSERT_TRUE(t.insertPoints(xy.data(), 12, ids.data()).ok());
+    input.insert(input.end(), xy.begin(), xy.end());
+    map.insert(map.end(), ids.begin(), ids.end());
+  }
+  const Mesh m = t.mesh();
+  testing::CheckOptions c;
+  c.inputXY = &input;
+  c.inputToVertex = &map;
+  EXPECT_EQ(testing::checkTriangulation(m, c), "");
+  // Vertex ids follow first appearance: each new id is one more than the largest before it.
+  std::uint32_t largest = 999;
+  for (const std::uint32_t id : map) {
+    EXPECT_LE(id, largest + 1);
+    largest = std::max(largest, id);
+  }
+  EXPECT_EQ(largest + 1, m.points.size() / 2);
 }
 
 TEST(Delaunay, DeterministicResult) {
