@@ -30,6 +30,11 @@ namespace {
 // Sorts ids[begin, end) by their Hilbert keys with a two-pass 16-bit radix sort.
 void sortByKey(std::vector<std::uint64_t>& items, std::vector<std::uint64_t>& scratch,
                std::size_t begin, std::size_t end) {
+  // Below a few thousand items the radix passes' 64k-entry tables cost more than they save.
+  if (end - begin < 4096) {
+    std::sort(items.begin() + static_cast<std::ptrdiff_t>(begin), items.begin() + static_cast<std::ptrdiff_t>(end));
+    return;
+  }
   std::vector<std::uint32_t> count(1u << 16);
   for (int pass = 0; pass < 2; ++pass) {
     const int shift = 32 + 16 * pass;
