@@ -1,0 +1,34 @@
+// `npm run demo:build`: builds the static demo into demo/dist (page, worker, wasm, data).
+// geocdt's wasm is built first when it is missing (a fresh clone after `npm ci`).
+import { spawnSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { build } from 'vite';
+
+const repo = fileURLToPath(new URL('../../', import.meta.url));
+const wasm = new URL('../../web/dist/geocdt.wasm', import.meta.url);
+export const distDir = fileURLToPath(new URL('../dist/', import.meta.url));
+
+function ensureWasm() {
+  if (existsSync(wasm)) return;
+  console.log('geocdt.wasm is not built yet: running `npm run build` first');
+  const r = spawnSync('npm', ['run', 'build'], { cwd: repo, stdio: 'inherit' });
+  if (r.status !== 0 || !existsSync(wasm)) {
+    throw new Error('could not build web/dist/geocdt.wasm (see `npm run build` above)');
+  }
+}
+
+export async function buildDemo() {
+  ensureWasm();
+  const started = performance.now();
+  await build({ configFile: fileURLToPath(new URL('../vite.config.js', import.meta.url)) });
+  console.log(`demo built into demo/dist in ${Math.round(performance.now() - started)} ms`);
+  return distDir;
+}
+
+if (process.argv[1] === fileURLToPath(import.meta.url)) {
+  buildDemo().catch((e) => {
+    console.error(e.message);
+    process.exit(1);
+  });
+}

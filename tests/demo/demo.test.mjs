@@ -1,0 +1,277 @@
+// The Leaflet demo in a real browser: builds demo/dist, serves it on 127.0.0.1, opens it in
+// headless Chromium and checks what a user would see: the statistics, the map, the errors.
+// Screenshots go to test-output/. Set GEOCDT_DEMO_NO_BUILD=1 to test an existing demo/dist.
+import assert from 'node:assert/strict';
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { after, before, test } from 'node:test';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { buildDemo, distDir } from '../../demo/scripts/build-demo.mjs';
+import { serveDirectory } from '../../demo/scripts/static-server.mjs';
+import { projectLonLat } from '../../demo/src/mercator.js';
+
+const OUTPUT = fileURLToPath(new URL('../../test-output/', import.meta.url));
+const READY_TIMEOUT = 180_000;
+
+let server;
+let context;
+let page;
+let userDataDir;
+const consoleErrors = [];
+
+before(async () => {
+  if (!process.env.GEOCDT_DEMO_NO_BUILD) await buildDemo();
+  mkdirSync(OUTPUT, { recursive: true });
+  const served = await serveDirectory(distDir, { port: 0 });
+  server = served.server;
+  userDataDir = mkdtempSync(join(tmpdir(), 'geocdt-demo-chromium-'));
+  context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    headless: true,
+    viewport: { width: 1280, height: 800 },
+    args: [
+      '--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking',
+      '--disable-component-update', '--disable-sync', '--no-first-run',
+    ],
+  });
+  page = context.pages()[0] ?? (await context.newPage());
+  page.on('console', (m) => m.type() === 'error' && consoleErrors.push(m.text()));
+  page.on('pageerror', (e) => consoleErrors.push(String(e)));
+  const started = Date.now();
+  await page.goto(served.url);
+  await waitForStatus(['ready', 'failed']);
+  console.log(`# page load to first triangulation drawn: ${Date.now() - started} ms`);
+});
+
+after(async () => {
+  await context?.close();
+  server?.close();
+  if (userDataDir) rmSync(userDataDir, { recursive: true, force: true });
+});
+
+async function waitForStatus(statuses, timeout = READY_TIMEOUT) {
+  await page.waitForFunction((s) => s.includes(document.body.dataset.status), statuses, { timeout });
+}
+
+// Waits until the page has handled the change that `action` starts.
+async function settle(action, statuses = ['ready']) {
+  await page.evaluate(() => { document.body.dataset.status = 'waiting-for-test'; });
+  await action();
+  await waitForStatus(statuses.concat('failed'));
+}
+
+async function readStats() {
+  return page.evaluate(() => {
+    const number = (id) => Number(document.getElementById(id).textContent.replace(/[^\d.]/g, ''));
+    return {
+      status: document.body.dataset.status,
+      points: number('stat-points'),
+      constraints: number('stat-constraints'),
+      crossings: number('stat-crossings'),
+      vertices: number('stat-vertices'),
+      triangles: number('stat-triangles'),
+      inside: number('stat-inside'),
+      triangulateMs: number('stat-triangulate-ms'),
+      totalMs: number('stat-total-ms'),
+      renderer: document.getElementById('stat-renderer').textContent,
+      error: document.getElementById('error').hidden ? null : document.getElementById('error').textContent,
+      raw: window.geocdtDemo.stats,
+    };
+  });
+}
+
+// Records the time between painted frames, in the page.
+function startFrameLog() {
+  const log = { gaps: [], stop: false };
+  window.frameLog = log;
+  let last = performance.now();
+  const tick = (t) => {
+    log.gaps.push(t - last);
+    last = t;
+    if (!log.stop) requestAnimationFrame(tick);
+  };
+  requestAnimationFrame(tick);
+}
+
+function stopFrameLog() {
+  window.frameLog.stop = true;
+  return window.frameLog.gaps;
+}
+
+async function dropFile(name, text) {
+  await page.setInputFiles('#file', { name, mimeType: 'application/geo+json', buffer: Buffer.from(text) });
+}
+
+test('the bundled Natural Earth dataset is triangulated and drawn', async () => {
+  const s = await readStats();
+  console.log('# world-50m:', JSON.stringify(s.raw));
+  assert.equal(s.status, 'ready', s.error ?? 'the page did not get ready');
+  assert.equal(s.error, null);
+  assert.ok(s.triangles > 100_000, `triangles: ${s.triangles}`);
+  assert.ok(s.constraints > 100_000, `constraints: ${s.constraints}`);
+  assert.ok(s.inside > 0 && s.inside < s.triangles, `inside: ${s.inside} of ${s.triangles}`);
+  assert.ok(s.vertices > 0 && s.vertices <= s.points + s.crossings, `vertices: ${s.vertices}`);
+  assert.ok(s.triangulateMs > 0 && s.totalMs >= s.triangulateMs);
+  assert.match(s.renderer, /^WebGL/);
+  assert.deepEqual(consoleErrors, []);
+  await page.screenshot({ path: join(OUTPUT, 'demo-world-50m.png') });
+});
+
+test('the worker projects exactly as Leaflet\'s EPSG3857', async () => {
+  const lonLats = [[0, 0], [10, 45], [-73.98, 40.75], [179.9, -85.2], [-180, 89]];
+  const leaflet = await page.evaluate((ll) => {
+    const crs = window.geocdtDemo.map.options.crs;
+    return ll.map(([lng, lat]) => { const p = crs.project({ lat, lng }); return [p.x, p.y]; });
+  }, lonLats);
+  const ours = projectLonLat(lonLats.flat());
+  leaflet.forEach(([x, y], i) => {
+    assert.ok(Math.abs(ours[2 * i] - x) < 1e-6 && Math.abs(ours[2 * i + 1] - y) < 1e-6, `at ${lonLats[i]}`);
+  });
+});
+
+// A square with a square hole, two lines crossing once inside it, three loose points.
+const SQUARE = {
+  type: 'FeatureCollection',
+  features: [
+    { type: 'Feature', properties: {}, geometry: { type: 'Polygon', coordinates: [
+      [[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]],
+      [[6, 6], [6, 8], [8, 8], [8, 6], [6, 6]],
+    ] } },
+    { type: 'Feature', properties: {}, geometry: { type: 'MultiLineString', coordinates: [
+      [[1, 1], [5, 5]], [[1, 5], [5, 1]],
+    ] } },
+    { type: 'Feature', properties: {}, geometry: { type: 'MultiPoint', coordinates: [[2, 8], [8, 2], [4, 4.5]] } },
+  ],
+};
+
+test('a GeoJSON file dropped in is triangulated with its constraints and hole', async () => {
+  await settle(() => dropFile('square.geojson', JSON.stringify(SQUARE)));
+  const s = await readStats();
+  assert.equal(s.status, 'ready', s.error);
+  assert.equal(s.points, 3 + 5 + 5 + 2 + 2);
+  assert.equal(s.constraints, 4 + 4 + 1 + 1);
+  assert.equal(s.crossings, 1);
+  assert.equal(s.vertices, 3 + 4 + 4 + 4 + 1);
+  // Euler: 2n - h - 2 triangles with the 4 corners on the hull; the hole takes 2 of them.
+  assert.equal(s.triangles, 2 * s.vertices - 4 - 2);
+  assert.equal(s.inside, s.triangles - 2);
+  assert.equal(s.renderer, 'Leaflet canvas');
+  const view = await page.evaluate(() => window.geocdtDemo.map.getBounds().toBBoxString());
+  const [west, south, east, north] = view.split(',').map(Number);
+  assert.ok(west < 0 && south < 0 && east > 10 && north > 10 && east - west < 40, `view ${view}`);
+  await page.screenshot({ path: join(OUTPUT, 'demo-dropped-file.png') });
+  assert.deepEqual(consoleErrors, []);
+});
+
+test('clicks add points and constraint segments through the incremental API', async () => {
+  const before = await readStats();
+  await page.check('input[name="mode"][value="point"]');
+  const box = await page.locator('#map').boundingBox();
+  const at = (dx, dy) => ({ x: box.x + box.width / 2 + dx, y: box.y + box.height / 2 + dy });
+  await settle(() => page.mouse.click(at(-150, 90).x, at(-150, 90).y));
+  const afterPoint = await readStats();
+  assert.equal(afterPoint.vertices, before.vertices + 1);
+  assert.equal(afterPoint.triangles, before.triangles + 2);
+  assert.equal(afterPoint.points, before.points + 1);
+
+  await page.check('input[name="mode"][value="line"]');
+  await page.mouse.click(at(-200, -120).x, at(-200, -120).y); // the line's first vertex
+  await settle(() => page.mouse.click(at(160, 130).x, at(160, 130).y));
+  const afterLine = await readStats();
+  assert.equal(afterLine.constraints, before.constraints + 1);
+  assert.ok(afterLine.crossings > before.crossings, 'the drawn line crosses the ring and a line');
+  assert.equal(afterLine.triangles, 2 * afterLine.vertices - 4 - 2);
+  await page.keyboard.press('Escape');
+  await page.check('input[name="mode"][value="pan"]');
+  await page.screenshot({ path: join(OUTPUT, 'demo-edited.png') });
+  assert.deepEqual(consoleErrors, []);
+});
+
+test('bad files are reported on the page, and the map keeps the last good mesh', async () => {
+  const before = await readStats();
+  await settle(() => dropFile('broken.geojson', '{"type": "FeatureCollection", "features": ['), ['error']);
+  let s = await readStats();
+  assert.match(s.error, /broken\.geojson: not valid JSON/);
+  assert.equal(s.triangles, before.triangles);
+
+  const badPosition = { type: 'Feature', geometry: { type: 'LineString', coordinates: [[0, 0], ['a', 1]] } };
+  await settle(() => dropFile('bad.geojson', JSON.stringify(badPosition)), ['error']);
+  s = await readStats();
+  assert.match(s.error, /a position is not two finite numbers/);
+
+  const projected = { type: 'Point', coordinates: [500000, 4649776] };
+  await settle(() => dropFile('utm.geojson', JSON.stringify(projected)), ['error']);
+  s = await readStats();
+  assert.match(s.error, /is not lon\/lat in degrees/);
+  await page.screenshot({ path: join(OUTPUT, 'demo-error.png') });
+  consoleErrors.length = 0; // the failed loads are expected to leave nothing in the console
+});
+
+test('an input over the demo\'s size limit is refused with a message', async () => {
+  const before = await readStats();
+  // 3,000,001 points: one more than the demo accepts (a short file: all the same point).
+  const text = `{"type":"MultiPoint","coordinates":[${'[0,0],'.repeat(3_000_000)}[0,0]]}`;
+  await settle(() => dropFile('huge.geojson', text), ['error']);
+  const s = await readStats();
+  assert.match(s.error, /huge\.geojson: too big for the demo: more than 3,000,000 points/);
+  assert.equal(s.triangles, before.triangles);
+  consoleErrors.length = 0;
+});
+
+test('a failing worker (here: the wasm cannot be fetched) is reported on the page', async () => {
+  const broken = await context.newPage();
+  const errors = [];
+  broken.on('pageerror', (e) => errors.push(String(e)));
+  await broken.route('**/*.wasm', (route) => route.abort());
+  await broken.goto(page.url());
+  await broken.waitForFunction(() => document.body.dataset.status === 'failed', null, { timeout: 60_000 });
+  const message = await broken.locator('#error').textContent();
+  assert.match(message, /the triangulation (failed|worker crashed)/);
+  assert.ok(await broken.locator('#error').isVisible());
+  assert.deepEqual(errors, [], 'no uncaught exception in the page');
+  await broken.screenshot({ path: join(OUTPUT, 'demo-worker-failure.png') });
+  await broken.close();
+});
+
+test('Natural Earth 10m (500k+ triangles) loads with WebGL and stays pannable', async () => {
+  // Frames of the page while the worker triangulates: the map must keep painting.
+  await page.evaluate(startFrameLog);
+  await settle(() => page.selectOption('#dataset', 'world-10m'));
+  const s = await readStats();
+  const gaps = await page.evaluate(stopFrameLog);
+  console.log('# world-10m:', JSON.stringify(s.raw));
+  console.log(`# frames while loading 10m: ${gaps.length}, longest gap ${Math.round(Math.max(...gaps))} ms`);
+  assert.equal(s.status, 'ready', s.error);
+  assert.ok(s.triangles > 500_000, `triangles: ${s.triangles}`);
+  // The worker triangulates off the main thread: the page kept painting meanwhile.
+  const loadSeconds = gaps.reduce((a, b) => a + b, 0) / 1000;
+  assert.ok(gaps.length > 10 * loadSeconds, `${gaps.length} frames in ${loadSeconds.toFixed(1)} s of loading`);
+  assert.match(s.renderer, /^WebGL/);
+
+  // Drag the map by hand: the frames painted meanwhile are the user's experience of panning.
+  await page.evaluate(() => window.geocdtDemo.map.setView([47, 8], 5, { animate: false }));
+  const box = await page.locator('#map').boundingBox();
+  const x0 = box.x + box.width / 2;
+  const y0 = box.y + box.height / 2;
+  await page.evaluate(startFrameLog);
+  await page.mouse.move(x0, y0);
+  await page.mouse.down();
+  for (let i = 1; i <= 40; i++) await page.mouse.move(x0 - 8 * i, y0 + 3 * i);
+  const dragFrames = await page.evaluate(stopFrameLog);
+  await page.evaluate(startFrameLog);
+  await page.mouse.up(); // the layer redraws once the move ends
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 500)));
+  const afterFrames = await page.evaluate(stopFrameLog);
+  const sorted = [...dragFrames].sort((a, b) => a - b);
+  const median = sorted[sorted.length >> 1];
+  console.log(`# dragging the 10m mesh: ${dragFrames.length} frames, median ${median.toFixed(1)} ms, ` +
+    `longest ${Math.max(...dragFrames).toFixed(0)} ms; redraw after the drag: longest frame ${Math.max(...afterFrames).toFixed(0)} ms`);
+  assert.ok(dragFrames.length >= 10, `only ${dragFrames.length} frames painted while dragging`);
+  assert.ok(median < 100, `median frame while dragging: ${median} ms`);
+  const moved = await page.evaluate(() => window.geocdtDemo.map.getCenter());
+  assert.ok(moved.lng > 8 && moved.lat > 47, `the map did not pan: ${JSON.stringify(moved)}`);
+  await page.screenshot({ path: join(OUTPUT, 'demo-world-10m.png') });
+  assert.deepEqual(consoleErrors, []);
+});
