@@ -85,6 +85,7 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   if (grid_.empty()) grid_.reset(minX, minY, maxX, maxY, options_.gridDensity);
   // ids[input index] = the vertex (in the batch's working numbering) it became or equals.
   batchStart_ = true;
+  smallBatch_ = !large;
   const std::uint64_t duplicatesBefore = stats.duplicates;
   if (!built_) {
     Status s = insertPending(base, count, order, ids);
@@ -379,8 +380,9 @@ Hit Delaunay::scan(double x, double y) const {
 
 std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
   const double x = xy[2 * v], y = xy[2 * v + 1];
-  // The first point of a batch has no useful last triangle: the grid knows better.
-  const bool fromGrid = options_.start == LocateStart::Grid || batchStart_;
+  // The first point of a batch has no useful last triangle, nor has any point of a small
+  // batch (its points lie far apart): the grid knows better.
+  const bool fromGrid = options_.start == LocateStart::Grid || batchStart_ || smallBatch_;
   batchStart_ = false;
   const Hit h = locate(x, y, fromGrid);
   switch (h.kind) {

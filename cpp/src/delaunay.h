@@ -85,6 +85,7 @@ class Delaunay {
   PointGrid grid_;
   bool built_ = false;
   bool batchStart_ = false;
+  bool smallBatch_ = false;
   std::int32_t last_ = -1;
   std::vector<std::uint32_t> pending_;  // vertices waiting for a non-collinear triple
   std::vector<std::int32_t> stack_;

@@ -1,6 +1,7 @@
 #pragma once
 // Triangles as flat arrays in delaunator's layout, closed by a ghost vertex at infinity so
 // that every half-edge has a twin. Slots of removed triangles go to a free list for reuse.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -24,10 +25,14 @@ struct Topology {
     return tri[3 * t] == kGhost || tri[3 * t + 1] == kGhost || tri[3 * t + 2] == kGhost;
   }
 
+  // Room for `slots` triangles. Grows at least geometrically: an exact reserve per small
+  // batch would copy every array on every call.
   void reserve(std::size_t slots) {
-    tri.reserve(3 * slots);
-    adj.reserve(3 * slots);
-    fixed.reserve(3 * slots);
+    if (3 * slots <= tri.capacity()) return;
+    const std::size_t capacity = std::max(3 * slots, 2 * tri.capacity());
+    tri.reserve(capacity);
+    adj.reserve(capacity);
+    fixed.reserve(capacity);
   }
 
   void clear() {
