@@ -1,0 +1,20 @@
+#pragma once
+// Command-line settings shared by the benchmark tables.
+#include <string>
+
+namespace bench {
+
+struct BenchConfig {
+  bool quick = false;        // fewer repetitions and no 4M run: a smoke test, not a measurement
+  std::string dataDir;       // where scripts/datasets wrote the .gpl files
+  int timeoutSeconds = 300;  // per measured row; a hang becomes a failed row
+};
+
+// Issue 2's tables: Delaunay triangulation of point sets, geocdt against CGAL, and geocdt's
+// insertion order x locate start combinations.
+void printDelaunayTables(const BenchConfig& config);
+
+// Issue 3's table: constrained triangulation of real and random polylines.
+void printConstrainedTable(const BenchConfig& config);
+
+}  // namespace bench

@@ -1,0 +1,89 @@
+// Replaces every form of the global operator new and delete with malloc/free plus a count
+// of the bytes in use. malloc_usable_size gives the size on release, so unsized deletes
+// count right and the count includes the allocator's rounding up. The benchmark is single
+// threaded, so plain counters suffice.
+#include "heap_counter.h"
+
+#include <malloc.h>
+
+#include <cstdlib>
+#include <new>
+
+namespace {
+
+std::size_t inUse = 0;
+std::size_t peak = 0;
+
+void* counted(void* p) {
+  if (p) {
+    inUse += malloc_usable_size(p);
+    if (inUse > peak) peak = inUse;
+  }
+  return p;
+}
+
+void* allocate(std::size_t size) {
+  void* p = counted(std::malloc(size ? size : 1));
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+
+void* allocateAligned(std::size_t size, std::align_val_t align) {
+  std::size_t a = static_cast<std::size_t>(align);
+  if (a < sizeof(void*)) a = sizeof(void*);
+  void* p = nullptr;
+  if (posix_memalign(&p, a, size ? size : 1) != 0) throw std::bad_alloc();
+  return counted(p);
+}
+
+void release(void* p) noexcept {
+  if (!p) return;
+  inUse -= malloc_usable_size(p);
+  std::free(p);
+}
+
+}  // namespace
+
+namespace bench {
+std::size_t heapInUse() { return inUse; }
+std::size_t heapPeak() { return peak; }
+void resetHeapPeak() { peak = inUse; }
+}  // namespace bench
+
+void* operator new(std::size_t n) { return allocate(n); }
+void* operator new[](std::size_t n) { return allocate(n); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  return counted(std::malloc(n ? n : 1));
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+  return counted(std::malloc(n ? n : 1));
+}
+void* operator new(std::size_t n, std::align_val_t a) { return allocateAligned(n, a); }
+void* operator new[](std::size_t n, std::align_val_t a) { return allocateAligned(n, a); }
+void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  try {
+    return allocateAligned(n, a);
+  } catch (...) {
+    return nullptr;
+  }
+}
+void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  try {
+    return allocateAligned(n, a);
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+void operator delete(void* p) noexcept { release(p); }
+void operator delete[](void* p) noexcept { release(p); }
+void operator delete(void* p, std::size_t) noexcept { release(p); }
+void operator delete[](void* p, std::size_t) noexcept { release(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { release(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { release(p); }
+void operator delete(void* p, std::align_val_t) noexcept { release(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { release(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { release(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { release(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { release(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { release(p); }

@@ -1,0 +1,119 @@
+// npm run bench: geocdt against its JS/wasm peers, same process, alternating runs, medians.
+//   node --expose-gc bench/js/bench.js [--quick]
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+import { init, triangulate } from 'geocdt';
+import { alternate, median } from './timing.js';
+import { countryArcs, countryRings, indexedGraph, pointCount, uniform } from './datasets.js';
+import * as peers from './peers.js';
+
+const quick = process.argv.includes('--quick');
+const here = (file) => fileURLToPath(new URL(file, import.meta.url));
+const n = (x) => x.toLocaleString('en-US');
+const ms = (x) => (x === undefined ? '' : x < 10 ? x.toFixed(2) : x.toFixed(0));
+
+function table(header, rows) {
+  const line = (cells) => `| ${cells.join(' | ')} |`;
+  console.log([line(header), line(header.map(() => '---')), ...rows.map(line)].join('\n'));
+  console.log();
+}
+
+function resultRows(results, reference) {
+  return Object.entries(results).map(([name, r]) => r.error
+    ? [name, 'FAILED', '', r.error]
+    : [name, ms(r.ms), reference && results[reference]?.ms ? `${(r.ms / results[reference].ms).toFixed(2)}×` : '', r.summary]);
+}
+
+// Reports the median of the wasm core's share of the time (the rest: checks and copies).
+function geocdt(name, input, options) {
+  const core = [];
+  return {
+    name,
+    run: () => triangulate(input, options),
+    describe: (r) => {
+      core.push(r.stats.coreMilliseconds);
+      const bad = peers.badTriangles(r.points, r.triangles);
+      return `${n(r.triangles.length / 3)} triangles, ${n(r.stats.crossings)} crossings, ` +
+        `core ${ms(median(core))} ms${bad ? `, ${bad} INVALID` : ''}`;
+    },
+  };
+}
+
+async function startup() {
+  const wasm = readFileSync(here('../../web/dist/geocdt.wasm'));
+  const runs = [];
+  for (let i = 0; i < 7; i++) runs.push(JSON.parse(execFileSync(process.execPath, [here('startup.js')], { encoding: 'utf8' })));
+  console.log('## Package\n');
+  table(['measure', 'value', 'target'], [
+    ['geocdt.wasm', `${n(wasm.length)} B, ${n(gzipSync(wasm, { level: 9 }).length)} B gzipped`, '≤ 100 KB gzipped'],
+    ['cold `await init()` (median of 7 processes)', `${ms(median(runs.map((r) => r.initMs)))} ms`, '≤ 50 ms'],
+    ['import + init', `${ms(median(runs.map((r) => r.importAndInitMs)))} ms`, ''],
+  ]);
+}
+
+function heapPeak(sizes) {
+  console.log('## wasm heap per point (fresh process, uniform points)\n');
+  table(['points', 'allocator peak / point', 'memory growth / point', 'target'], sizes.map((size) => {
+    const r = JSON.parse(execFileSync(process.execPath, [here('heap-peak.js'), String(size)], { encoding: 'utf8' }));
+    return [n(size), `${r.peakBytesPerPoint.toFixed(1)} B`, `${r.heapGrowthPerPoint.toFixed(1)} B`, '≤ 80 B'];
+  }));
+}
+
+async function uniformPoints(sizes) {
+  console.log('## Uniform points: geocdt vs delaunator\n');
+  console.log('geocdt times include the input checks and the copies in and out of the wasm heap.\n');
+  for (const size of sizes) {
+    const xy = uniform(size);
+    const rounds = size <= 100_000 ? 9 : size <= 1_000_000 ? 5 : 3;
+    const results = await alternate([
+      geocdt('geocdt', { points: xy }),
+      { name: 'delaunator', run: () => peers.delaunator(xy), describe: peers.summary },
+    ], rounds);
+    console.log(`### ${n(size)} points (${rounds} alternating rounds, medians)\n`);
+    table(['library', 'ms', 'vs delaunator', 'result'], resultRows(results, 'delaunator'));
+  }
+}
+
+// cdt2d takes minutes from the 50m scale on; Triangle (wasm32, fixed 16 MB heap) runs out of
+// memory on the 10m one: they run where they can finish.
+async function constrained(dataset, { cdt2d, triangleWasm }) {
+  const { name, polylines, polygons } = dataset;
+  const graph = indexedGraph(polylines);
+  const contenders = [
+    geocdt('geocdt (keep all)', { polylines }),
+    geocdt('geocdt (keep inside)', { polylines }, { keep: 'inside' }),
+    { name: 'constrainautor', run: () => peers.constrainautor(graph), describe: peers.summary },
+  ];
+  if (cdt2d) contenders.push({ name: 'cdt2d', run: () => peers.cdt(graph), describe: peers.cdtSummary });
+  if (triangleWasm) contenders.push({ name: 'triangle-wasm', run: () => triangle.run(graph), describe: (s) => s });
+  if (polygons) {
+    contenders.push({
+      name: 'earcut (each polygon alone)',
+      run: () => peers.earcutPolygons(polygons),
+      describe: (r) => peers.earcutSummary(polygons, r),
+    });
+  }
+  const rounds = pointCount(polylines) > 200_000 ? 3 : 5;
+  const results = await alternate(contenders, rounds);
+  console.log(`### ${name}: ${n(pointCount(polylines))} points, ${n(polylines.length)} polylines, ` +
+    `${n(graph.edges.length)} distinct-point segments (${rounds} rounds)\n`);
+  table(['library', 'ms', 'vs geocdt', 'result'], resultRows(results, 'geocdt (keep all)'));
+  const skipped = [!cdt2d && 'cdt2d', !triangleWasm && 'triangle-wasm'].filter(Boolean);
+  if (skipped.length) console.log(`(${skipped.join(' and ')}: not run at this scale.)\n`);
+}
+
+const triangle = peers.triangleInWorker();
+await init();
+await startup();
+heapPeak(quick ? [100_000] : [100_000, 1_000_000]);
+await uniformPoints(quick ? [100_000] : [100_000, 1_000_000, 2_000_000]);
+console.log('## Constraints: Natural Earth (world-atlas), triangulated in lon/lat\n');
+console.log('Peers get deduplicated points and index edges prepared outside the timing; geocdt gets the raw rings.\n');
+for (const scale of quick ? ['110m'] : ['110m', '50m', '10m']) {
+  const peersHere = { cdt2d: scale === '110m', triangleWasm: scale !== '10m' };
+  await constrained(countryRings(scale), peersHere);
+  await constrained(countryArcs(scale), peersHere);
+}
+triangle.close();
