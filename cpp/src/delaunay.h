@@ -64,6 +64,7 @@ class Delaunay {
   void setLastTriangle(std::int32_t t) { last_ = t; }
   const Status& lastError() const { return error_; }
   std::uint32_t gridSize() const { return grid_.size(); }
+  void dropGrid() { grid_ = PointGrid(); }  // its memory, before the arrays are handed out
   void clear();
 
  private:

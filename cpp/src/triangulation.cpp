@@ -125,6 +125,7 @@ Mesh Triangulation::mesh(const MeshOptions& options) const {
 }
 
 Mesh Triangulation::release(const MeshOptions& options) {
+  state_->delaunay.dropGrid();
   Mesh m = exportMesh(state_->delaunay, options, true);
   state_->delaunay.clear();
   state_->slotMapValid = false;
