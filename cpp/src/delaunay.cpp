@@ -1,6 +1,7 @@
 #include "delaunay.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
 #include "geocdt/predicates.h"
@@ -86,24 +87,40 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   // ids[input index] = the vertex (in the batch's working numbering) it became or equals.
   batchStart_ = true;
   smallBatch_ = !large;
+  inBatch_ = true;
+  splits_.clear();
   const std::uint64_t duplicatesBefore = stats.duplicates;
   if (!built_) {
     Status s = insertPending(base, count, order, ids);
-    if (!s.ok()) return s;
+    if (!s.ok()) {
+      inBatch_ = false;
+      return s;
+    }
   } else {
     for (std::uint32_t k = 0; k < count; ++k) {
       const std::uint32_t v = base + (large ? k : order[k]);
       const std::uint32_t r = insertVertex(v);
-      if (r == kGhost) return error_;
+      if (r == kGhost) {
+        inBatch_ = false;
+        return error_;
+      }
       ids[order[k]] = r;
     }
   }
+  std::vector<std::uint32_t> newId;
   if (large) {
-    renumberBatch(input, base, count, order, ids);
+    newId = renumberBatch(input, base, count, order, ids);
     if (built_) refreshGrid();
   } else if (stats.duplicates != duplicatesBefore) {
-    compactSmallBatch(base, count, ids);
+    newId = compactSmallBatch(base, count, ids);
   }
+  inBatch_ = false;
+  for (std::array<std::uint32_t, 3> split : splits_) {
+    for (std::uint32_t& v : split)
+      if (v >= base && !newId.empty()) v = newId[v - base];
+    constraints.split(split[0], split[1], split[2]);
+  }
+  splits_.clear();
   return Status::success();
 }
 
@@ -111,7 +128,8 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
 // vertex moves down to its place in first-appearance order, renamed in the triangles around
 // it, which a turn around the vertex finds. New ids never exceed old ones, and going up in
 // new ids means a target id is free by the time it is taken.
-void Delaunay::compactSmallBatch(std::uint32_t base, std::uint32_t count, std::uint32_t* ids) {
+std::vector<std::uint32_t> Delaunay::compactSmallBatch(std::uint32_t base, std::uint32_t count,
+                                                       std::uint32_t* ids) {
   std::vector<std::uint32_t> newId(count, kGhost);
   std::uint32_t next = base;
   for (std::uint32_t i = 0; i < count; ++i) {
@@ -136,6 +154,7 @@ void Delaunay::compactSmallBatch(std::uint32_t base, std::uint32_t count, std::u
     } while (e != h.edge);
   }
   xy.resize(2 * static_cast<std::size_t>(next));
+  return newId;
 }
 
 void Delaunay::refreshGrid() {
@@ -152,8 +171,9 @@ void Delaunay::refreshGrid() {
 
 // Gives the batch's new vertices ids in input order, duplicates removed, and rewrites the
 // triangles, the pending list and the coordinates to match.
-void Delaunay::renumberBatch(const double* input, std::uint32_t base, std::uint32_t count,
-                             std::vector<std::uint32_t>& order, std::uint32_t* ids) {
+std::vector<std::uint32_t> Delaunay::renumberBatch(const double* input, std::uint32_t base,
+                                                   std::uint32_t count, std::vector<std::uint32_t>& order,
+                                                   std::uint32_t* ids) {
   // The insertion numbering is no longer needed: reuse its memory for the new ids, which
   // follow the first appearance of each vertex in the input.
   std::vector<std::uint32_t> newId(std::move(order));
@@ -175,6 +195,7 @@ void Delaunay::renumberBatch(const double* input, std::uint32_t base, std::uint3
   for (std::uint32_t& v : pending_)
     if (v >= base) v = newId[v - base];
   xy.resize(2 * static_cast<std::size_t>(next));
+  return newId;
 }
 
 Status Delaunay::insertPending(std::uint32_t base, std::uint32_t count,
@@ -394,7 +415,16 @@ std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
       insertInFace(h.edge / 3, v);
       break;
     case Hit::Kind::Edge:
-      if (topo.fixed[h.edge]) constraints.split(topo.tri[h.edge], topo.tri[nextEdge(h.edge)], v);
+      if (topo.fixed[h.edge]) {
+        // On a constrained edge: its halves carry what it carried. Inside a batch, v's id is
+        // still a working one, so the store learns of it when the batch ends.
+        const std::array<std::uint32_t, 3> split{topo.tri[h.edge], topo.tri[nextEdge(h.edge)], v};
+        if (inBatch_) {
+          splits_.push_back(split);
+        } else {
+          constraints.split(split[0], split[1], split[2]);
+        }
+      }
       splitEdge(h.edge, v);
       break;
     case Hit::Kind::Empty:

@@ -2,6 +2,7 @@
 // Incremental Delaunay insertion: point location by the dynamic grid and a visibility walk,
 // triangle or edge split, then Lawson flips. The hull is closed by a ghost vertex, so points
 // outside the hull need no special case beyond the ghost's in-circle rule.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -73,9 +74,12 @@ class Delaunay {
                        std::uint32_t* ids);
   void dedupCollinear(std::uint32_t base, const std::vector<std::uint32_t>& order,
                       std::uint32_t* ids);
-  void compactSmallBatch(std::uint32_t base, std::uint32_t count, std::uint32_t* ids);
-  void renumberBatch(const double* input, std::uint32_t base, std::uint32_t count,
-                     std::vector<std::uint32_t>& order, std::uint32_t* ids);
+  // Both return the new id of each working id base + k.
+  std::vector<std::uint32_t> compactSmallBatch(std::uint32_t base, std::uint32_t count,
+                                               std::uint32_t* ids);
+  std::vector<std::uint32_t> renumberBatch(const double* input, std::uint32_t base,
+                                           std::uint32_t count, std::vector<std::uint32_t>& order,
+                                           std::uint32_t* ids);
   void refreshGrid();
   Hit walk(double x, double y, std::int32_t t);
   Hit scan(double x, double y) const;
@@ -87,6 +91,8 @@ class Delaunay {
   bool built_ = false;
   bool batchStart_ = false;
   bool smallBatch_ = false;
+  bool inBatch_ = false;
+  std::vector<std::array<std::uint32_t, 3>> splits_;  // constrained edges split in a batch
   std::int32_t last_ = -1;
   std::vector<std::uint32_t> pending_;  // vertices waiting for a non-collinear triple
   std::vector<std::int32_t> stack_;

@@ -241,6 +241,46 @@ TEST(Constraints, IncrementalPointsAndPolylinesStayValid) {
   EXPECT_EQ(testing::checkConstraints(m, {a, b}, ids), "");
 }
 
+TEST(Constraints, PointsLandingOnConstraintsKeepProvenanceAndInside) {
+  // Large and small batches of points exactly on an existing ring: the ring's pieces keep
+  // their polyline and winding whatever working ids the batch used.
+  for (const std::size_t extra : {400, 3}) {
+    Triangulation t;
+    const std::vector<double> ring = {0, 0, 10, 0, 10, 10, 0, 10, 0, 0};
+    const std::vector<double> line = {-5, 5, 15, 5};
+    ASSERT_TRUE(t.insertPolyline(ring.data(), 5).ok());
+    ASSERT_TRUE(t.insertPolyline(line.data(), 2).ok());
+    std::vector<double> xy = testing::transformed(testing::uniformPoints(extra, 3), 20, -5, -5);
+    for (int k = 1; k < 20; ++k)
+      for (const double v : {k * 0.5, 0.0, 10.0, k * 0.5, k * 0.5, 10.0, 0.0, k * 0.5}) xy.push_back(v);
+    ASSERT_TRUE(t.insertPoints(xy.data(), xy.size() / 2).ok());
+    MeshOptions mo;
+    mo.insideFlags = true;
+    const Mesh m = t.mesh(mo);
+    EXPECT_EQ(testing::checkTriangulation(m), "");
+    for (std::size_t tri = 0; tri < m.inside.size(); ++tri) {
+      double x = 0, y = 0;
+      for (int k = 0; k < 3; ++k) {
+        x += m.points[2 * m.triangles[3 * tri + k]] / 3;
+        y += m.points[2 * m.triangles[3 * tri + k] + 1] / 3;
+      }
+      EXPECT_EQ(m.inside[tri] != 0, x > 0 && x < 10 && y > 0 && y < 10) << x << "," << y;
+    }
+    ASSERT_EQ(m.sourceOffsets.size(), m.constraintEdges.size() + 1);
+    std::size_t onRing = 0;
+    for (std::size_t i = 0; i < m.constraintEdges.size(); ++i) {
+      const std::uint32_t e = m.constraintEdges[i];
+      const std::uint32_t u = m.triangles[e], v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
+      const bool horizontalLine = m.points[2 * u + 1] == 5 && m.points[2 * v + 1] == 5;
+      const std::uint32_t expected = horizontalLine && !(m.points[2 * u] == 0 || m.points[2 * u] == 10) ? 1 : 0;
+      ASSERT_EQ(m.sourceOffsets[i + 1] - m.sourceOffsets[i], 1u);
+      EXPECT_EQ(m.sources[m.sourceOffsets[i]], horizontalLine ? 1u : expected);
+      onRing += !horizontalLine;
+    }
+    EXPECT_GE(onRing, 4u * 20u);  // each side split at its 19 points: 20 pieces
+  }
+}
+
 TEST(Constraints, ConstraintsBeforeAnyTriangle) {
   // Collinear points first: the segment waits until a point off the line arrives.
   Triangulation t;
