@@ -1,0 +1,43 @@
+#!/bin/sh
+# Installs what a fresh Debian machine lacks to build and test geocdt (compilers, CMake,
+# GoogleTest, GMP, Emscripten, Chromium), then the npm dev dependencies. As root it installs;
+# otherwise it prints the exact command to run and fails.
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+missing=""
+need_command() { command -v "$1" >/dev/null 2>&1 || missing="$missing $2"; }
+need_file() { [ -e "$1" ] || missing="$missing $2"; }
+
+need_command cmake cmake
+need_command g++ g++
+need_command clang++ clang
+need_command em++ emscripten
+need_command chromium chromium
+need_file /usr/include/gtest/gtest.h libgtest-dev
+need_file /usr/include/gmpxx.h libgmp-dev
+
+if [ -n "$missing" ]; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "ensure-deps: installing$missing" >&2
+    export DEBIAN_FRONTEND=noninteractive
+    # Another install may hold the dpkg lock for a while: wait for it rather than fail.
+    apt_get() { apt-get -o DPkg::Lock::Timeout=600 "$@"; }
+    # shellcheck disable=SC2086
+    apt_get install -y $missing \
+      || { apt_get update && apt_get install -y $missing; }
+  else
+    echo "ensure-deps: missing Debian packages:$missing. Run:" >&2
+    echo "  sudo apt-get update && sudo apt-get install -y$missing" >&2
+    exit 1
+  fi
+fi
+
+# npm ci when node_modules is missing or older than the lock file. Some registries answer
+# without the other platforms' optional packages (rollup, esbuild), which npm ci then finds
+# missing from the lock: npm install, which keeps the lock as it is, takes over.
+cd "$root"
+if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  echo "ensure-deps: npm ci" >&2
+  npm ci --no-audit --no-fund || npm install --no-audit --no-fund
+fi

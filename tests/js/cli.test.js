@@ -1,0 +1,94 @@
+// The geocdt command line: GeoJSON file in, FeatureCollection of triangles out.
+import { test, before } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { init, meshToGeoJSON, triangulateGeoJSON } from 'geocdt';
+import { uniform } from './support/inputs.js';
+
+const cli = fileURLToPath(new URL('../../web/cli.js', import.meta.url));
+const fixture = fileURLToPath(new URL('./fixtures/small.geojson', import.meta.url));
+const dir = mkdtempSync(join(tmpdir(), 'geocdt-cli-'));
+
+before(() => init());
+
+function run(args, input) {
+  return spawnSync(process.execPath, [cli, ...args], { encoding: 'utf8', input, maxBuffer: 1 << 30 });
+}
+
+function multiPointFile(n) {
+  const xy = uniform(n, 5);
+  const coordinates = [];
+  for (let i = 0; i < xy.length; i += 2) coordinates.push([xy[i], xy[i + 1]]);
+  const path = join(dir, `points-${n}.geojson`);
+  writeFileSync(path, JSON.stringify({ type: 'Feature', properties: {}, geometry: { type: 'MultiPoint', coordinates } }));
+  return path;
+}
+
+test('writes the same FeatureCollection as the API', () => {
+  const input = multiPointFile(300);
+  const out = join(dir, 'out.geojson');
+  const p = run([input, '-o', out]);
+  assert.equal(p.status, 0, p.stderr);
+  assert.equal(p.stderr, '', 'small inputs print nothing');
+  const written = JSON.parse(readFileSync(out, 'utf8'));
+  const expected = meshToGeoJSON(triangulateGeoJSON(JSON.parse(readFileSync(input, 'utf8')), { output: 'arrays' }));
+  assert.deepEqual(written, expected);
+});
+
+test('reads stdin and writes stdout', () => {
+  const geojson = readFileSync(multiPointFile(50), 'utf8');
+  const p = run(['-'], geojson);
+  assert.equal(p.status, 0, p.stderr);
+  assert.equal(JSON.parse(p.stdout).features.length, triangulateGeoJSON(JSON.parse(geojson)).features.length);
+});
+
+test('--stats and progress for a big input go to stderr', () => {
+  const out = join(dir, 'big.geojson');
+  const p = run([multiPointFile(250_000), '-o', out, '--stats']);
+  assert.equal(p.status, 0, p.stderr);
+  assert.match(p.stderr, /geocdt: read 250,000 points/);
+  assert.match(p.stderr, /geocdt: triangulated: [\d,]+ triangles in \d+ ms/);
+  assert.match(p.stderr, /geocdt: writing 100%/);
+  assert.match(p.stderr, /inserted\s+250,000/);
+  assert.ok(JSON.parse(readFileSync(out, 'utf8')).features.length > 490_000);
+});
+
+test('--keep inside with polygons', () => {
+  const out = join(dir, 'inside.geojson');
+  const p = run([fixture, '-o', out, '--keep', 'inside', '--inside-flags']);
+  assert.equal(p.status, 0, p.stderr);
+  const fc = JSON.parse(readFileSync(out, 'utf8'));
+  assert.ok(fc.features.length > 0);
+  assert.ok(fc.features.every((f) => f.properties.inside === true));
+});
+
+test('usage errors exit 2, bad input exits 1, both with a message', () => {
+  let p = run([]);
+  assert.equal(p.status, 2);
+  assert.match(p.stderr, /no input file/);
+  p = run([fixture, '--keep', 'outside']);
+  assert.equal(p.status, 2);
+  assert.match(p.stderr, /--keep must be all or inside/);
+  p = run([fixture, '--frobnicate']);
+  assert.equal(p.status, 2);
+  assert.match(p.stderr, /unknown option --frobnicate/);
+  p = run([join(dir, 'missing.geojson')]);
+  assert.equal(p.status, 1);
+  assert.match(p.stderr, /ENOENT/);
+  p = run(['-'], '{"type": "FeatureCollection", "features": [');
+  assert.equal(p.status, 1);
+  assert.match(p.stderr, /- is not valid JSON/);
+  p = run(['-'], '{"type": "Point", "coordinates": [1, "x"]}');
+  assert.equal(p.status, 1);
+  assert.match(p.stderr, /geometry.coordinates\[1\] must be a number/);
+});
+
+test('--help and --version', () => {
+  assert.match(run(['--help']).stdout, /Usage: geocdt/);
+  const version = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8')).version;
+  assert.equal(run(['--version']).stdout.trim(), version);
+});

@@ -1,0 +1,142 @@
+// Polylines as constraints: crossings split, provenance, inside/outside by even-odd or nonzero.
+import { test, before } from 'node:test';
+import assert from 'node:assert/strict';
+import { init, triangulate, Triangulation, memoryUsage } from 'geocdt';
+import { checkMesh } from './support/invariants.js';
+import { area, checkConstraints, checkInsideFlags } from './support/constraints.js';
+import { random, uniform } from './support/inputs.js';
+
+before(() => init());
+
+function check(input, options = {}) {
+  const r = triangulate(input, { insideFlags: true, ...options });
+  const keepAll = options.keep !== 'inside';
+  checkMesh(r, input, { keepAll });
+  checkConstraints(r, input, { keepAll });
+  checkInsideFlags(r, input, options.fillRule);
+  return r;
+}
+
+const square = (x0, y0, x1, y1) => [x0, y0, x1, y0, x1, y1, x0, y1, x0, y0];
+
+test('one segment through a cloud becomes constrained edges', () => {
+  const input = { points: uniform(2_000, 3), polylines: [[10, 10, 990, 990]] };
+  const r = check(input);
+  assert.ok(r.constrained.some((c) => c === 1));
+  assert.equal(r.stats.polylines, 1);
+  assert.equal(r.stats.segments, 1);
+});
+
+test('two crossing segments meet at a new vertex', () => {
+  const input = { points: [0, 0, 2, 0, 2, 2, 0, 2], polylines: [[-1, 1, 3, 1], [1, -1, 1, 3]] };
+  const r = check(input);
+  assert.equal(r.points.length / 2, 9, '4 points, 4 polyline ends and 1 crossing');
+  assert.equal(r.stats.crossings, 1);
+  assert.equal(r.constraintEdges.length, 4);
+  let found = false;
+  for (let v = 0; v < r.points.length / 2; v++) found ||= r.points[2 * v] === 1 && r.points[2 * v + 1] === 1;
+  assert.ok(found, 'the crossing (1, 1) is a vertex');
+  assert.deepEqual(Array.from(r.inputToVertex.subarray(4)).every((v) => v < 9), true);
+});
+
+test('a star of 64 segments through one point', () => {
+  const polylines = [];
+  for (let i = 0; i < 64; i++) {
+    const a = (Math.PI * i) / 64;
+    polylines.push([100 * Math.cos(a), 100 * Math.sin(a), -100 * Math.cos(a), -100 * Math.sin(a)]);
+  }
+  check({ polylines });
+});
+
+test('collinear overlapping chains, backtracking, repeated points, zero-length segments', () => {
+  const polylines = [
+    [0, 0, 10, 0],
+    [5, 0, 15, 0, 20, 0],
+    [2, 0, 8, 0, 3, 0, 12, 0],       // backtracks over itself and the others
+    [1, 1, 1, 1, 4, 4, 4, 4, 4, 4],  // repeated points: zero-length segments
+    [0, -5, 20, 5],                  // crosses the chain
+  ];
+  const r = check({ points: [0, 10, 20, -10], polylines });
+  // The overlap of [0,10] with [5,20] names both polylines.
+  const bothSources = r.constraintEdges.some((e, i) => r.sourceOffsets[i + 1] - r.sourceOffsets[i] >= 2);
+  assert.ok(bothSources, 'an overlapping piece lists every polyline it came from');
+});
+
+test('a T-junction: a vertex lying on a segment splits it', () => {
+  check({ polylines: [[0, 0, 10, 0], [5, 0, 5, 5]] });
+});
+
+test('rings: keep inside drops the hole and the outside (even-odd)', () => {
+  const polylines = [square(0, 0, 10, 10), square(3, 3, 6, 6), square(4, 4, 5, 5)];  // island in a lake
+  const input = { points: [-5, -5, 15, 15, 20, 0], polylines };
+  const all = check(input);
+  const kept = check(input, { keep: 'inside' });
+  assert.equal(area(kept), 100 - 9 + 1);
+  assert.ok(kept.inside.every((f) => f === 1));
+  assert.equal(kept.triangles.length / 3, all.inside.reduce((s, f) => s + f, 0));
+});
+
+test('rings sharing vertices and edges', () => {
+  // Two squares side by side share an edge; a third shares one corner.
+  const polylines = [square(0, 0, 4, 4), square(4, 0, 8, 4), square(8, 4, 12, 8)];
+  const kept = check({ polylines }, { keep: 'inside' });
+  assert.equal(area(kept), 48);
+});
+
+test('nonzero fill counts overlapping rings once, even-odd cancels them', () => {
+  const polylines = [square(0, 0, 4, 4), square(2, 2, 6, 6)];
+  const evenodd = check({ polylines }, { keep: 'inside' });
+  const nonzero = check({ polylines }, { keep: 'inside', fillRule: 'nonzero' });
+  assert.equal(area(evenodd), 32 - 8);
+  assert.equal(area(nonzero), 28);
+});
+
+test('hundreds of random crossing segments', () => {
+  const rnd = random(99);
+  const polylines = Array.from({ length: 400 }, () => [rnd() * 1e3, rnd() * 1e3, rnd() * 1e3, rnd() * 1e3]);
+  const r = check({ points: uniform(5_000, 8), polylines });
+  assert.ok(r.stats.crossings > 5_000, `crossings: ${r.stats.crossings}`);
+});
+
+test('insertPolyline on a Triangulation, then results with inside flags', () => {
+  const t = new Triangulation();
+  t.insertPoints(uniform(500, 12).map((v) => v / 100));
+  const ring = square(2, 2, 8, 8);
+  const ids = t.insertPolyline(ring);
+  assert.equal(ids.length, 5);
+  assert.equal(ids[0], ids[4]);
+  assert.equal(t.polylineCount, 1);
+  t.insertPolyline([0, 5, 10, 5]);
+  assert.equal(t.polylineCount, 2);
+  const r = t.results({ insideFlags: true });
+  checkMesh(r);
+  checkInsideFlags(r, { polylines: [ring, [0, 5, 10, 5]] });
+  assert.ok(Math.abs(area(t.results({ keep: 'inside' })) - 36) < 1e-9);
+  t.dispose();
+});
+
+test('constraint calls leave the heap at its baseline', () => {
+  const input = { points: uniform(50, 1), polylines: [[0, 0, 1000, 1000], square(100, 100, 900, 900)] };
+  triangulate(input);
+  const baseline = memoryUsage().allocatedBytes;
+  for (let i = 0; i < 2_000; i++) triangulate(input, { keep: i % 2 ? 'inside' : 'all' });
+  assert.equal(memoryUsage().allocatedBytes, baseline);
+});
+
+test('real data: Natural Earth 110m country rings, shared borders overlapping', async () => {
+  const { createRequire } = await import('node:module');
+  const { readFileSync } = await import('node:fs');
+  const { feature } = await import('topojson-client');
+  const require = createRequire(import.meta.url);
+  const topology = JSON.parse(readFileSync(require.resolve('world-atlas/countries-110m.json'), 'utf8'));
+  const polylines = [];
+  for (const f of feature(topology, topology.objects.countries).features) {
+    const parts = f.geometry.type === 'Polygon' ? [f.geometry.coordinates] : f.geometry.coordinates;
+    for (const rings of parts) for (const ring of rings) polylines.push(Float64Array.from(ring.flat()));
+  }
+  const r = check({ polylines });
+  const shared = r.constraintEdges.filter((e, i) => r.sourceOffsets[i + 1] - r.sourceOffsets[i] >= 2).length;
+  assert.ok(shared > 1_000, `borders shared by two countries: ${shared}`);
+  const kept = check({ polylines }, { keep: 'inside' });
+  assert.equal(kept.triangles.length / 3, r.inside.reduce((s, f) => s + f, 0));
+});

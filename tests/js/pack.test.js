@@ -1,0 +1,97 @@
+// The package users get: npm pack, install the tarball into an empty folder, import it from
+// Node; then bundle a page with Vite and run it in headless Chromium, worker included.
+import { test, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { copyFileSync, existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { tmpdir } from 'node:os';
+import { extname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = fileURLToPath(new URL('../../', import.meta.url));
+const here = fileURLToPath(new URL('./pack/', import.meta.url));
+const dir = mkdtempSync(join(tmpdir(), 'geocdt-pack-'));
+after(() => rmSync(dir, { recursive: true, force: true }));
+
+const npm = (args, cwd) => execFileSync('npm', [...args, '--no-audit', '--no-fund', '--loglevel=error'],
+  { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+
+let installed = false;
+
+test('npm pack ships the wasm and the sources, nothing else', () => {
+  assert.ok(existsSync(join(root, 'web/dist/geocdt.wasm')), 'build the wasm first: npm run build');
+  const [{ filename, files }] = JSON.parse(npm(['pack', '--json', '--pack-destination', dir], root));
+  const paths = files.map((f) => f.path);
+  for (const needed of ['package.json', 'web/dist/geocdt.wasm', 'web/dist/geocdt.mjs', 'web/index.node.js',
+    'web/index.browser.js', 'web/index.d.ts', 'web/worker.d.ts', 'web/cli.js']) {
+    assert.ok(paths.includes(needed), `${needed} is in the tarball`);
+  }
+  assert.ok(paths.every((p) => p === 'package.json' || /^(web\/|README|LICENSE)/.test(p)), `unexpected files: ${paths}`);
+
+  const app = join(dir, 'app');
+  execFileSync('mkdir', ['-p', app]);
+  writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', private: true, type: 'module' }));
+  npm(['install', join(dir, filename)], app);
+  installed = true;
+});
+
+test('the installed package runs in Node, worker and CLI included', () => {
+  assert.ok(installed);
+  const app = join(dir, 'app');
+  copyFileSync(join(here, 'node-check.js'), join(app, 'node-check.js'));
+  const out = JSON.parse(execFileSync(process.execPath, ['node-check.js'], { cwd: app, encoding: 'utf8' }));
+  assert.deepEqual(out, { triangles: 4, features: 1, workerTriangles: 4 });
+  const bin = join(app, 'node_modules/.bin/geocdt');
+  assert.match(execFileSync(bin, ['--help'], { encoding: 'utf8' }), /Usage: geocdt/);
+});
+
+const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.wasm': 'application/wasm' };
+
+function serve(folder) {
+  const server = createServer((req, res) => {
+    const path = join(folder, new URL(req.url, 'http://localhost').pathname.replace(/\/$/, '/index.html'));
+    if (!path.startsWith(folder) || !existsSync(path)) {
+      res.writeHead(404).end();
+      return;
+    }
+    res.writeHead(200, { 'content-type': MIME[extname(path)] ?? 'application/octet-stream' });
+    res.end(readFileSync(path));
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
+}
+
+test('a Vite bundle runs in headless Chromium, with the worker', async () => {
+  assert.ok(installed);
+  const app = join(dir, 'app');
+  for (const f of ['index.html', 'main.js']) copyFileSync(join(here, f), join(app, f));
+  const { build } = await import('vite');
+  await build({ root: app, logLevel: 'error', build: { outDir: join(app, 'dist'), target: 'es2022' } });
+  const assets = readdirSync(join(app, 'dist/assets'));
+  assert.ok(assets.some((f) => f.endsWith('.wasm')), `the wasm is emitted as an asset: ${assets}`);
+
+  const server = await serve(join(app, 'dist'));
+  const { chromium } = await import('playwright-core');
+  const browser = await chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
+  });
+  try {
+    const page = await browser.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    await page.waitForFunction(() => document.getElementById('result').textContent !== 'running', null, { timeout: 30_000 });
+    const text = await page.textContent('#result');
+    assert.deepEqual(errors, []);
+    const result = JSON.parse(text.startsWith('{') ? text : JSON.stringify({ error: text }));
+    assert.equal(result.error, undefined, text);
+    assert.ok(result.triangles > 1_900, text);
+    assert.equal(result.workerTriangles, result.triangles);
+    assert.equal(result.transferred, true);
+    assert.equal(result.located, 'face');
+  } finally {
+    await browser.close();
+    server.close();
+  }
+});

@@ -1,0 +1,27 @@
+// Bundled by Vite from the installed tarball and run in headless Chromium.
+import { init, triangulate, Triangulation } from 'geocdt';
+import { createWorker } from 'geocdt/worker';
+
+const out = document.getElementById('result');
+try {
+  await init();
+  const points = new Float64Array(2_000);
+  for (let i = 0; i < points.length; i++) points[i] = Math.sin(i * 12.9898) * 43758.5453 % 100;
+  const r = triangulate({ points });
+  const t = new Triangulation();
+  t.insertPoints([0, 0, 4, 0, 0, 4]);
+  const located = t.locate(1, 1).kind;
+  t.dispose();
+  const worker = createWorker();
+  const copy = points.slice();
+  const w = await worker.triangulate({ points: copy });
+  worker.terminate();
+  out.textContent = JSON.stringify({
+    triangles: r.triangles.length / 3,
+    workerTriangles: w.triangles.length / 3,
+    transferred: copy.byteLength === 0,
+    located,
+  });
+} catch (error) {
+  out.textContent = `error: ${error?.stack ?? error}`;
+}

@@ -1,0 +1,170 @@
+// Constraint invariants on the JS output: each input segment is a chain of constrained edges
+// lying on it (up to the rounding of crossing points), no constrained edge lies off every
+// input segment, provenance names the polylines an edge came from, and inside flags follow
+// the fill rule over the rings.
+import assert from 'node:assert/strict';
+
+const next = (e) => (e % 3 === 2 ? e - 2 : e + 1);
+
+// [minX, minY, maxX, maxY] of a polyline, widened a little for rounded crossing points.
+function boxOf(line) {
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (let k = 0; k < line.length; k += 2) {
+    minX = Math.min(minX, line[k]); maxX = Math.max(maxX, line[k]);
+    minY = Math.min(minY, line[k + 1]); maxY = Math.max(maxY, line[k + 1]);
+  }
+  const pad = 1e-9 * (Math.abs(minX) + Math.abs(maxX) + Math.abs(minY) + Math.abs(maxY) + 1);
+  return [minX - pad, minY - pad, maxX + pad, maxY + pad];
+}
+
+function segmentsOf(line) {
+  const out = [];
+  for (let k = 0; k + 3 < line.length; k += 2) {
+    if (line[k] !== line[k + 2] || line[k + 1] !== line[k + 3]) {
+      out.push([line[k], line[k + 1], line[k + 2], line[k + 3]]);
+    }
+  }
+  return out;
+}
+
+// Where (x, y) projects on segment s as t in [0, 1], and whether it lies on it, up to a
+// relative tolerance (crossing points are rounded to doubles).
+function onSegment([px, py, qx, qy], x, y, relative = 1e-9) {
+  const dx = qx - px, dy = qy - py;
+  const len2 = dx * dx + dy * dy;
+  const t = ((x - px) * dx + (y - py) * dy) / len2;
+  const distance = Math.abs((x - px) * dy - (y - py) * dx) / Math.sqrt(len2);
+  const tol = relative * (Math.abs(px) + Math.abs(py) + Math.abs(qx) + Math.abs(qy) + Math.sqrt(len2));
+  const along = tol / Math.sqrt(len2);
+  return { t, on: distance <= tol && t >= -along && t <= 1 + along, along };
+}
+
+export function isRing(line) {
+  const n = line.length;
+  return n >= 8 && line[0] === line[n - 2] && line[1] === line[n - 1];
+}
+
+// With keepAll false (keep: 'inside') constrained edges between two outside triangles are
+// gone, so the segment coverage is not checked; provenance still is.
+export function checkConstraints(r, input, { keepAll = true } = {}) {
+  const { points, triangles, halfedges, constrained } = r;
+  const polylines = input.polylines ?? [];
+  const x = (v) => points[2 * v], y = (v) => points[2 * v + 1];
+  const neighbours = new Map();
+  const edges = [];
+  for (let e = 0; e < triangles.length; e++) {
+    if (!constrained[e]) continue;
+    const a = triangles[e], b = triangles[next(e)];
+    if (!neighbours.has(a)) neighbours.set(a, []);
+    neighbours.get(a).push(b);
+    if (halfedges[e] === -1 || halfedges[e] > e) edges.push(e);
+    if (halfedges[e] === -1) {  // a hull edge: walkable both ways
+      if (!neighbours.has(b)) neighbours.set(b, []);
+      neighbours.get(b).push(a);
+    }
+  }
+
+  // Every input segment is covered by a chain of constrained edges along it.
+  let pointBase = (input.points?.length ?? 0) / 2;
+  polylines.forEach((line, j) => {
+    for (let k = 0; keepAll && k + 3 < line.length; k += 2) {
+      const s = [line[k], line[k + 1], line[k + 2], line[k + 3]];
+      const from = r.inputToVertex[pointBase + k / 2];
+      const to = r.inputToVertex[pointBase + k / 2 + 1];
+      if (from === to) continue;
+      let at = from, t = 0;
+      for (let steps = 0; at !== to; steps++) {
+        assert.ok(steps <= points.length, `polyline ${j} segment ${k / 2}: no end to the chain`);
+        let best = -1, bestT = Infinity;
+        for (const w of neighbours.get(at) ?? []) {
+          const hit = onSegment(s, x(w), y(w));
+          if (hit.on && hit.t > t + hit.along * 0.5 && hit.t < bestT) { best = w; bestT = hit.t; }
+        }
+        assert.ok(best >= 0, `polyline ${j} segment ${k / 2} is not covered by constrained edges (stuck at vertex ${at})`);
+        at = best;
+        t = bestT;
+      }
+    }
+    pointBase += line.length / 2;
+  });
+
+  // Provenance: each constrained edge names exactly the polylines that have a segment
+  // containing it, so none lies off every input segment and overlaps name every polyline.
+  const { constraintEdges, sourceOffsets, sources } = r;
+  assert.equal(constraintEdges.length, edges.length, 'one provenance entry per constrained edge');
+  assert.equal(sourceOffsets.length, constraintEdges.length + 1, 'sourceOffsets has one more entry');
+  assert.equal(sourceOffsets[sourceOffsets.length - 1], sources.length);
+  const segments = polylines.map(segmentsOf);
+  const boxes = polylines.map(boxOf);
+  const listed = new Set();
+  constraintEdges.forEach((e, i) => {
+    assert.ok(constrained[e], `constraintEdges[${i}] = ${e} is not a constrained half-edge`);
+    const key = Math.min(e, halfedges[e] === -1 ? e : halfedges[e]);
+    assert.ok(!listed.has(key), `edge ${e} is listed twice`);
+    listed.add(key);
+    const a = triangles[e], b = triangles[next(e)];
+    const [ax, ay, bx, by] = [x(a), y(a), x(b), y(b)];
+    // Loosely on a segment (it may be named), and tightly on it (it must be named).
+    const may = [], must = [];
+    segments.forEach((list, j) => {
+      const [minX, minY, maxX, maxY] = boxes[j];
+      if (Math.min(ax, bx) < minX || Math.max(ax, bx) > maxX || Math.min(ay, by) < minY || Math.max(ay, by) > maxY) return;
+      const on = (relative) => list.some((s) => {
+        const pad = 1e-9 * (Math.abs(s[0]) + Math.abs(s[1]) + Math.abs(s[2]) + Math.abs(s[3]) + 1);
+        const outside = Math.max(ax, bx) < Math.min(s[0], s[2]) - pad || Math.min(ax, bx) > Math.max(s[0], s[2]) + pad
+          || Math.max(ay, by) < Math.min(s[1], s[3]) - pad || Math.min(ay, by) > Math.max(s[1], s[3]) + pad;
+        return !outside && onSegment(s, ax, ay, relative).on && onSegment(s, bx, by, relative).on;
+      });
+      if (on(1e-9)) may.push(j);
+      if (on(1e-14)) must.push(j);
+    });
+    const named = Array.from(sources.subarray(sourceOffsets[i], sourceOffsets[i + 1]));
+    const where = `edge ${e} (${ax},${ay})-(${bx},${by})`;
+    assert.ok(may.length > 0, `constrained ${where} lies on no input segment`);
+    for (const j of named) assert.ok(may.includes(j), `${where} names polyline ${j} but lies on none of its segments`);
+    for (const j of must) assert.ok(named.includes(j), `${where} lies on polyline ${j} but names only ${named}`);
+  });
+}
+
+// Even-odd or nonzero over the rings, at a point strictly inside a triangle.
+export function insideRings(rings, px, py, fillRule = 'evenodd') {
+  let crossings = 0, winding = 0;
+  for (const { box, segments } of rings) {
+    if (py < box[1] || py > box[3] || px > box[2]) continue;  // the ray to +x misses it
+    for (const [ax, ay, bx, by] of segments) {
+      if ((ay > py) === (by > py)) continue;
+      const xAt = ax + ((py - ay) * (bx - ax)) / (by - ay);
+      if (xAt > px) {
+        crossings++;
+        winding += by > ay ? 1 : -1;
+      }
+    }
+  }
+  return fillRule === 'evenodd' ? crossings % 2 === 1 : winding !== 0;
+}
+
+export function checkInsideFlags(r, input, fillRule = 'evenodd') {
+  const { points, triangles, inside } = r;
+  assert.equal(inside.length, triangles.length / 3, 'one inside flag per triangle');
+  const rings = (input.polylines ?? []).filter(isRing).map((l) => ({ box: boxOf(l), segments: segmentsOf(l) }));
+  for (let t = 0; t < inside.length; t++) {
+    let cx = 0, cy = 0;
+    for (let k = 0; k < 3; k++) {
+      cx += points[2 * triangles[3 * t + k]] / 3;
+      cy += points[2 * triangles[3 * t + k] + 1] / 3;
+    }
+    assert.equal(inside[t] === 1, insideRings(rings, cx, cy, fillRule),
+      `triangle ${t}: inside flag disagrees with the ${fillRule} rule`);
+  }
+}
+
+export function area(r) {
+  let sum = 0;
+  const { points: p, triangles: tr } = r;
+  for (let t = 0; t < tr.length; t += 3) {
+    const [a, b, c] = [tr[t], tr[t + 1], tr[t + 2]];
+    sum += ((p[2 * b] - p[2 * a]) * (p[2 * c + 1] - p[2 * a + 1])
+      - (p[2 * b + 1] - p[2 * a + 1]) * (p[2 * c] - p[2 * a])) / 2;
+  }
+  return sum;
+}

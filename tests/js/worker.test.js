@@ -1,0 +1,98 @@
+// geocdt/worker in Node's worker_threads: the same calls, with buffers transferred.
+import { test, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { createWorker } from 'geocdt/worker';
+import { init, triangulate, triangulateGeoJSON } from 'geocdt';
+import { createHost } from '../../web/worker-host.js';
+import { checkMesh } from './support/invariants.js';
+import { uniform } from './support/inputs.js';
+
+const worker = createWorker();
+after(() => worker.terminate());
+
+test('triangulate in the worker equals triangulate here', async () => {
+  await init();
+  await worker.init();
+  const xy = uniform(20_000, 31);
+  const here = triangulate({ points: xy });
+  const there = await worker.triangulate({ points: xy.slice() });
+  checkMesh(there, { points: xy });
+  for (const key of ['points', 'triangles', 'halfedges', 'constrained', 'inputToVertex']) {
+    assert.deepEqual(there[key], here[key], key);
+  }
+  assert.equal(there.stats.inserted, 20_000);
+});
+
+test('input buffers are transferred (detached here), unless transfer: false', async () => {
+  const xy = uniform(1_000, 32);
+  await worker.triangulate({ points: xy });
+  assert.equal(xy.byteLength, 0, 'the caller\'s Float64Array was transferred');
+
+  const kept = uniform(1_000, 33);
+  await worker.triangulate({ points: kept }, { transfer: false });
+  assert.equal(kept.length, 2_000);
+
+  const view = uniform(1_000, 34).subarray(2);  // a view cannot be handed over whole: copied
+  await worker.triangulate({ points: view });
+  assert.equal(view.length, 1_998);
+
+  const array = Array.from(uniform(100, 35));
+  assert.equal((await worker.triangulate({ points: array })).points.length, 200);
+});
+
+test('the host transfers every result buffer back', async () => {
+  await init();
+  const sent = [];
+  const api = { init, triangulate };
+  const onMessage = createHost(api, (message, transfer) => sent.push({ message, transfer }));
+  await onMessage({ id: 1, op: 'triangulate', args: [{ points: uniform(100, 36) }] });
+  const [{ message, transfer }] = sent;
+  assert.ok(message.ok);
+  const arrays = Object.values(message.value).filter((v) => ArrayBuffer.isView(v));
+  assert.ok(arrays.length >= 8);
+  assert.deepEqual(new Set(transfer), new Set(arrays.map((a) => a.buffer)));
+});
+
+test('errors keep their type and message across the worker', async () => {
+  await assert.rejects(worker.triangulate({ points: [0, 0, 1] }), { name: 'RangeError', message: /odd length/ });
+  await assert.rejects(worker.triangulate({ points: [0, 0, 1, NaN] }), { name: 'RangeError', message: /points\[3\]/ });
+  await assert.rejects(worker.triangulate({ points: [0, 0] }, { keep: 'most' }), { name: 'TypeError' });
+  const t = worker.createTriangulation();
+  await t.dispose();
+  await assert.rejects(t.insertPoints([0, 0]), { message: /no Triangulation 1 in this worker/ });
+  const r = await worker.triangulate({ points: [0, 0, 1, 0, 0, 1] });
+  assert.equal(r.triangles.length, 3, 'the worker still works');
+});
+
+test('a Triangulation living in the worker', async () => {
+  const t = worker.createTriangulation();
+  const ids = await t.insertPoints([0, 0, 10, 0, 0, 10, 10, 10]);
+  assert.deepEqual(Array.from(ids), [0, 1, 2, 3]);
+  const hit = await t.locate(2, 1);
+  assert.equal(hit.kind, 'face');
+  assert.equal(hit.vertices.length, 3);
+  assert.equal((await t.locate(20, 20)).kind, 'outside');
+  const r = await t.results();
+  checkMesh(r);
+  assert.equal(r.triangles.length, 6);
+  assert.deepEqual(await t.counts(), { vertexCount: 4, triangleCount: 2, polylineCount: 0 });
+  assert.equal((await t.stats()).inserted, 4);
+  await t.dispose();
+});
+
+test('memoryUsage and GeoJSON through the worker', async () => {
+  const fc = { type: 'MultiPoint', coordinates: [[0, 0], [1, 0], [0, 1], [1, 1]] };
+  assert.deepEqual(await worker.triangulateGeoJSON(fc), triangulateGeoJSON(fc));
+  const arrays = await worker.triangulateGeoJSON(fc, { output: 'arrays' });
+  assert.equal(arrays.triangles.length, 6);
+  const usage = await worker.memoryUsage();
+  assert.ok(usage.heapBytes >= usage.allocatedBytes && usage.allocatedBytes > 0);
+});
+
+test('an idle worker does not keep node running', async () => {
+  const { spawnSync } = await import('node:child_process');
+  const script = "import { createWorker } from 'geocdt/worker'; const w = createWorker(); const r = await w.triangulate({ points: [0, 0, 1, 0, 0, 1] }); console.log(r.triangles.length);";
+  const p = spawnSync(process.execPath, ['--input-type=module', '-e', script], { encoding: 'utf8', timeout: 20_000 });
+  assert.equal(p.status, 0, p.stderr);
+  assert.equal(p.stdout.trim(), '3');
+});

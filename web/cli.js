@@ -1,0 +1,148 @@
+#!/usr/bin/env node
+// geocdt in.geojson -o out.geojson [--keep inside] [--stats]
+import { readFile } from 'node:fs/promises';
+import { createWriteStream } from 'node:fs';
+import { once } from 'node:events';
+import { geoJSONToInput, init, triangulate } from './index.node.js';
+
+const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
+
+Triangulates a GeoJSON file: Point/MultiPoint become vertices, LineString/MultiLineString
+become constrained edges, Polygon/MultiPolygon rings become constrained edges that bound
+the inside. Writes a FeatureCollection with one Polygon per triangle (to stdout without -o).
+Coordinates are triangulated in the plane as given (lon/lat or projected).
+
+Options:
+  -o, --output <file>        where to write the triangles (default: stdout)
+  --keep <all|inside>        keep every triangle, or only those inside the rings (default: all)
+  --fill-rule <evenodd|nonzero>  how rings decide inside (default: evenodd)
+  --inside-flags             add properties.inside to every triangle
+  --stats                    print statistics to stderr
+  --quiet                    no progress messages, even for big inputs
+  -h, --help                 show this help
+  -v, --version              show the version`;
+
+// Inputs at least this big report progress on stderr.
+const BIG_INPUT_POINTS = 200_000;
+
+class UsageError extends Error {}
+
+function parseArgs(argv) {
+  const args = { input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false, stats: false, quiet: false };
+  const value = (i, flag) => {
+    if (i + 1 >= argv.length) throw new UsageError(`${flag} needs a value`);
+    return argv[i + 1];
+  };
+  for (let i = 0; i < argv.length; i++) {
+    const a = argv[i];
+    if (a === '-h' || a === '--help') args.help = true;
+    else if (a === '-v' || a === '--version') args.version = true;
+    else if (a === '-o' || a === '--output') args.output = value(i++, a);
+    else if (a === '--keep') args.keep = value(i++, a);
+    else if (a === '--fill-rule') args.fillRule = value(i++, a);
+    else if (a === '--inside-flags') args.insideFlags = true;
+    else if (a === '--stats') args.stats = true;
+    else if (a === '--quiet') args.quiet = true;
+    else if (a.startsWith('-') && a !== '-') throw new UsageError(`unknown option ${a}`);
+    else if (args.input === null) args.input = a;
+    else throw new UsageError(`unexpected argument ${a}`);
+  }
+  if (!args.help && !args.version && args.input === null) throw new UsageError('no input file');
+  if (!['all', 'inside'].includes(args.keep)) throw new UsageError(`--keep must be all or inside, not ${args.keep}`);
+  if (!['evenodd', 'nonzero'].includes(args.fillRule)) {
+    throw new UsageError(`--fill-rule must be evenodd or nonzero, not ${args.fillRule}`);
+  }
+  return args;
+}
+
+async function readInput(path) {
+  if (path !== '-') return readFile(path, 'utf8');
+  const chunks = [];
+  for await (const chunk of process.stdin) chunks.push(chunk);
+  return Buffer.concat(chunks).toString('utf8');
+}
+
+const n = (x) => x.toLocaleString('en-US');
+
+// Writes the FeatureCollection feature by feature: a big mesh never becomes one string.
+async function writeGeoJSON(mesh, stream, progress) {
+  const { points, triangles, inside } = mesh;
+  const count = triangles.length / 3;
+  const at = (v) => `[${points[2 * v]},${points[2 * v + 1]}]`;
+  const write = async (text) => {
+    if (!stream.write(text)) await once(stream, 'drain');
+  };
+  await write('{"type":"FeatureCollection","features":[');
+  const batch = 20_000;
+  for (let start = 0; start < count; start += batch) {
+    const end = Math.min(count, start + batch);
+    const parts = [];
+    for (let t = start; t < end; t++) {
+      const a = at(triangles[3 * t]);
+      const properties = inside ? `{"inside":${inside[t] === 1}}` : '{}';
+      parts.push(`{"type":"Feature","id":${t},"properties":${properties},"geometry":{"type":"Polygon","coordinates":[[${a},${at(triangles[3 * t + 1])},${at(triangles[3 * t + 2])},${a}]]}}`);
+    }
+    await write((start === 0 ? '\n' : ',\n') + parts.join(',\n'));
+    progress(end, count);
+  }
+  await write('\n]}\n');
+}
+
+async function main(argv) {
+  const args = parseArgs(argv);
+  if (args.help) {
+    console.log(USAGE);
+    return;
+  }
+  if (args.version) {
+    const pkg = JSON.parse(await readFile(new URL('../package.json', import.meta.url), 'utf8'));
+    console.log(pkg.version);
+    return;
+  }
+  const started = performance.now();
+  const elapsed = () => `${((performance.now() - started) / 1000).toFixed(2)} s`;
+  let say = () => {};
+
+  const text = await readInput(args.input);
+  let geojson;
+  try {
+    geojson = JSON.parse(text);
+  } catch (error) {
+    throw new Error(`${args.input} is not valid JSON: ${error.message}`);
+  }
+  const input = geoJSONToInput(geojson);
+  const pointCount = input.points.length / 2 + input.polylines.reduce((s, l) => s + l.length / 2, 0);
+  if (!args.quiet && pointCount >= BIG_INPUT_POINTS) say = (message) => process.stderr.write(`geocdt: ${message}\n`);
+  say(`read ${n(pointCount)} points (${n(input.polylines.length)} polylines) in ${elapsed()}`);
+
+  await init();
+  const mesh = triangulate(input, { keep: args.keep, fillRule: args.fillRule, insideFlags: args.insideFlags });
+  say(`triangulated: ${n(mesh.triangles.length / 3)} triangles in ${mesh.stats.milliseconds.toFixed(0)} ms`);
+
+  const stream = args.output ? createWriteStream(args.output) : process.stdout;
+  let reported = 0;
+  await writeGeoJSON(mesh, stream, (done, total) => {
+    const percent = Math.floor((100 * done) / total);
+    if (percent >= reported + 25 || done === total) {
+      reported = percent;
+      say(`writing ${percent}%`);
+    }
+  });
+  if (stream !== process.stdout) {
+    stream.end();
+    await once(stream, 'finish');
+  }
+  say(`done in ${elapsed()}`);
+
+  if (args.stats) {
+    const lines = Object.entries(mesh.stats).map(([k, v]) =>
+      `  ${k.padEnd(16)} ${Number.isInteger(v) ? n(v) : v.toFixed(1)}`);
+    process.stderr.write(`geocdt statistics:\n${lines.join('\n')}\n`);
+  }
+}
+
+main(process.argv.slice(2)).catch((error) => {
+  const usage = error instanceof UsageError;
+  process.stderr.write(`geocdt: ${error.message.replace(/^geocdt: /, '')}\n${usage ? 'Try geocdt --help\n' : ''}`);
+  process.exitCode = usage ? 2 : 1;
+});

@@ -1,0 +1,21 @@
+// geocdt/worker for browsers: the calls run in a module Web Worker. Bundlers (Vite, webpack,
+// Rollup plugins) recognise the `new Worker(new URL(...), { type: 'module' })` form and bundle
+// the worker with the wasm it loads.
+import { GeocdtWorker } from './worker-client.js';
+
+export { GeocdtWorker, RemoteTriangulation } from './worker-client.js';
+
+export function createWorker() {
+  const worker = new Worker(new URL('./worker-thread.browser.js', import.meta.url), { type: 'module' });
+  const client = new GeocdtWorker({
+    post: (message, transfer) => worker.postMessage(message, transfer),
+    busy: () => {},
+    terminate: () => worker.terminate(),
+  });
+  worker.addEventListener('message', (event) => client.receive(event.data));
+  worker.addEventListener('error', (event) => {
+    event.preventDefault?.();
+    client.fail(new Error(`geocdt: the worker failed: ${event.message ?? 'could not load'}`));
+  });
+  return client;
+}

@@ -1,0 +1,43 @@
+// geocdt/worker: the geocdt calls, answered by a module Web Worker (browsers) or a
+// worker_threads Worker (Node). Coordinates go to the worker and results come back as
+// transferred buffers, not copies.
+import type {
+  Coordinates, GeoJSONInput, GeoJSONOptions, Location, MemoryUsage, Mesh, MeshOptions, Stats,
+  TriangleFeatureCollection, TriangulateInput, TriangulateResult,
+} from './index.js';
+
+export interface TransferOptions {
+  /**
+   * true (default): Float64Arrays that span their whole buffer are transferred to the worker
+   * and become detached (length 0) for the caller; false: they are copied.
+   */
+  transfer?: boolean;
+}
+
+export class GeocdtWorker {
+  /** Loads the wasm in the worker (every call does it if needed). */
+  init(): Promise<void>;
+  triangulate(input: TriangulateInput, options?: MeshOptions & TransferOptions): Promise<TriangulateResult>;
+  /** The GeoJSON is read on the calling thread; the triangulation runs in the worker. */
+  triangulateGeoJSON(geojson: GeoJSONInput, options?: MeshOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
+  triangulateGeoJSON(geojson: GeoJSONInput, options: MeshOptions & { output: 'arrays' }): Promise<TriangulateResult>;
+  triangulateGeoJSON(geojson: GeoJSONInput, options?: GeoJSONOptions): Promise<TriangleFeatureCollection | TriangulateResult>;
+  memoryUsage(): Promise<MemoryUsage>;
+  /** A Triangulation that lives in the worker. */
+  createTriangulation(): RemoteTriangulation;
+  /** Stops the worker; pending calls reject. */
+  terminate(): void;
+}
+
+export class RemoteTriangulation {
+  insertPoints(points: Coordinates, options?: TransferOptions): Promise<Uint32Array>;
+  insertPolyline(polyline: Coordinates, options?: TransferOptions): Promise<Uint32Array>;
+  locate(x: number, y: number): Promise<Location>;
+  results(options?: MeshOptions): Promise<Mesh>;
+  stats(): Promise<Omit<Stats, 'vertices' | 'triangles' | 'constraintEdges' | 'milliseconds' | 'coreMilliseconds'>>;
+  counts(): Promise<{ vertexCount: number; triangleCount: number; polylineCount: number }>;
+  dispose(): Promise<void>;
+}
+
+/** Starts a worker. In Node, an idle worker does not keep the process alive. */
+export function createWorker(): GeocdtWorker;

@@ -1,0 +1,31 @@
+// geocdt/worker for Node: the calls run in a worker_threads Worker. The worker does not keep
+// the process alive while no request is pending.
+import { Worker } from 'node:worker_threads';
+import { GeocdtWorker } from './worker-client.js';
+
+export { GeocdtWorker, RemoteTriangulation } from './worker-client.js';
+
+// The worker inherits node's flags, except those that only make sense for an inline script.
+function workerFlags() {
+  const flags = [];
+  for (let i = 0; i < process.execArgv.length; i++) {
+    const flag = process.execArgv[i];
+    if (/^(-e|--eval|-p|--print)$/.test(flag)) i++;
+    else if (!/^(--input-type|--eval|--print)(=|$)/.test(flag)) flags.push(flag);
+  }
+  return flags;
+}
+
+export function createWorker() {
+  const worker = new Worker(new URL('./worker-thread.node.js', import.meta.url), { execArgv: workerFlags() });
+  const client = new GeocdtWorker({
+    post: (message, transfer) => worker.postMessage(message, transfer),
+    busy: (isBusy) => (isBusy ? worker.ref() : worker.unref()),
+    terminate: () => worker.terminate(),
+  });
+  worker.unref();
+  worker.on('message', (message) => client.receive(message));
+  worker.on('error', (error) => client.fail(error));
+  worker.on('exit', (code) => client.fail(new Error(`geocdt: the worker exited (code ${code})`)));
+  return client;
+}
