@@ -171,33 +171,38 @@ std::vector<std::uint32_t> Delaunay::renumberBatch(const double* input, std::uin
 
 Status Delaunay::insertPending(std::uint32_t base, std::uint32_t count,
                                const std::vector<std::uint32_t>& order, std::uint32_t* ids) {
-  std::vector<std::uint32_t> seq(pending_);
-  for (std::uint32_t k = 0; k < count; ++k) seq.push_back(base + k);
+  // The vertices waiting, then the batch's: indexed, not copied (4 bytes a point saved).
+  const std::size_t waiting = pending_.size(), n = waiting + count;
+  const auto at = [&](std::size_t i) {
+    return i < waiting ? pending_[i] : base + static_cast<std::uint32_t>(i - waiting);
+  };
   const double* p = xy.data();
   const auto same = [p](std::uint32_t u, std::uint32_t v) {
     return p[2 * u] == p[2 * v] && p[2 * u + 1] == p[2 * v + 1];
   };
   std::size_t i1 = 1;
-  while (i1 < seq.size() && same(seq[0], seq[i1])) ++i1;
+  while (i1 < n && same(at(0), at(i1))) ++i1;
   std::size_t i2 = i1 + 1;
-  if (i1 < seq.size()) {
-    const std::uint32_t a = seq[0], b = seq[i1];
-    while (i2 < seq.size() && orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1],
-                                       p[2 * seq[i2]], p[2 * seq[i2] + 1]) == Sign::Zero)
+  if (i1 < n) {
+    const std::uint32_t a = at(0), b = at(i1);
+    while (i2 < n && orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * at(i2)],
+                              p[2 * at(i2) + 1]) == Sign::Zero)
       ++i2;
   }
-  if (i1 >= seq.size() || i2 >= seq.size()) {
+  if (i1 >= n || i2 >= n) {
     // Still all collinear: no triangles yet; keep the vertices, without duplicates.
-    for (std::uint32_t k = 0; k < count; ++k) ids[order[k]] = base + k;
-    pending_.swap(seq);
+    for (std::uint32_t k = 0; k < count; ++k) {
+      ids[order[k]] = base + k;
+      pending_.push_back(base + k);
+    }
     dedupCollinear(base, order, ids);
     return Status::success();
   }
-  pending_.clear();
-  const std::uint32_t a = seq[0], b = seq[i1], c = seq[i2];
+  const std::uint32_t a = at(0), b = at(i1), c = at(i2);
   build(a, b, c);
   double minX = p[2 * a], maxX = minX, minY = p[2 * a + 1], maxY = minY;
-  for (const std::uint32_t v : seq) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t v = at(i);
     minX = std::min(minX, p[2 * v]);
     maxX = std::max(maxX, p[2 * v]);
     minY = std::min(minY, p[2 * v + 1]);
@@ -207,12 +212,14 @@ Status Delaunay::insertPending(std::uint32_t base, std::uint32_t count,
   grid_.fill(last_);
   for (const std::uint32_t v : {a, b, c})
     if (v >= base) ids[order[v - base]] = v;
-  for (std::size_t k = 1; k < seq.size(); ++k) {
-    if (k == i1 || k == i2) continue;
-    const std::uint32_t r = insertVertex(seq[k]);
+  for (std::size_t i = 1; i < n; ++i) {
+    if (i == i1 || i == i2) continue;
+    const std::uint32_t v = at(i);
+    const std::uint32_t r = insertVertex(v);
     if (r == kGhost) return error_;
-    if (seq[k] >= base) ids[order[seq[k] - base]] = r;
+    if (v >= base) ids[order[v - base]] = r;
   }
+  pending_.clear();
   return Status::success();
 }
 

@@ -283,6 +283,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     } else {
       ++d_.stats.crossings;
     }
+    p = d_.xy.data();  // the push may have moved the coordinates
   }
   const double wx = p[2 * w], wy = p[2 * w + 1];
   const bool pieceEnd = w == piece.a || w == piece.b;
