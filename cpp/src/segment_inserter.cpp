@@ -226,11 +226,12 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   const InputSegment ab = store.segments[piece.src.segment];
   const InputSegment cd = crossedSource ? store.segments[crossedSource->segment] : segmentOf(r, l);
   // Position along a segment's direction, to keep each constraint from doubling back.
+  // In long double: vertices an ulp apart near a segment's end must still compare apart.
   const auto along = [](const InputSegment& g, double x, double y) {
-    return (x - g.ax) * (g.bx - g.ax) + (y - g.ay) * (g.by - g.ay);
+    return ((long double)x - g.ax) * ((long double)g.bx - g.ax) + ((long double)y - g.ay) * ((long double)g.by - g.ay);
   };
   const auto between = [&](const InputSegment& g, double x, double y, std::uint32_t lo, std::uint32_t hi) {
-    const double t = along(g, x, y), t0 = along(g, p[2 * lo], p[2 * lo + 1]), t1 = along(g, p[2 * hi], p[2 * hi + 1]);
+    const long double t = along(g, x, y), t0 = along(g, p[2 * lo], p[2 * lo + 1]), t1 = along(g, p[2 * hi], p[2 * hi + 1]);
     return std::min(t0, t1) < t && t < std::max(t0, t1);
   };
   const auto fits = [&](double x, double y) {
@@ -239,17 +240,51 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
 
   // The crossing of the two original input segments, unless rounding and earlier bends put
   // it outside the two pieces that actually cross here: then the crossing of the pieces.
-  double x = 0, y = 0;
-  if (!lineCrossing(ab, cd, x, y) || !fits(x, y)) {
-    if (!lineCrossing(segmentOf(piece.a, piece.b), segmentOf(r, l), x, y)) {
-      x = 0.5 * (p[2 * r] + p[2 * l]);  // parallel in floating point: the edge's middle
-      y = 0.5 * (p[2 * r + 1] + p[2 * l + 1]);
+  double x = 0, y = 0;  // the crossing point, once found
+  const auto distance = [&](std::uint32_t v) { return std::hypot(p[2 * v] - x, p[2 * v + 1] - y); };
+  // When no crossing point fits (the two are collinear within rounding, and the crossing of
+  // their lines means nothing), the constraints meet at one of the four ends instead: the
+  // one within the other's span and nearest to its line.
+  const auto meetAtAnEnd = [&]() -> std::uint32_t {
+    const auto offLine = [&](std::uint32_t v, std::uint32_t u0, std::uint32_t u1) {
+      const long double dx = (long double)p[2 * u1] - p[2 * u0], dy = (long double)p[2 * u1 + 1] - p[2 * u0 + 1];
+      const long double cross = dx * ((long double)p[2 * v + 1] - p[2 * u0 + 1]) - dy * ((long double)p[2 * v] - p[2 * u0]);
+      return std::fabs(cross) / std::sqrt(dx * dx + dy * dy);
+    };
+    std::uint32_t best = kGhost;
+    long double bestOff = 0;
+    const auto consider = [&](std::uint32_t v, const InputSegment& g, std::uint32_t u0, std::uint32_t u1) {
+      if (!between(g, p[2 * v], p[2 * v + 1], u0, u1)) return;
+      const long double off = offLine(v, u0, u1);
+      if (best == kGhost || off < bestOff) {
+        best = v;
+        bestOff = off;
+      }
+    };
+    consider(piece.a, cd, r, l);
+    consider(piece.b, cd, r, l);
+    consider(r, ab, piece.a, piece.b);
+    consider(l, ab, piece.a, piece.b);
+    if (best == kGhost) best = distance(r) <= distance(l) ? r : l;
+    if (best == r || best == l) return best;  // the piece bends through it
+    const std::int32_t e = findEdge(r, l);  // the crossed constraint bends through a piece end
+    if (e >= 0) {
+      const EdgeSource moved = store.take(r, l);
+      topo.fixed[e] = topo.fixed[topo.adj[e]] = 0;
+      pieces_.push_back({r, best, moved});
+      pieces_.push_back({best, l, moved});
+      d_.flipStack().push_back(e);
+      restoreDelaunay();
     }
+    return kGhost;
+  };
+  if (!lineCrossing(ab, cd, x, y) || !fits(x, y)) {
+    if (!lineCrossing(segmentOf(piece.a, piece.b), segmentOf(r, l), x, y) || !fits(x, y))
+      return meetAtAnEnd();
   }
   const auto strictlyLeft = [&](std::uint32_t u, std::uint32_t v) {
     return orient2d(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], x, y) == Sign::Positive;
   };
-  const auto distance = [&](std::uint32_t v) { return std::hypot(p[2 * v] - x, p[2 * v + 1] - y); };
   const double snapDistance =
       1e-12 * (std::hypot(ab.bx - ab.ax, ab.by - ab.ay) + std::hypot(cd.bx - cd.ax, cd.by - cd.ay));
   std::uint32_t nearest = r;
@@ -263,7 +298,15 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     d_.xy.push_back(x);
     d_.xy.push_back(y);
     store.split(r, l, v);
-    d_.splitEdge(h, v);
+    // The rounded point is near the edge, not on it: the spokes to the two apexes may need
+    // flips that a point exactly on the edge would never need.
+    const std::int32_t spoke = d_.splitEdge(h, v);
+    for (std::int32_t e = spoke;;) {
+      d_.flipStack().push_back(e);
+      e = topo.adj[prevEdge(e)];
+      if (e == spoke) break;
+    }
+    restoreDelaunay();
     ++d_.stats.crossings;
     ++d_.stats.inserted;
     return v;
@@ -285,19 +328,13 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     }
     p = d_.xy.data();  // the push may have moved the coordinates
   }
-  const double wx = p[2 * w], wy = p[2 * w + 1];
+  const double wx = p[2 * w], wy = p[2 * w + 1];  // (after the push: p was refreshed)
   const bool pieceEnd = w == piece.a || w == piece.b;
   const bool crossedEnd = w == r || w == l;
   const bool pieceOk = pieceEnd || between(ab, wx, wy, piece.a, piece.b);
   const bool crossedOk = crossedEnd || between(cd, wx, wy, r, l);
-  if (!pieceOk || !crossedOk) {
-    // w would make a constraint double back: bend the piece through the crossed edge's
-    // end that lies within it instead (one always does, as the two cross).
-    const bool rFits = between(ab, p[2 * r], p[2 * r + 1], piece.a, piece.b);
-    const bool lFits = between(ab, p[2 * l], p[2 * l + 1], piece.a, piece.b);
-    if (rFits != lFits) return rFits ? r : l;
-    return std::hypot(p[2 * r] - wx, p[2 * r + 1] - wy) <= std::hypot(p[2 * l] - wx, p[2 * l + 1] - wy) ? r : l;
-  }
+  // w would make a constraint double back: meet at an end instead.
+  if (!pieceOk || !crossedOk) return meetAtAnEnd();
   if (!crossedEnd) {
     const std::int32_t e = findEdge(r, l);
     if (e >= 0) {

@@ -281,6 +281,52 @@ TEST(Constraints, PointsLandingOnConstraintsKeepProvenanceAndInside) {
   }
 }
 
+// Regressions found by fuzzing, each named after what went wrong.
+
+TEST(Constraints, FuzzCrossingOneUlpFromASegmentEnd) {
+  // The crossing rounds onto (1, 20), an ulp from the other segment's end: it must not be
+  // routed through the far vertex (11, 10).
+  EXPECT_EQ(check({}, {{11, 10, 0.99999999999999989, 20}, {1, 0, 1, 20}}), "");
+}
+
+TEST(Constraints, FuzzNearlyCollinearChainThatBacktracks) {
+  // Collinear within rounding: the crossing of the lines lies far outside both pieces.
+  EXPECT_EQ(check({}, {{0, 0, 9.5999999999999996, 12.800000000000001, 5.3999999999999995, 7.2000000000000002, 3, 4}}), "");
+}
+
+TEST(Constraints, FuzzTinyRingLeavesNoNonDelaunayEdge) {
+  // Crossing points rounded next to, not onto, the crossed edges: the spokes must flip.
+  const double x0 = -12345.67799999998, x1 = -12345.678000000004, x2 = -12345.677999999984;
+  const double x3 = -12345.677999999976, x4 = -12345.678;
+  std::vector<double> ring = {x0, 2.0845618564635517e-11, x1, 1.4224497135728597e-11,
+                              x2, 3.0449882615357635e-11, x3, 6.8757799454033379e-12};
+  for (int k = 0; k < 12; ++k) {
+    ring.push_back(x4);
+    ring.push_back(0);
+  }
+  ring.push_back(x0);
+  ring.push_back(2.0845618564635517e-11);
+  EXPECT_EQ(check({}, {ring}), "");
+}
+
+TEST(Constraints, FuzzNearDuplicateBacktrackKeepsInsideFlags) {
+  // A ring that runs out to a near-duplicate of its first point and back: the triangle it
+  // encloses is inside.
+  std::vector<double> ring = {31, 13, 1e-300, 13, 1e-300, 1e-300, 31.000000000000004, 13.000000000000002};
+  for (int k = 0; k < 10; ++k) {
+    ring.push_back(1e-300);
+    ring.push_back(1e-300);
+  }
+  ring.push_back(31);
+  ring.push_back(13);
+  EXPECT_EQ(check({}, {ring}), "");
+  MeshOptions mo;
+  mo.insideFlags = true;
+  Result r = run({}, {ring}, mo);
+  ASSERT_TRUE(r.status.ok());
+  expectInsideMatchesOracle({ring}, r.mesh);
+}
+
 TEST(Constraints, ConstraintsBeforeAnyTriangle) {
   // Collinear points first: the segment waits until a point off the line arrives.
   Triangulation t;

@@ -13,12 +13,14 @@ struct Segment {
   double ax, ay, bx, by;
 };
 
+// In long double: its exponent range keeps squares of subnormal lengths from underflowing.
 double distanceToSegment(const Segment& s, double x, double y) {
-  const double dx = s.bx - s.ax, dy = s.by - s.ay;
-  const double len2 = dx * dx + dy * dy;
-  double t = len2 > 0 ? ((x - s.ax) * dx + (y - s.ay) * dy) / len2 : 0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(s.ax + t * dx - x, s.ay + t * dy - y);
+  const long double dx = (long double)s.bx - s.ax, dy = (long double)s.by - s.ay;
+  const long double len2 = dx * dx + dy * dy;
+  long double t = len2 > 0 ? (((long double)x - s.ax) * dx + ((long double)y - s.ay) * dy) / len2 : 0;
+  t = std::clamp(t, 0.0L, 1.0L);
+  const long double ex = s.ax + t * dx - x, ey = s.ay + t * dy - y;
+  return static_cast<double>(std::sqrt(ex * ex + ey * ey));
 }
 
 // Rounding of crossing points: a few ulps of the coordinates plus a tiny part of the length.

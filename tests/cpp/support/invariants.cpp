@@ -89,28 +89,30 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options) {
     if (length != boundary)
       return describe("the boundary's ", boundary, " edges form more than one loop");
 
-    double sum2 = 0, scale = 0;
+    // Areas in long double: its exponent range keeps products of subnormal coordinates
+    // from underflowing to zero (a floating check on top of the exact ones above).
+    long double sum2 = 0, scale = 0;
     for (std::size_t t = 0; t < triangles; ++t) {
       const std::uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-      const double abx = p[2 * b] - p[2 * a], aby = p[2 * b + 1] - p[2 * a + 1];
-      const double acx = p[2 * c] - p[2 * a], acy = p[2 * c + 1] - p[2 * a + 1];
+      const long double abx = (long double)p[2 * b] - p[2 * a], aby = (long double)p[2 * b + 1] - p[2 * a + 1];
+      const long double acx = (long double)p[2 * c] - p[2 * a], acy = (long double)p[2 * c + 1] - p[2 * a + 1];
       sum2 += abx * acy - aby * acx;
       scale += std::fabs(abx * acy) + std::fabs(aby * acx);
     }
-    double hull2 = 0, hullScale = 0;
+    long double hull2 = 0, hullScale = 0;
     e = start;
     for (std::size_t steps = 0; steps < boundary; ++steps) {
       const std::uint32_t a = tri[e], b = tri[nextOf(e)];
       // Relative to the first vertex, to keep large offsets from swamping the area.
       const std::uint32_t o = tri[start];
-      const double ax = p[2 * a] - p[2 * o], ay = p[2 * a + 1] - p[2 * o + 1];
-      const double bx = p[2 * b] - p[2 * o], by = p[2 * b + 1] - p[2 * o + 1];
+      const long double ax = (long double)p[2 * a] - p[2 * o], ay = (long double)p[2 * a + 1] - p[2 * o + 1];
+      const long double bx = (long double)p[2 * b] - p[2 * o], by = (long double)p[2 * b + 1] - p[2 * o + 1];
       hull2 += ax * by - bx * ay;
       hullScale += std::fabs(ax * by) + std::fabs(bx * ay);
       e = static_cast<std::size_t>(outgoing[b]);
     }
-    if (std::fabs(hull2 - sum2) > 1e-9 * (scale + hullScale))
-      return describe("triangle areas sum to ", sum2 / 2, " but the hull's area is ", hull2 / 2);
+    if (std::fabs(hull2 - sum2) > 1e-9L * (scale + hullScale))
+      return describe("triangle areas sum to ", double(sum2 / 2), " but the hull's area is ", double(hull2 / 2));
   }
 
   // Euler: T = 2V - h - 2 over the vertices the triangles use.
