@@ -278,7 +278,15 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     }
     return kGhost;
   };
-  if (!lineCrossing(ab, cd, x, y) || !fits(x, y)) {
+  // Two input segments meet at one vertex: once their crossing has one, later crossings of
+  // their pieces (after rounding bent them) go there too, so no run of ever new vertices.
+  const std::uint64_t pair = ConstraintStore::key(piece.src.segment, crossedSource ? crossedSource->segment : kGhost);
+  std::uint32_t w = kGhost;
+  if (const std::uint32_t* met = met_.find(pair); met && *met < d_.vertexCount()) {
+    w = *met;
+    x = p[2 * w];
+    y = p[2 * w + 1];
+  } else if (!lineCrossing(ab, cd, x, y) || !fits(x, y)) {
     if (!lineCrossing(segmentOf(piece.a, piece.b), segmentOf(r, l), x, y) || !fits(x, y))
       return meetAtAnEnd();
   }
@@ -292,9 +300,11 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     if (distance(v) < distance(nearest)) nearest = v;
   const bool near = distance(nearest) <= snapDistance;
 
-  if (!near && strictlyLeft(c1, r) && strictlyLeft(r, c2) && strictlyLeft(l, c1) && strictlyLeft(c2, l)) {
+  if (w == kGhost && !near && strictlyLeft(c1, r) && strictlyLeft(r, c2) && strictlyLeft(l, c1) &&
+      strictlyLeft(c2, l)) {
     // The usual case: the point splits the crossed edge.
     const std::uint32_t v = d_.vertexCount();
+    met_.insert(pair, v);
     d_.xy.push_back(x);
     d_.xy.push_back(y);
     store.split(r, l, v);
@@ -313,8 +323,8 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   }
   // Otherwise both constraints pass through one vertex w: the one the point is (nearly)
   // equal to, or a new one inserted wherever the point lies (thin triangles).
-  std::uint32_t w = nearest;
-  if (!near) {
+  if (w == kGhost && near) w = nearest;
+  if (w == kGhost) {
     w = d_.vertexCount();
     d_.xy.push_back(x);
     d_.xy.push_back(y);
@@ -327,6 +337,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
       ++d_.stats.crossings;
     }
     p = d_.xy.data();  // the push may have moved the coordinates
+    met_.insert(pair, w);
   }
   const double wx = p[2 * w], wy = p[2 * w + 1];  // (after the push: p was refreshed)
   const bool pieceEnd = w == piece.a || w == piece.b;

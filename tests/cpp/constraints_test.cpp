@@ -327,6 +327,25 @@ TEST(Constraints, FuzzNearDuplicateBacktrackKeepsInsideFlags) {
   expectInsideMatchesOracle({ring}, r.mesh);
 }
 
+TEST(Constraints, FuzzTinyBowtieRingResolves) {
+  // Points a few ulps apart: rerouted pieces kept crossing at ever new points until each
+  // pair of input segments was given one meeting vertex.
+  std::vector<double> ring = {1.0000000000268119, -12345.677999999991, 0.99999999999974531, -12345.678,
+                              1.0000000000023648, -12345.677999999998};
+  for (int k = 0; k < 13; ++k) {
+    ring.push_back(1);
+    ring.push_back(-12345.678);
+  }
+  ring.push_back(1.0000000000268119);
+  ring.push_back(-12345.677999999991);
+  EXPECT_EQ(check({}, {ring}), "");
+  Options o;
+  o.gridDensity = 2;
+  Mesh m;
+  const PolylineView view{ring.data(), ring.size() / 2};
+  EXPECT_TRUE(triangulate(nullptr, 0, &view, 1, o, {}, m).ok());
+}
+
 TEST(Constraints, ConstraintsBeforeAnyTriangle) {
   // Collinear points first: the segment waits until a point off the line arrives.
   Triangulation t;
