@@ -1,0 +1,77 @@
+#!/bin/sh
+# Builds the libFuzzer targets (clang, ASan + UBSan) in a build directory of their own and
+# runs each for a bounded time. Exits non-zero on any crash, sanitizer report, invariant
+# failure or hang; the input that caused it is kept in <build>/artifacts/.
+#
+#   scripts/run-fuzz.sh [seconds-per-target]     (default 60)
+#
+# Environment: GEOCDT_FUZZ_BUILD (build directory, default build-fuzz),
+# GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines"), GEOCDT_FUZZ_SEED and
+# GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: a reproducible run).
+# Replay one input:  build-fuzz/tests/fuzz/fuzz_polylines FILE   (GEOCDT_FUZZ_PRINT=1 prints it)
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+seconds=${1:-60}
+build=${GEOCDT_FUZZ_BUILD:-$root/build-fuzz}
+targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines}
+
+case $seconds in
+  '' | *[!0-9]*) echo "run-fuzz: seconds must be a whole number, got '$seconds'" >&2; exit 2 ;;
+esac
+
+install_or_explain() {
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "run-fuzz: installing $*" >&2
+    DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y "$@" \
+      || { apt-get -o DPkg::Lock::Timeout=600 update \
+           && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y "$@"; }
+  else
+    echo "run-fuzz: missing Debian packages: $*. Run:" >&2
+    echo "  sudo apt-get install -y $*" >&2
+    exit 1
+  fi
+}
+
+command -v cmake >/dev/null 2>&1 || install_or_explain cmake
+command -v clang++ >/dev/null 2>&1 || install_or_explain clang
+
+# libFuzzer's runtime is not in every clang install: Debian ships it in libclang-rt-N-dev.
+probe=$(mktemp -d)
+trap 'rm -rf "$probe"' EXIT
+printf 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }\n' \
+  >"$probe/probe.cpp"
+if ! clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" 2>"$probe/log"; then
+  major=$(clang++ -dumpversion | cut -d. -f1)
+  install_or_explain "libclang-rt-$major-dev"
+  clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" || {
+    echo "run-fuzz: clang++ still cannot link libFuzzer" >&2
+    exit 1
+  }
+fi
+
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DGEOCDT_BUILD_FUZZ=ON -DGEOCDT_BUILD_TESTS=OFF -DGEOCDT_BUILD_BENCH=OFF >/dev/null
+cmake --build "$build" -j2 --target $targets
+
+status=0
+for target in $targets; do
+  # New inputs go to a corpus in the build directory; the checked-in seeds are read only.
+  corpus=$build/corpus/$target
+  mkdir -p "$corpus" "$build/artifacts"
+  echo "run-fuzz: $target for ${seconds}s" >&2
+  # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS make a run reproducible (CI uses them): the same
+  # seed and number of inputs give the same inputs, so a pass here is a pass there.
+  if ! "$build/tests/fuzz/$target" "$corpus" "$root/tests/fuzz/corpus/$target" \
+      -max_total_time="$seconds" ${GEOCDT_FUZZ_SEED:+-seed=$GEOCDT_FUZZ_SEED} \
+      ${GEOCDT_FUZZ_RUNS:+-runs=$GEOCDT_FUZZ_RUNS} -max_len=4096 -timeout=20 -rss_limit_mb=2048 \
+      -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" \
+      2>"$build/$target.log"; then
+    status=1
+    tail -n 60 "$build/$target.log" >&2
+    echo "run-fuzz: $target FAILED" >&2
+    grep -o 'Test unit written to .*' "$build/$target.log" >&2 || true
+  else
+    grep -E '^(stat::number_of_executed_units|stat::peak_rss_mb)|^Done' "$build/$target.log" >&2 || true
+  fi
+done
+exit $status

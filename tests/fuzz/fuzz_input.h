@@ -1,0 +1,197 @@
+#pragma once
+// How the fuzz targets turn arbitrary bytes into geometry. Random doubles are almost never
+// collinear, cocircular or equal, so most modes put points on small lattices, where those
+// cases are the rule, and the lattice modes can also repeat, nudge and bisect earlier points.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "geocdt/status.h"
+#include "geocdt/triangulation.h"
+
+namespace geocdt::fuzz {
+
+// Past the end every read gives zeros, so any byte string decodes to something.
+class ByteReader {
+ public:
+  ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+  std::size_t remaining() const { return size_ - pos_; }
+  std::uint8_t byte() { return pos_ < size_ ? data_[pos_++] : 0; }
+  double rawDouble() {
+    std::uint8_t bytes[8];
+    for (std::uint8_t& b : bytes) b = byte();
+    double v;
+    std::memcpy(&v, bytes, sizeof v);
+    return v;
+  }
+
+ private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t pos_ = 0;
+};
+
+inline bool validCoordinate(double v) { return std::isfinite(v) && std::fabs(v) <= kMaxCoordinate; }
+
+// Any double into the accepted range, keeping sign and mantissa, so that folded raw input
+// still spans every magnitude from subnormal to about 8e149.
+inline double foldIntoRange(double v) {
+  if (std::isnan(v)) return 0;
+  if (std::isinf(v)) return std::copysign(kMaxCoordinate, v);
+  int exponent = 0;
+  const double mantissa = std::frexp(v, &exponent);
+  if (exponent > 498) exponent %= 498;  // 2^498 < 1e150
+  return std::ldexp(mantissa, exponent);
+}
+
+enum class PointMode : std::uint8_t {
+  Raw,        // 16 bytes: two doubles as they are, possibly NaN, infinite or too large
+  Folded,     // 16 bytes: two doubles folded into the valid range
+  SmallGrid,  // 1 byte: a point of the 16 x 16 integer grid
+  Lattice,    // 2 bytes: a point of a 32 x 32 lattice, or an earlier point reused
+};
+
+class PointDecoder {
+ public:
+  // Reads the mode and, for lattices, an origin, a step and a rotation from tables that
+  // hold the hard cases: huge offsets with tiny steps, steps that are not binary fractions,
+  // and rotations that put lattice lines at irrational-looking slopes.
+  explicit PointDecoder(ByteReader& in) {
+    const std::uint8_t b = in.byte();
+    mode_ = static_cast<PointMode>(b & 3);
+    if (mode_ != PointMode::Lattice) return;
+    static constexpr double kOrigins[8] = {0, 1, -12345.678, 1.6e7 + 0.25, 179.9999999, 1e-300, 1e100, 0};
+    static constexpr double kSteps[8] = {1, 0.5, 0.1, 1e-3, 1.0 / 3, 1e-9, 1e9, 0x1p-40};
+    static constexpr double kRotations[4][2] = {
+        {1, 0}, {0.6, 0.8}, {0.7071067811865476, 0.7071067811865476}, {0.96, 0.28}};
+    const std::uint8_t o = in.byte(), s = in.byte();
+    originX_ = (o & 7) == 7 ? foldIntoRange(in.rawDouble()) : kOrigins[o & 7];
+    originY_ = ((o >> 3) & 7) == 7 ? foldIntoRange(in.rawDouble()) : kOrigins[(o >> 3) & 7];
+    step_ = kSteps[s & 7];
+    cos_ = kRotations[(s >> 3) & 3][0];
+    sin_ = kRotations[(s >> 3) & 3][1];
+  }
+
+  PointMode mode() const { return mode_; }
+
+  // The next point; only Raw mode gives invalid coordinates.
+  void next(ByteReader& in, double& x, double& y) {
+    switch (mode_) {
+      case PointMode::Raw:
+        x = in.rawDouble();
+        y = in.rawDouble();
+        break;
+      case PointMode::Folded:
+        x = foldIntoRange(in.rawDouble());
+        y = foldIntoRange(in.rawDouble());
+        break;
+      case PointMode::SmallGrid: {
+        const std::uint8_t b = in.byte();
+        x = (b & 15) - 8;
+        y = (b >> 4) - 8;
+        break;
+      }
+      case PointMode::Lattice:
+        nextLattice(in, x, y);
+        break;
+    }
+    history_.push_back(x);
+    history_.push_back(y);
+  }
+
+ private:
+  void nextLattice(ByteReader& in, double& x, double& y) {
+    const std::uint8_t a = in.byte(), b = in.byte();
+    const int i = a & 31, j = b & 31, op = a >> 5;
+    const std::size_t n = history_.size() / 2;
+    if (op < 5 || n == 0) {
+      x = clamp(originX_ + step_ * (cos_ * i - sin_ * j));
+      y = clamp(originY_ + step_ * (sin_ * i + cos_ * j));
+      return;
+    }
+    const std::size_t k = b % n;
+    x = history_[2 * k];
+    y = history_[2 * k + 1];
+    if (op == 6) {  // one ulp away from an earlier point: the near-duplicates of real data
+      const double toward = (i & 4) ? INFINITY : -INFINITY;
+      if (i & 1) x = clamp(std::nextafter(x, toward));
+      if (i & 2) y = clamp(std::nextafter(y, toward));
+    } else if (op == 7) {  // the rounded midpoint of two earlier points: on or near an edge
+      const std::size_t m = static_cast<std::size_t>(i) % n;
+      x = 0.5 * x + 0.5 * history_[2 * m];
+      y = 0.5 * y + 0.5 * history_[2 * m + 1];
+    }  // op 5: an exact duplicate
+  }
+
+  static double clamp(double v) {
+    return std::fabs(v) <= kMaxCoordinate ? v : std::copysign(kMaxCoordinate, v);
+  }
+
+  PointMode mode_ = PointMode::SmallGrid;
+  double originX_ = 0, originY_ = 0, step_ = 1, cos_ = 1, sin_ = 0;
+  std::vector<double> history_;
+};
+
+// Triangulation options from one byte: every order, both location starts, and grid
+// densities that make the grid grow early or late.
+inline Options decodeOptions(std::uint8_t b) {
+  static constexpr double kDensities[4] = {2.0, 0.25, 1.0, 8.0};
+  Options o;
+  o.order = static_cast<InsertionOrder>(b % 3);
+  o.start = (b >> 2) & 1 ? LocateStart::Grid : LocateStart::LastTriangle;
+  o.gridDensity = kDensities[(b >> 3) & 3];
+  return o;
+}
+
+inline std::string describeOptions(const Options& o) {
+  static const char* kOrders[3] = {"Input", "Hilbert", "Brio"};
+  return std::string("order=") + kOrders[static_cast<int>(o.order)] +
+         " start=" + (o.start == LocateStart::Grid ? "Grid" : "LastTriangle") +
+         " gridDensity=" + std::to_string(o.gridDensity);
+}
+
+// Coordinates printed so that they read back bit for bit.
+inline void printPoints(const char* label, const double* xy, std::size_t count) {
+  std::fprintf(stderr, "%s (%zu points):", label, count);
+  for (std::size_t i = 0; i < count; ++i) std::fprintf(stderr, " %.17g,%.17g", xy[2 * i], xy[2 * i + 1]);
+  std::fprintf(stderr, "\n");
+}
+
+// A broken invariant, thrown up to the fuzz entry point, which prints the input and aborts
+// so that libFuzzer saves it.
+struct Finding {
+  std::string what;
+};
+
+[[noreturn]] inline void fail(const std::string& what) { throw Finding{what}; }
+
+// Whether a finding stops the run. GEOCDT_FUZZ_ONLY=text stops only on findings whose
+// message contains text (to minimize one bug with -minimize_crash); GEOCDT_FUZZ_IGNORE=a|b
+// lets findings containing a or b pass (to look past a known bug).
+inline bool reportable(const std::string& what) {
+  const char* only = std::getenv("GEOCDT_FUZZ_ONLY");
+  if (only != nullptr && what.find(only) == std::string::npos) return false;
+  const char* ignore = std::getenv("GEOCDT_FUZZ_IGNORE");
+  if (ignore == nullptr) return true;
+  const std::string list = ignore;
+  for (std::size_t from = 0; from <= list.size();) {
+    const std::size_t bar = std::min(list.find('|', from), list.size());
+    if (bar > from && what.find(list.substr(from, bar - from)) != std::string::npos) return false;
+    from = bar + 1;
+  }
+  return true;
+}
+
+// Set GEOCDT_FUZZ_PRINT=1 to print every decoded input, e.g. when replaying a finding.
+inline bool printRequested() {
+  const char* v = std::getenv("GEOCDT_FUZZ_PRINT");
+  return v != nullptr && v[0] == '1';
+}
+
+}  // namespace geocdt::fuzz
