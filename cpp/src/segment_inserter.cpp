@@ -254,7 +254,10 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     std::uint32_t best = kGhost;
     long double bestOff = 0;
     const auto consider = [&](std::uint32_t v, const InputSegment& g, std::uint32_t u0, std::uint32_t u1) {
-      if (!between(g, p[2 * v], p[2 * v + 1], u0, u1)) return;
+      // Ends count as within: ends that nearly coincide must be able to meet.
+      const long double t = along(g, p[2 * v], p[2 * v + 1]);
+      const long double t0 = along(g, p[2 * u0], p[2 * u0 + 1]), t1 = along(g, p[2 * u1], p[2 * u1 + 1]);
+      if (t < std::min(t0, t1) || t > std::max(t0, t1)) return;
       const long double off = offLine(v, u0, u1);
       if (best == kGhost || off < bestOff) {
         best = v;
