@@ -202,12 +202,14 @@ bool SegmentInserter::flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource&
 
 namespace {
 
-// Where the lines through (a, b) and (c, d) meet, in floating point.
+// Where the lines through (a, b) and (c, d) meet, in floating point. In long double, whose
+// exponent range keeps the products of tiny coordinates (1e-171 squared) from underflowing.
 bool lineCrossing(const InputSegment& ab, const InputSegment& cd, double& x, double& y) {
-  const double ex = ab.bx - ab.ax, ey = ab.by - ab.ay, fx = cd.bx - cd.ax, fy = cd.by - cd.ay;
-  const double s = ((cd.ax - ab.ax) * fy - (cd.ay - ab.ay) * fx) / (ex * fy - ey * fx);
-  x = ab.ax + s * ex;
-  y = ab.ay + s * ey;
+  using L = long double;
+  const L ex = (L)ab.bx - ab.ax, ey = (L)ab.by - ab.ay, fx = (L)cd.bx - cd.ax, fy = (L)cd.by - cd.ay;
+  const L s = (((L)cd.ax - ab.ax) * fy - ((L)cd.ay - ab.ay) * fx) / (ex * fy - ey * fx);
+  x = static_cast<double>(ab.ax + s * ex);
+  y = static_cast<double>(ab.ay + s * ey);
   return std::isfinite(x) && std::isfinite(y);
 }
 
@@ -296,8 +298,12 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   const auto strictlyLeft = [&](std::uint32_t u, std::uint32_t v) {
     return orient2d(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], x, y) == Sign::Positive;
   };
-  const double snapDistance =
-      1e-12 * (std::hypot(ab.bx - ab.ax, ab.by - ab.ay) + std::hypot(cd.bx - cd.ax, cd.by - cd.ay));
+  // Snapping is for rounding, relative to the shorter of the two pieces that cross here
+  // (an original segment can be 1e76 long and still cross a short one).
+  const auto length = [&](std::uint32_t u, std::uint32_t v) {
+    return std::hypot(p[2 * v] - p[2 * u], p[2 * v + 1] - p[2 * u + 1]);
+  };
+  const double snapDistance = 1e-12 * std::min(length(piece.a, piece.b), length(r, l));
   std::uint32_t nearest = r;
   for (const std::uint32_t v : {l, piece.a, piece.b})
     if (distance(v) < distance(nearest)) nearest = v;

@@ -346,6 +346,17 @@ TEST(Constraints, FuzzTinyBowtieRingResolves) {
   EXPECT_TRUE(triangulate(nullptr, 0, &view, 1, o, {}, m).ok());
 }
 
+TEST(Constraints, FuzzTinyCoordinatesAndHugeSegments) {
+  // Products of 1e-171 coordinates underflow in double; a 6e76-long segment must not make
+  // every vertex "near" a crossing with a short one.
+  std::vector<double> ring = {-7.4036710823662963e-171, -7.4036710823662963e-171,
+                              -7.4036710823662963e-171, 2.2301954389232176e-266,
+                              1.4464930455059793e-208, -7.2663735934183412e-171, 0, 0,
+                              -7.4036710823662963e-171, -7.4036710823662963e-171};
+  EXPECT_EQ(check({}, {ring}), "");
+  EXPECT_EQ(check({}, {{11, 10, -6.1514547407324216e+76, 20.000000000000224}, {1, 0, 1, 20.000000014668331}}), "");
+}
+
 TEST(Constraints, ConstraintsBeforeAnyTriangle) {
   // Collinear points first: the segment waits until a point off the line arrives.
   Triangulation t;
