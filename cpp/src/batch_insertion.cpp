@@ -133,7 +133,7 @@ void Delaunay::refreshGrid() {
   const double* p = xy.data();
   grid_.rebuild(topo.slotCount(), [&](std::int32_t t, double& x, double& y) {
     const std::uint32_t v = tri[3 * t];
-    if (v >= kFreeSlot) return false;  // a ghost (at its first corner) or a free slot
+    if (v == kGhost) return false;  // a ghost triangle with the ghost at its first corner
     x = p[2 * v];
     y = p[2 * v + 1];
     return true;
@@ -162,7 +162,7 @@ std::vector<std::uint32_t> Delaunay::renumberBatch(const double* input, std::uin
     ids[i] = newId[v - base];
   }
   for (std::uint32_t& v : topo.tri)
-    if (v >= base && v < kFreeSlot) v = newId[v - base];
+    if (v >= base && v != kGhost) v = newId[v - base];
   for (std::uint32_t& v : pending_)
     if (v >= base) v = newId[v - base];
   xy.resize(2 * static_cast<std::size_t>(next));

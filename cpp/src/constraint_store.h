@@ -33,7 +33,6 @@ class ConstraintStore {
  public:
   std::vector<InputSegment> segments;
   std::vector<PendingSegment> pending;
-  std::vector<std::uint8_t> isRing;  // per polyline
   std::uint32_t polylineCount = 0;
 
   static std::uint64_t key(std::uint32_t u, std::uint32_t v) {
@@ -96,7 +95,6 @@ class ConstraintStore {
     extras_.clear();
     segments.clear();
     pending.clear();
-    isRing.clear();
     polylineCount = 0;
   }
 

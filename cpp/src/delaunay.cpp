@@ -79,7 +79,7 @@ std::int32_t Delaunay::insertInFace(std::int32_t t, std::uint32_t v) {
   stack_.push_back(e0);
   stack_.push_back(3 * t1);
   stack_.push_back(3 * t2);
-  legalize(v);
+  legalize();
   return edgeFrom(t, v);
 }
 
@@ -118,7 +118,7 @@ std::int32_t Delaunay::splitEdge(std::int32_t e, std::uint32_t v) {
   stack_.push_back(B);
   stack_.push_back(C);
   stack_.push_back(D);
-  legalize(v);
+  legalize();
   return edgeFrom(tA, v);
 }
 
@@ -150,8 +150,7 @@ bool Delaunay::isLocallyDelaunay(std::int32_t e) const {
                   p[2 * v], p[2 * v + 1]) != Sign::Positive;
 }
 
-void Delaunay::legalize(std::uint32_t v) {
-  (void)v;
+void Delaunay::legalize() {
   while (!stack_.empty()) {
     const std::int32_t e = stack_.back();
     stack_.pop_back();
@@ -160,6 +159,21 @@ void Delaunay::legalize(std::uint32_t v) {
     topo.flip(e);
     ++stats.flips;
     stack_.push_back(e);
+    stack_.push_back(nextEdge(f));
+  }
+}
+
+void Delaunay::restoreDelaunay() {
+  while (!stack_.empty()) {
+    const std::int32_t e = stack_.back();
+    stack_.pop_back();
+    if (topo.fixed[e] || isLocallyDelaunay(e)) continue;
+    const std::int32_t f = topo.adj[e];
+    topo.flip(e);
+    ++stats.flips;
+    stack_.push_back(e);
+    stack_.push_back(nextEdge(e));
+    stack_.push_back(f);
     stack_.push_back(nextEdge(f));
   }
 }

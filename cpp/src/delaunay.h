@@ -35,7 +35,6 @@ class Delaunay {
 
   bool built() const { return built_; }
   std::uint32_t vertexCount() const { return static_cast<std::uint32_t>(xy.size() / 2); }
-  const std::vector<std::uint32_t>& pending() const { return pending_; }
 
   // Inserts count points (2 * count doubles, already validated). ids[i] receives the vertex
   // that point i became or equals. New vertices are numbered in input order after the
@@ -55,13 +54,14 @@ class Delaunay {
   // constrained edge stay constrained.
   std::int32_t splitEdge(std::int32_t e, std::uint32_t v);
   std::int32_t edgeFrom(std::int32_t t, std::uint32_t v) const;  // -1 if v is not in t
-  // Flips non-constrained edges on the stack until each is locally Delaunay. Each entry is a
-  // half-edge whose triangle has vertex v opposite it.
-  void legalize(std::uint32_t v);
+  // Flips non-constrained edges on the stack until each is locally Delaunay. legalize()
+  // assumes every entry has the newly inserted vertex opposite it, so a flip only exposes two
+  // new edges; restoreDelaunay() takes any edges and checks all four around each flip.
+  void legalize();
+  void restoreDelaunay();
   std::vector<std::int32_t>& flipStack() { return stack_; }
 
   bool isLocallyDelaunay(std::int32_t e) const;  // e's quad, whatever the fixed flags
-  std::int32_t lastTriangle() const { return last_; }
   void setLastTriangle(std::int32_t t) { last_ = t; }
   const Status& lastError() const { return error_; }
   std::uint32_t gridSize() const { return grid_.size(); }

@@ -5,8 +5,6 @@
 
 namespace geocdt {
 
-std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y) { return hilbertIndex(x, y, 16); }
-
 std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y, int bits) {
   std::uint32_t d = 0;
   const std::uint32_t mask = (1u << bits) - 1;

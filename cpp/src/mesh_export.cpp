@@ -17,7 +17,7 @@ std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill) {
   std::vector<std::uint8_t> seen(slots, 0);
   std::vector<std::int32_t> queue;
   for (std::int32_t t = 0; t < slots; ++t)
-    if (!topo.isFree(t) && topo.isGhost(t)) {
+    if (topo.isGhost(t)) {
       seen[t] = 1;
       queue.push_back(t);
     }
@@ -65,7 +65,7 @@ std::int32_t planCompaction(std::vector<std::uint8_t>& kept, Move move) {
 std::vector<std::uint8_t> realSlots(const std::vector<std::uint32_t>& tri) {
   std::vector<std::uint8_t> kept(tri.size() / 3);
   for (std::size_t t = 0; t < kept.size(); ++t)
-    kept[t] = tri[3 * t] < kFreeSlot && tri[3 * t + 1] < kFreeSlot && tri[3 * t + 2] < kFreeSlot;
+    kept[t] = tri[3 * t] != kGhost && tri[3 * t + 1] != kGhost && tri[3 * t + 2] != kGhost;
   return kept;
 }
 

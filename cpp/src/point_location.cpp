@@ -25,12 +25,10 @@ Along alongSegment(const double* a, const double* b, const double* q) {
 std::int32_t Delaunay::startTriangle(double x, double y, bool fromGrid) {
   if (fromGrid) {
     const std::int32_t t = grid_.cellAt(x, y);
-    if (t >= 0 && t < topo.slotCount() && !topo.isFree(t)) return t;
+    if (t >= 0 && t < topo.slotCount()) return t;
   }
-  if (last_ >= 0 && last_ < topo.slotCount() && !topo.isFree(last_)) return last_;
-  for (std::int32_t t = 0; t < topo.slotCount(); ++t)
-    if (!topo.isFree(t)) return t;
-  return -1;
+  if (last_ >= 0 && last_ < topo.slotCount()) return last_;
+  return topo.slotCount() > 0 ? 0 : -1;
 }
 
 Hit Delaunay::locate(double x, double y, bool fromGrid) {
@@ -124,7 +122,7 @@ Hit Delaunay::scan(double x, double y) const {
   const double* p = xy.data();
   const std::uint32_t* tri = topo.tri.data();
   for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
-    if (topo.isFree(t) || topo.isGhost(t)) continue;
+    if (topo.isGhost(t)) continue;
     const std::int32_t e0 = 3 * t;
     Sign o[3];
     bool inside = true;
@@ -141,7 +139,7 @@ Hit Delaunay::scan(double x, double y) const {
     return {Hit::Kind::Face, e0};
   }
   for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
-    if (topo.isFree(t) || !topo.isGhost(t)) continue;
+    if (!topo.isGhost(t)) continue;
     const std::int32_t e0 = 3 * t;
     const int g = tri[e0] == kGhost ? 0 : (tri[e0 + 1] == kGhost ? 1 : 2);
     const std::int32_t r = e0 + (g + 1) % 3;

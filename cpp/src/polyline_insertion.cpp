@@ -98,7 +98,6 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
       offset += line.count;
       const std::uint32_t id = store.polylineCount++;
       const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
-      store.isRing.push_back(ring);
       ++d.stats.polylines;
       for (std::size_t k = 0; k + 1 < line.count; ++k) {
         const std::uint32_t u = lineIds[k], v = lineIds[k + 1];

@@ -46,22 +46,6 @@ Status SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSourc
   return Status::success();
 }
 
-void SegmentInserter::restoreDelaunay() {
-  Topology& topo = d_.topo;
-  std::vector<std::int32_t>& stack = d_.flipStack();
-  while (!stack.empty()) {
-    const std::int32_t e = stack.back();
-    stack.pop_back();
-    if (topo.fixed[e] || d_.isLocallyDelaunay(e)) continue;
-    const std::int32_t f = topo.adj[e];
-    topo.flip(e);
-    ++d_.stats.flips;
-    stack.push_back(e);
-    stack.push_back(nextEdge(e));
-    stack.push_back(f);
-    stack.push_back(nextEdge(f));
-  }
-}
 
 std::int32_t SegmentInserter::edgeOutOf(std::uint32_t a) {
   // The piece before usually ended at a: its edge's twin starts here.
@@ -196,7 +180,7 @@ bool SegmentInserter::flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource&
   std::vector<std::int32_t>& stack = d_.flipStack();
   for (const std::int32_t t : touched_)
     for (int k = 0; k < 3; ++k) stack.push_back(3 * t + k);
-  restoreDelaunay();
+  d_.restoreDelaunay();
   return true;
 }
 
@@ -279,7 +263,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
       pieces_.push_back({r, best, moved});
       pieces_.push_back({best, l, moved});
       d_.flipStack().push_back(e);
-      restoreDelaunay();
+      d_.restoreDelaunay();
     }
     return kGhost;
   };
@@ -325,7 +309,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
       e = topo.adj[prevEdge(e)];
       if (e == spoke) break;
     }
-    restoreDelaunay();
+    d_.restoreDelaunay();
     ++d_.stats.crossings;
     ++d_.stats.inserted;
     return v;
@@ -363,7 +347,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
       pieces_.push_back({r, w, moved});
       pieces_.push_back({w, l, moved});
       d_.flipStack().push_back(e);  // no longer constrained: it may have to flip now
-      restoreDelaunay();
+      d_.restoreDelaunay();
     }
   }
   return pieceEnd ? kGhost : w;

@@ -37,7 +37,6 @@ class SegmentInserter {
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v);  // half-edge u -> v, or -1
   void markConstrained(std::int32_t e, const EdgeSource& src);
   bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);
-  void restoreDelaunay();  // Lawson flips from the edges on the engine's flip stack
   // Resolves a crossing with constrained half-edge h; returns the vertex where the piece
   // must now pass, or kGhost when the crossed constraint was re-routed instead.
   std::uint32_t resolveCrossing(const Piece& piece, std::int32_t h);

@@ -1,6 +1,7 @@
 #pragma once
 // Triangles as flat arrays in delaunator's layout, closed by a ghost vertex at infinity so
-// that every half-edge has a twin. Slots of removed triangles go to a free list for reuse.
+// that every half-edge has a twin. Insertions split and flips rewrite triangles in their own
+// slots; no triangle is ever removed, so slots never need recycling.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -8,7 +9,6 @@
 namespace geocdt {
 
 inline constexpr std::uint32_t kGhost = 0xFFFFFFFFu;  // the vertex at infinity
-inline constexpr std::uint32_t kFreeSlot = 0xFFFFFFFEu;
 
 inline std::int32_t nextEdge(std::int32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
 inline std::int32_t prevEdge(std::int32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
@@ -17,10 +17,8 @@ struct Topology {
   std::vector<std::uint32_t> tri;    // 3 vertex ids per slot
   std::vector<std::int32_t> adj;     // twin of each half-edge
   std::vector<std::uint8_t> fixed;   // 1 when the half-edge is constrained
-  std::vector<std::int32_t> freeSlots;
 
   std::int32_t slotCount() const { return static_cast<std::int32_t>(tri.size() / 3); }
-  bool isFree(std::int32_t t) const { return tri[3 * t] == kFreeSlot; }
   bool isGhost(std::int32_t t) const {
     return tri[3 * t] == kGhost || tri[3 * t + 1] == kGhost || tri[3 * t + 2] == kGhost;
   }
@@ -39,24 +37,12 @@ struct Topology {
     tri.clear();
     adj.clear();
     fixed.clear();
-    freeSlots.clear();
   }
 
   // A slot for a new triangle; its twins are left unset (-1) for the caller to link.
   std::int32_t addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    std::int32_t t;
-    if (!freeSlots.empty()) {
-      t = freeSlots.back();
-      freeSlots.pop_back();
-      setTriangle(t, a, b, c);
-      for (int k = 0; k < 3; ++k) {
-        adj[3 * t + k] = -1;
-        fixed[3 * t + k] = 0;
-      }
-      return t;
-    }
     // push_back inlines to a store when the capacity is there (reserved per batch).
-    t = slotCount();
+    const std::int32_t t = slotCount();
     tri.push_back(a);
     tri.push_back(b);
     tri.push_back(c);
@@ -71,11 +57,6 @@ struct Topology {
     tri[3 * t] = a;
     tri[3 * t + 1] = b;
     tri[3 * t + 2] = c;
-  }
-
-  void removeTriangle(std::int32_t t) {
-    tri[3 * t] = tri[3 * t + 1] = tri[3 * t + 2] = kFreeSlot;
-    freeSlots.push_back(t);
   }
 
   void link(std::int32_t e, std::int32_t f) {

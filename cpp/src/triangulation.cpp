@@ -52,7 +52,7 @@ std::size_t Triangulation::triangleCount() const {
   const Topology& topo = state_->delaunay.topo;
   std::size_t n = 0;
   for (std::int32_t t = 0; t < topo.slotCount(); ++t)
-    if (!topo.isFree(t) && !topo.isGhost(t)) ++n;
+    if (!topo.isGhost(t)) ++n;
   return n;
 }
 

@@ -128,7 +128,6 @@ class Triangulation {
   Mesh release(const MeshOptions& options = {});     // the same; leaves this empty
 
  private:
-  friend struct TriangulationAccess;  // tests reach the internal state through this
   struct State;
   std::unique_ptr<State> state_;
 };
