@@ -1,4 +1,4 @@
-// From internal slots to the caller's arrays: ghost and free slots dropped, optionally the
+// From internal slots to the caller's arrays: ghost triangles dropped, optionally the
 // outside triangles too, with provenance and inside flags.
 #include <algorithm>
 

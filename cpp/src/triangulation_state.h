@@ -16,12 +16,12 @@ struct Triangulation::State {
   bool slotMapValid = false;
 };
 
-// Builds the caller's arrays from the internal slots: ghost and free slots dropped. With
+// Builds the caller's arrays from the internal slots: ghost triangles dropped. With
 // consume, the arrays are moved out and compacted in place, leaving delaunay to be cleared.
 Mesh exportMesh(Delaunay& delaunay, const MeshOptions& options, bool consume);
 // Inserts the segments that waited for the triangulation to have triangles.
 Status insertPendingSegments(Delaunay& delaunay);
-// Index of each slot among the exported triangles, or -1 for ghost and free slots.
+// Index of each slot among the exported triangles, or -1 for ghost triangles.
 std::vector<std::int32_t> slotIndices(const Topology& topo);
 
 }  // namespace geocdt
