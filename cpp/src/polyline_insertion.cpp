@@ -79,13 +79,13 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     // All points first, in one spatially sorted batch.
     Status s;
     if (count == 1) {
-      s = insertPoints(polylines[0].xy, polylines[0].count, ids);
+      s = insertCheckedPoints(polylines[0].xy, polylines[0].count, ids);
     } else {
       std::vector<double> all;
       all.reserve(2 * total);
       for (std::size_t i = 0; i < count; ++i)
         all.insert(all.end(), polylines[i].xy, polylines[i].xy + 2 * polylines[i].count);
-      s = insertPoints(all.data(), total, ids);
+      s = insertCheckedPoints(all.data(), total, ids);
     }
     if (!s.ok()) return s;
     state_->slotMapValid = false;

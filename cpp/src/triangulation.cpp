@@ -57,9 +57,16 @@ std::size_t Triangulation::triangleCount() const {
 }
 
 Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds) {
-  Status s = checkCoordinates(xy, count, "point");
+  const Status s = checkCoordinates(xy, count, "point");
   if (!s.ok()) return s;
-  Delaunay& d = state_->delaunay;
+  return insertCheckedPoints(xy, count, vertexIds);
+}
+
+Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
+                                          std::uint32_t* vertexIds) {
+  State& state = *state_;
+  Delaunay& d = state.delaunay;
+  Status s;
   if (count >= kGhost - 2 - d.vertexCount())
     return {StatusCode::InvalidArgument, "too many points: at most 4294967293 vertices"};
   try {
@@ -69,12 +76,12 @@ Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uin
       scratch.resize(count);
       ids = scratch.data();
     }
-    state_->slotMapValid = false;
+    state.slotMapValid = false;
     s = d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
     if (s.ok()) s = insertPendingSegments(d);
   } catch (const std::bad_alloc&) {
     d.clear();
-    state_->slotMapValid = false;
+    state.slotMapValid = false;
     return outOfMemory();
   }
   return s;

@@ -128,6 +128,8 @@ class Triangulation {
   Mesh release(const MeshOptions& options = {});     // the same; leaves this empty
 
  private:
+  // insertPoints without checking the coordinates again (insertPolylines checked them).
+  Status insertCheckedPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds);
   struct State;
   std::unique_ptr<State> state_;
 };
