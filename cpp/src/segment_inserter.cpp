@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "geocdt/predicates.h"
 
@@ -188,12 +189,40 @@ namespace {
 
 // Where the lines through (a, b) and (c, d) meet, in floating point. In long double, whose
 // exponent range keeps the products of tiny coordinates (1e-171 squared) from underflowing.
+// The point is p + s * (direction of p's segment) for an end p of one segment, with s
+// found from an end q of the other. Rounding moves it by about |q - p| (through the
+// cancellation in s's numerator) plus |s| times the direction (through the step from p),
+// so the pair (p, q) that makes the least of both is used: from the far end of a
+// 1e67-long segment, one rounding of s moved the point by 1e47.
 bool lineCrossing(const InputSegment& ab, const InputSegment& cd, double& x, double& y) {
   using L = long double;
   const L ex = (L)ab.bx - ab.ax, ey = (L)ab.by - ab.ay, fx = (L)cd.bx - cd.ax, fy = (L)cd.by - cd.ay;
-  const L s = (((L)cd.ax - ab.ax) * fy - ((L)cd.ay - ab.ay) * fx) / (ex * fy - ey * fx);
-  x = static_cast<double>(ab.ax + s * ex);
-  y = static_cast<double>(ab.ay + s * ey);
+  const L denominator = ex * fy - ey * fx;
+  const L lengthE = std::hypot(ex, ey), lengthF = std::hypot(fx, fy);
+  L bestError = 0, bestX = 0, bestY = 0;
+  bool found = false;
+  // p moves along (dx, dy); q is on the other line, whose direction is (gx, gy).
+  const auto tryPair = [&](L px, L py, L dx, L dy, L length, L qx, L qy, L gx, L gy, L sign) {
+    const L u = (qx - px) * gy, v = (qy - py) * gx;
+    const L s = sign * (u - v) / denominator;
+    const L error = (std::fabs(u) + std::fabs(v)) / std::fabs(denominator) * length + std::fabs(s) * length;
+    if (!(found && bestError <= error)) {
+      found = true;
+      bestError = error;
+      bestX = px + s * dx;
+      bestY = py + s * dy;
+    }
+  };
+  for (const auto& [qx, qy] : {std::pair<L, L>{cd.ax, cd.ay}, std::pair<L, L>{cd.bx, cd.by}}) {
+    tryPair(ab.ax, ab.ay, ex, ey, lengthE, qx, qy, fx, fy, 1);
+    tryPair(ab.bx, ab.by, ex, ey, lengthE, qx, qy, fx, fy, 1);
+  }
+  for (const auto& [qx, qy] : {std::pair<L, L>{ab.ax, ab.ay}, std::pair<L, L>{ab.bx, ab.by}}) {
+    tryPair(cd.ax, cd.ay, fx, fy, lengthF, qx, qy, ex, ey, -1);
+    tryPair(cd.bx, cd.by, fx, fy, lengthF, qx, qy, ex, ey, -1);
+  }
+  x = static_cast<double>(bestX);
+  y = static_cast<double>(bestY);
   return std::isfinite(x) && std::isfinite(y);
 }
 
@@ -211,14 +240,18 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   const EdgeSource* crossedSource = store.find(r, l);
   const InputSegment ab = store.segments[piece.src.segment];
   const InputSegment cd = crossedSource ? store.segments[crossedSource->segment] : segmentOf(r, l);
-  // Position along a segment's direction, to keep each constraint from doubling back.
-  // In long double: vertices an ulp apart near a segment's end must still compare apart.
-  const auto along = [](const InputSegment& g, double x, double y) {
-    return ((long double)x - g.ax) * ((long double)g.bx - g.ax) + ((long double)y - g.ay) * ((long double)g.by - g.ay);
+  // Where (x, y) lies along a segment's direction, compared with vertex u: the sign of the
+  // projection of their difference. Differences, not positions: near the end of a segment
+  // 1e-63 long, a vertex 1e-182 away must still compare apart. In long double, whose
+  // exponent range keeps products of subnormal differences from underflowing.
+  const auto beyond = [&](const InputSegment& g, double x, double y, std::uint32_t u) {
+    const long double t = ((long double)x - p[2 * u]) * ((long double)g.bx - g.ax) +
+                          ((long double)y - p[2 * u + 1]) * ((long double)g.by - g.ay);
+    return (t > 0) - (t < 0);
   };
+  // Between lo and hi along g's direction: beyond one and short of the other.
   const auto between = [&](const InputSegment& g, double x, double y, std::uint32_t lo, std::uint32_t hi) {
-    const long double t = along(g, x, y), t0 = along(g, p[2 * lo], p[2 * lo + 1]), t1 = along(g, p[2 * hi], p[2 * hi + 1]);
-    return std::min(t0, t1) < t && t < std::max(t0, t1);
+    return beyond(g, x, y, lo) * beyond(g, x, y, hi) < 0;
   };
   const auto fits = [&](double x, double y) {
     return between(ab, x, y, piece.a, piece.b) && between(cd, x, y, r, l);
@@ -241,9 +274,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     long double bestOff = 0;
     const auto consider = [&](std::uint32_t v, const InputSegment& g, std::uint32_t u0, std::uint32_t u1) {
       // Ends count as within: ends that nearly coincide must be able to meet.
-      const long double t = along(g, p[2 * v], p[2 * v + 1]);
-      const long double t0 = along(g, p[2 * u0], p[2 * u0 + 1]), t1 = along(g, p[2 * u1], p[2 * u1 + 1]);
-      if (t < std::min(t0, t1) || t > std::max(t0, t1)) return;
+      if (beyond(g, p[2 * v], p[2 * v + 1], u0) * beyond(g, p[2 * v], p[2 * v + 1], u1) > 0) return;
       const long double off = offLine(v, u0, u1);
       if (best == kGhost || off < bestOff) {
         best = v;

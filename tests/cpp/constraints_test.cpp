@@ -19,17 +19,18 @@ struct Result {
   std::vector<std::uint32_t> ids;
 };
 
-Result run(const std::vector<double>& points, const Polylines& lines, const MeshOptions& mo = {}) {
+Result run(const std::vector<double>& points, const Polylines& lines, const MeshOptions& mo = {},
+           const Options& options = {}) {
   std::vector<PolylineView> views;
   for (const auto& l : lines) views.push_back({l.data(), l.size() / 2});
   Result r;
-  r.status = triangulate(points.data(), points.size() / 2, views.data(), views.size(), {}, mo, r.mesh, &r.ids);
+  r.status = triangulate(points.data(), points.size() / 2, views.data(), views.size(), options, mo, r.mesh, &r.ids);
   return r;
 }
 
 // Runs the whole checker; returns "" when everything holds.
-std::string check(const std::vector<double>& points, const Polylines& lines) {
-  Result r = run(points, lines);
+std::string check(const std::vector<double>& points, const Polylines& lines, const Options& options = {}) {
+  Result r = run(points, lines, {}, options);
   if (!r.status.ok()) return "status: " + r.status.message;
   std::vector<double> input(points);
   for (const auto& l : lines) input.insert(input.end(), l.begin(), l.end());
@@ -355,6 +356,57 @@ TEST(Constraints, FuzzTinyCoordinatesAndHugeSegments) {
                               -7.4036710823662963e-171, -7.4036710823662963e-171};
   EXPECT_EQ(check({}, {ring}), "");
   EXPECT_EQ(check({}, {{11, 10, -6.1514547407324216e+76, 20.000000000000224}, {1, 0, 1, 20.000000014668331}}), "");
+}
+
+TEST(Constraints, FuzzCrossingMeasuredFromTheNearEnd) {
+  // A 1.3e67-long segment crosses a 7e49-long one 2e-321 from its end: measured from the far
+  // end of the long one, the crossing landed 2.6e47 off the short one.
+  Options input;
+  input.order = InsertionOrder::Input;
+  std::vector<double> line = {7.4278671450229415e+49, 7.3787698243938564e+49, 7.4278671450229415e+49, 0,
+                              7.4278671450230972e+49, 7.4278671450229415e+49, 1.3101507285431828e+67,
+                              3.4034399518190365e-304, 2.8205219589785083e-319, 0};
+  line.insert(line.end(), {0, 0, 0, 0});
+  EXPECT_EQ(check({}, {line}, input), "");
+  EXPECT_EQ(check({}, {line}), "");
+}
+
+TEST(Constraints, FuzzCrossingNextToTheEndOfALongSegment) {
+  // The crossing lies 3e-182 from the end of a 5e-63-long segment: positions along it
+  // compared equal in long double, so the crossing was routed through that end instead.
+  Options input;
+  input.order = InsertionOrder::Input;
+  const std::vector<double> line = {2.0722615146145237e-315, 4.861730685829017e-63, -3.0382876424295149e-182,
+                                    -3.0382887915688546e-182, -4.6432411455780696e-187, -2.3535810106819982e-185,
+                                    -1.0900715865557387e-175, 8.1086053795465383e-320};
+  EXPECT_EQ(check({}, {line}, input), "");
+}
+
+TEST(Constraints, FuzzCrossingNotMeasuredAcrossACancellation) {
+  // A segment 2.1 long ends next to one 5e-299 long: measured from the short one's end, the
+  // crossing's parameter cancelled to nothing and the point fell on that end, off the
+  // long segment.
+  Options input;
+  input.order = InsertionOrder::Input;
+  std::vector<double> ring = {-1.030730845916203e-279, 2.1250724792965388, 4.7783097445378864e-299,
+                              7.291122070187139e-304, 1.6628243732494243e-316, 0};
+  ring.insert(ring.end(), {0, 0, -1.030730845916203e-279, 2.1250724792965388});
+  const Polylines lines = {{11, 5.4323924391225434e-312, 2.064330555345791e-310, -1.0961440264327563e+141},
+                           {5.2408767532627783e-299, 0, 7.2913862538674818e-304, 1.090607744992117e-299},
+                           ring};
+  EXPECT_EQ(check({}, lines, input), "");
+}
+
+TEST(Constraints, FuzzSubnormalCrossingGetsItsOwnVertex) {
+  // Two segments among subnormals cross 1.6e-316 from an end: the crossing is a vertex, not
+  // a bend through that end (which lies 1.2e-316 off the other segment).
+  const Polylines lines = {{3.2049228321345884e-294, 3.4732827106519577e-310, 8.2890618685587619e-317,
+                            2.4879282803014709e-316},
+                           {1.7767971548758891e-307, 1.8026574931812249e-307, 0, 0}};
+  EXPECT_EQ(check({}, lines), "");
+  const Result r = run({}, lines);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_EQ(r.mesh.points.size() / 2, 5u);
 }
 
 TEST(Constraints, ConstraintsBeforeAnyTriangle) {

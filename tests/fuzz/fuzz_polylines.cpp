@@ -278,7 +278,11 @@ void checkProvenance(const Input& input, const Mesh& m) {
       const int x = -exponents[line];
       const double ux = std::ldexp(p[2 * u], x), uy = std::ldexp(p[2 * u + 1], x);
       const double vx = std::ldexp(p[2 * v], x), vy = std::ldexp(p[2 * v + 1], x);
-      const double tolerance = 1e-6 * std::hypot(ux - vx, uy - vy) + 1e-13;
+      // A crossing snaps to a vertex within 1e-12 of the shorter segment's length (at most
+      // twice the magnitude, 1 here); among subnormals a rounded crossing can be off by the
+      // smallest double itself.
+      const double grid = std::ldexp(64 * std::numeric_limits<double>::denorm_min(), x);
+      const double tolerance = 1e-6 * std::hypot(ux - vx, uy - vy) + 4e-12 + grid;
       if (testing::distanceToPolylines(lines[line], ux, uy) > tolerance ||
           testing::distanceToPolylines(lines[line], vx, vy) > tolerance)
         fail("constrained edge " + std::to_string(u) + "-" + std::to_string(v) +

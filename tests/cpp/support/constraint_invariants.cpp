@@ -24,9 +24,12 @@ double distanceToSegment(const Segment& s, double x, double y) {
 }
 
 // Rounding of crossing points: a few ulps of the coordinates plus a tiny part of the length.
+// Among subnormals an ulp is the smallest double, however small the coordinates.
 double tolerance(const Segment& s) {
   const double magnitude = std::max({std::fabs(s.ax), std::fabs(s.ay), std::fabs(s.bx), std::fabs(s.by)});
-  return 1e-9 * std::hypot(s.bx - s.ax, s.by - s.ay) + 64 * magnitude * std::numeric_limits<double>::epsilon();
+  const double ulp = std::max(magnitude * std::numeric_limits<double>::epsilon(),
+                              std::numeric_limits<double>::denorm_min());
+  return 1e-9 * std::hypot(s.bx - s.ax, s.by - s.ay) + 64 * ulp;
 }
 
 // Segments bucketed on a uniform grid by their bounding boxes.
