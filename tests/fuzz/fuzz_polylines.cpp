@@ -317,25 +317,8 @@ void run(const Input& input) {
 }  // namespace
 }  // namespace geocdt::fuzz
 
-namespace geocdt::fuzz {
-
-// GEOCDT_FUZZ_NORMAL_ONLY skips inputs whose polylines have subnormal coordinates
-// (0 < |c| < 2.2e-308): constraints among them are a known open limitation (README), and CI
-// fuzzes everything else.
-bool skipped(const Input& input) {
-  static const bool normalOnly = std::getenv("GEOCDT_FUZZ_NORMAL_ONLY") != nullptr;
-  if (!normalOnly) return false;
-  for (const auto& line : input.lines)
-    for (const double c : line)
-      if (c != 0 && std::fabs(c) < std::numeric_limits<double>::min()) return true;
-  return false;
-}
-
-}  // namespace geocdt::fuzz
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const geocdt::fuzz::Input input = geocdt::fuzz::decode(data, size);
-  if (geocdt::fuzz::skipped(input)) return 0;
   if (geocdt::fuzz::printRequested()) geocdt::fuzz::print(input);
   try {
     geocdt::fuzz::run(input);
