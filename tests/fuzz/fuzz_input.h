@@ -194,4 +194,21 @@ inline bool printRequested() {
   return v != nullptr && v[0] == '1';
 }
 
+// The body of both entry points: decode, run, and on a reportable finding print the input
+// and abort so that libFuzzer keeps it.
+template <class Decode, class Print, class Run>
+int fuzzOne(const std::uint8_t* data, std::size_t size, Decode decode, Print print, Run run) {
+  const auto input = decode(data, size);
+  if (printRequested()) print(input);
+  try {
+    run(input);
+  } catch (const Finding& finding) {
+    if (!reportable(finding.what)) return 0;
+    print(input);
+    std::fprintf(stderr, "geocdt fuzz failure: %s\n", finding.what.c_str());
+    std::abort();
+  }
+  return 0;
+}
+
 }  // namespace geocdt::fuzz

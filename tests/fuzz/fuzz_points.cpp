@@ -203,15 +203,6 @@ void run(const Input& input) {
 }  // namespace geocdt::fuzz
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const geocdt::fuzz::Input input = geocdt::fuzz::decode(data, size);
-  if (geocdt::fuzz::printRequested()) geocdt::fuzz::print(input);
-  try {
-    geocdt::fuzz::run(input);
-  } catch (const geocdt::fuzz::Finding& finding) {
-    if (!geocdt::fuzz::reportable(finding.what)) return 0;
-    geocdt::fuzz::print(input);
-    std::fprintf(stderr, "geocdt fuzz failure: %s\n", finding.what.c_str());
-    std::abort();
-  }
-  return 0;
+  using namespace geocdt::fuzz;
+  return fuzzOne(data, size, decode, print, run);
 }
