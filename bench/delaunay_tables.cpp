@@ -84,12 +84,9 @@ void printComparison(const BenchConfig& config) {
 
 const char* orderName(geocdt::InsertionOrder order) {
   switch (order) {
-    case geocdt::InsertionOrder::Input:
-      return "Input";
-    case geocdt::InsertionOrder::Hilbert:
-      return "Hilbert";
-    case geocdt::InsertionOrder::Brio:
-      return "Brio";
+    case geocdt::InsertionOrder::Input: return "Input";
+    case geocdt::InsertionOrder::Hilbert: return "Hilbert";
+    case geocdt::InsertionOrder::Brio: return "Brio";
   }
   return "?";
 }

@@ -122,8 +122,7 @@ void BM_incircle(benchmark::State& state) {
   int i = 0;
   for (auto _ : state) {
     const double* p = &v[8 * i];
-    benchmark::DoNotOptimize(
-        geocdt::incircle(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]));
+    benchmark::DoNotOptimize(geocdt::incircle(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]));
     i = (i + 1) & (kCases - 1);
   }
 }

@@ -35,11 +35,11 @@ bool triangulateInto(Output& out, std::uintptr_t xy, std::size_t count, std::uin
         }
         out.inputToVertex.resize(total);
         Triangulation triangulation;
-        Status status =
-            triangulation.insertPoints(reinterpret_cast<const double*>(xy), count,
-                                       out.inputToVertex.data());
+        Status status = triangulation.insertPoints(reinterpret_cast<const double*>(xy), count,
+                                                   out.inputToVertex.data());
         if (status.ok() && lineCount > 0)
-          status = triangulation.insertPolylines(lines.data(), lineCount, out.inputToVertex.data() + count);
+          status = triangulation.insertPolylines(lines.data(), lineCount,
+                                                 out.inputToVertex.data() + count);
         if (!status.ok()) {
           out.clear();  // a failed call hands back no arrays
           return status;

@@ -46,7 +46,8 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   double minX = input[0], maxX = minX, minY = input[1], maxY = minY;
   for (std::uint32_t k = 0; k < count; ++k) {
     const std::uint32_t i = large ? order[k] : k;
-    const double x = input[2 * static_cast<std::size_t>(i)], y = input[2 * static_cast<std::size_t>(i) + 1];
+    const double x = input[2 * static_cast<std::size_t>(i)],
+                 y = input[2 * static_cast<std::size_t>(i) + 1];
     p[2 * k] = x;
     p[2 * k + 1] = y;
     minX = std::min(minX, x);
@@ -114,7 +115,8 @@ std::vector<std::uint32_t> Delaunay::compactSmallBatch(std::uint32_t base, std::
     if (newId[k] != kGhost && newId[k] != base + k) moves.push_back({newId[k], base + k});
   std::sort(moves.begin(), moves.end());
   for (const auto& [to, from] : moves) {
-    const Hit h = locate(xy[2 * static_cast<std::size_t>(from)], xy[2 * static_cast<std::size_t>(from) + 1], true);
+    const Hit h = locate(xy[2 * static_cast<std::size_t>(from)],
+                         xy[2 * static_cast<std::size_t>(from) + 1], true);
     xy[2 * static_cast<std::size_t>(to)] = xy[2 * static_cast<std::size_t>(from)];
     xy[2 * static_cast<std::size_t>(to) + 1] = xy[2 * static_cast<std::size_t>(from) + 1];
     if (h.kind != Hit::Kind::Vertex) continue;
@@ -131,19 +133,23 @@ std::vector<std::uint32_t> Delaunay::compactSmallBatch(std::uint32_t base, std::
 void Delaunay::refreshGrid() {
   const std::uint32_t* tri = topo.tri.data();
   const double* p = xy.data();
-  grid_.rebuild(topo.slotCount(), [&](std::int32_t t, double& x, double& y) {
-    const std::uint32_t v = tri[3 * t];
-    if (v == kGhost) return false;  // a ghost triangle with the ghost at its first corner
-    x = p[2 * v];
-    y = p[2 * v + 1];
-    return true;
-  }, last_);
+  grid_.rebuild(
+      topo.slotCount(),
+      [&](std::int32_t t, double& x, double& y) {
+        const std::uint32_t v = tri[3 * t];
+        if (v == kGhost) return false;  // a ghost triangle with the ghost at its first corner
+        x = p[2 * v];
+        y = p[2 * v + 1];
+        return true;
+      },
+      last_);
 }
 
 // Gives the batch's new vertices ids in input order, duplicates removed, and rewrites the
 // triangles, the pending list and the coordinates to match.
 std::vector<std::uint32_t> Delaunay::renumberBatch(const double* input, std::uint32_t base,
-                                                   std::uint32_t count, std::vector<std::uint32_t>& order,
+                                                   std::uint32_t count,
+                                                   std::vector<std::uint32_t>& order,
                                                    std::uint32_t* ids) {
   // The insertion numbering is no longer needed: reuse its memory for the new ids, which
   // follow the first appearance of each vertex in the input.
@@ -157,7 +163,8 @@ std::vector<std::uint32_t> Delaunay::renumberBatch(const double* input, std::uin
       newId[v - base] = next++;
       // Coordinates back in input order, taken from the input itself.
       xy[2 * static_cast<std::size_t>(newId[v - base])] = input[2 * static_cast<std::size_t>(i)];
-      xy[2 * static_cast<std::size_t>(newId[v - base]) + 1] = input[2 * static_cast<std::size_t>(i) + 1];
+      xy[2 * static_cast<std::size_t>(newId[v - base]) + 1] =
+          input[2 * static_cast<std::size_t>(i) + 1];
     }
     ids[i] = newId[v - base];
   }
@@ -235,8 +242,8 @@ void Delaunay::dedupCollinear(std::uint32_t base, const std::vector<std::uint32_
   pending_.clear();
   for (std::size_t k = 0; k < sorted.size(); ++k) {
     const std::uint32_t v = sorted[k];
-    const bool repeat = k > 0 && p[2 * v] == p[2 * sorted[k - 1]] &&
-                        p[2 * v + 1] == p[2 * sorted[k - 1] + 1];
+    const bool repeat =
+        k > 0 && p[2 * v] == p[2 * sorted[k - 1]] && p[2 * v + 1] == p[2 * sorted[k - 1] + 1];
     if (!repeat) {
       pending_.push_back(v);
       continue;

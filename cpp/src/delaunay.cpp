@@ -27,13 +27,9 @@ std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
   batchStart_ = false;
   const Hit h = locate(x, y, fromGrid);
   switch (h.kind) {
-    case Hit::Kind::Vertex:
-      ++stats.duplicates;
-      return topo.tri[h.edge];
+    case Hit::Kind::Vertex: ++stats.duplicates; return topo.tri[h.edge];
     case Hit::Kind::Face:
-    case Hit::Kind::Outside:
-      insertInFace(h.edge / 3, v);
-      break;
+    case Hit::Kind::Outside: insertInFace(h.edge / 3, v); break;
     case Hit::Kind::Edge:
       if (topo.fixed[h.edge]) {
         // On a constrained edge: its halves carry what it carried. Inside a batch, v's id is
@@ -49,9 +45,9 @@ std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
       break;
     case Hit::Kind::Empty:
     case Hit::Kind::Failed:
-      error_ = {StatusCode::InternalError,
-                "point location failed for vertex " + std::to_string(v) + ": a broken triangulation",
-                v};
+      error_ = {
+          StatusCode::InternalError,
+          "point location failed for vertex " + std::to_string(v) + ": a broken triangulation", v};
       return kGhost;
   }
   ++stats.inserted;
@@ -146,8 +142,8 @@ bool Delaunay::isLocallyDelaunay(std::int32_t e) const {
     return !beyondGhostEdge(r, v);
   }
   const double* p = xy.data();
-  return incircle(p[2 * y], p[2 * y + 1], p[2 * x], p[2 * x + 1], p[2 * d], p[2 * d + 1],
-                  p[2 * v], p[2 * v + 1]) != Sign::Positive;
+  return incircle(p[2 * y], p[2 * y + 1], p[2 * x], p[2 * x + 1], p[2 * d], p[2 * d + 1], p[2 * v],
+                  p[2 * v + 1]) != Sign::Positive;
 }
 
 void Delaunay::legalize() {

@@ -70,8 +70,8 @@ class Delaunay {
 
  private:
   bool build(std::uint32_t a, std::uint32_t b, std::uint32_t c);
-  Status insertPending(std::uint32_t base, std::uint32_t count, const std::vector<std::uint32_t>& order,
-                       std::uint32_t* ids);
+  Status insertPending(std::uint32_t base, std::uint32_t count,
+                       const std::vector<std::uint32_t>& order, std::uint32_t* ids);
   void dedupCollinear(std::uint32_t base, const std::vector<std::uint32_t>& order,
                       std::uint32_t* ids);
   // Both return the new id of each working id base + k.

@@ -30,7 +30,8 @@ void sortByKey(std::vector<std::uint64_t>& items, std::vector<std::uint64_t>& sc
                std::size_t begin, std::size_t end) {
   // Below a few thousand items the radix passes' 64k-entry tables cost more than they save.
   if (end - begin < 4096) {
-    std::sort(items.begin() + static_cast<std::ptrdiff_t>(begin), items.begin() + static_cast<std::ptrdiff_t>(end));
+    std::sort(items.begin() + static_cast<std::ptrdiff_t>(begin),
+              items.begin() + static_cast<std::ptrdiff_t>(end));
     return;
   }
   std::vector<std::uint32_t> count(1u << 16);
@@ -44,7 +45,8 @@ void sortByKey(std::vector<std::uint64_t>& items, std::vector<std::uint64_t>& sc
       c = sum;
       sum += n;
     }
-    for (std::size_t i = begin; i < end; ++i) scratch[count[(items[i] >> shift) & 0xFFFF]++] = items[i];
+    for (std::size_t i = begin; i < end; ++i)
+      scratch[count[(items[i] >> shift) & 0xFFFF]++] = items[i];
     std::copy(scratch.begin() + begin, scratch.begin() + end, items.begin() + begin);
   }
 }
@@ -91,8 +93,8 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
   }
   for (std::uint32_t i = 0; i < count; ++i) {
     const std::uint32_t id = ids[i];
-    const std::uint64_t key =
-        hilbertIndex(toCell(xy[2 * id], minX, scale, top), toCell(xy[2 * id + 1], minY, scale, top), bits);
+    const std::uint64_t key = hilbertIndex(toCell(xy[2 * id], minX, scale, top),
+                                           toCell(xy[2 * id + 1], minY, scale, top), bits);
     items[i] = key << 32 | id;
   }
   if (order == InsertionOrder::Hilbert) {

@@ -28,7 +28,8 @@ std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill) {
       if (seen[next]) continue;
       seen[next] = 1;
       winding[next] = winding[t];
-      if (topo.fixed[e]) winding[next] += d.constraints.windingAcross(topo.tri[e], topo.tri[nextEdge(e)]);
+      if (topo.fixed[e])
+        winding[next] += d.constraints.windingAcross(topo.tri[e], topo.tri[nextEdge(e)]);
       queue.push_back(next);
     }
   }
@@ -39,7 +40,6 @@ std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill) {
 }
 
 }  // namespace
-
 
 namespace {
 

@@ -37,7 +37,8 @@ class PointGrid {
     std::vector<std::int32_t> cells(static_cast<std::size_t>(m) * m);
     for (std::uint32_t j = 0; j < m; ++j)
       for (std::uint32_t i = 0; i < m; ++i)
-        cells[static_cast<std::size_t>(j) * m + i] = cells_[static_cast<std::size_t>(j / 2) * m_ + i / 2];
+        cells[static_cast<std::size_t>(j) * m + i] =
+            cells_[static_cast<std::size_t>(j / 2) * m_ + i / 2];
     cells_.swap(cells);
     m_ = m;
   }

@@ -60,8 +60,9 @@ Hit Delaunay::walk(double x, double y, std::int32_t t) {
     const std::int32_t e0 = 3 * t;
     const std::uint32_t a = tri[e0], b = tri[e0 + 1], c = tri[e0 + 2];
     if (a != kGhost && b != kGhost && c != kGhost) {
-      const Sign o0 = e0 == entered ? Sign::Positive
-                                    : orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], x, y);
+      const Sign o0 = e0 == entered
+                          ? Sign::Positive
+                          : orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], x, y);
       if (o0 == Sign::Negative) {
         entered = adj[e0];
         t = entered / 3;

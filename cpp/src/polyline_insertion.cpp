@@ -14,14 +14,17 @@ namespace {
 
 Status checkPolyline(const PolylineView& line, std::size_t index) {
   if (line.count > 0 && line.xy == nullptr)
-    return {StatusCode::InvalidArgument, "polyline " + std::to_string(index) + ": null coordinates with a count", index};
+    return {StatusCode::InvalidArgument,
+            "polyline " + std::to_string(index) + ": null coordinates with a count", index};
   for (std::size_t i = 0; i < 2 * line.count; ++i) {
     const double v = line.xy[i];
     if (std::isfinite(v) && std::fabs(v) <= kMaxCoordinate) continue;
     Status s{StatusCode::InvalidCoordinate,
              "polyline " + std::to_string(index) + " point " + std::to_string(i / 2) + " has " +
-                 (i % 2 ? "y" : "x") + " = " + (std::isnan(v) ? std::string("NaN") : std::to_string(v)) +
-                 (std::isfinite(v) ? ": coordinates must lie within +-1e150" : ": coordinates must be finite numbers"),
+                 (i % 2 ? "y" : "x") + " = " +
+                 (std::isnan(v) ? std::string("NaN") : std::to_string(v)) +
+                 (std::isfinite(v) ? ": coordinates must lie within +-1e150"
+                                   : ": coordinates must be finite numbers"),
              index};
     s.segment = i / 2;
     return s;
@@ -33,7 +36,8 @@ Status unresolved(const Status& s, std::size_t polyline, std::size_t segment) {
   Status out = s;
   out.index = polyline;
   out.segment = segment;
-  out.message = "polyline " + std::to_string(polyline) + " segment " + std::to_string(segment) + ": " + s.message;
+  out.message = "polyline " + std::to_string(polyline) + " segment " + std::to_string(segment) +
+                ": " + s.message;
   return out;
 }
 
@@ -52,7 +56,8 @@ Status insertPendingSegments(Delaunay& d) {
   return Status::success();
 }
 
-Status Triangulation::insertPolyline(const double* xy, std::size_t count, std::uint32_t* vertexIds) {
+Status Triangulation::insertPolyline(const double* xy, std::size_t count,
+                                     std::uint32_t* vertexIds) {
   const PolylineView line{xy, count};
   return insertPolylines(&line, 1, vertexIds);
 }
@@ -106,9 +111,11 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
         src.segment = static_cast<std::uint32_t>(store.segments.size());
         src.winding = ring ? 1 : 0;
         src.polyline = id;
-        store.segments.push_back({line.xy[2 * k], line.xy[2 * k + 1], line.xy[2 * k + 2], line.xy[2 * k + 3]});
+        store.segments.push_back(
+            {line.xy[2 * k], line.xy[2 * k + 1], line.xy[2 * k + 2], line.xy[2 * k + 3]});
         if (!d.built()) {
-          store.pending.push_back({u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
+          store.pending.push_back(
+              {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
           continue;
         }
         const Status status = inserter.insert(u, v, src);
@@ -118,7 +125,8 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
   } catch (const std::bad_alloc&) {
     d.clear();
     state_->slotMapValid = false;
-    return {StatusCode::OutOfMemory, "out of memory: the input is too large for the available memory"};
+    return {StatusCode::OutOfMemory,
+            "out of memory: the input is too large for the available memory"};
   }
   return insertPendingSegments(d);
 }

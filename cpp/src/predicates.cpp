@@ -89,8 +89,8 @@ Sign incircle_from_coordinates(const double* v) {
   const int bd_len = two_two_product_diff(bx, dy, dx, by, bd);
   const int db_len = two_two_product_diff(dx, by, bx, dy, db);
 
-  auto sum3 = [](const double* p, int p_len, const double* q, int q_len, const double* r,
-                 int r_len, double* out) {
+  auto sum3 = [](const double* p, int p_len, const double* q, int q_len, const double* r, int r_len,
+                 double* out) {
     double pq[8];
     const int pq_len = expansion_sum(p, p_len, q, q_len, pq);
     return expansion_sum(pq, pq_len, r, r_len, out);
@@ -115,8 +115,7 @@ Sign incircle_from_coordinates(const double* v) {
 }
 
 Sign incircle_expansion(const double* v) {
-  double adx, adx_tail, ady, ady_tail, bdx, bdx_tail, bdy, bdy_tail, cdx, cdx_tail, cdy,
-      cdy_tail;
+  double adx, adx_tail, ady, ady_tail, bdx, bdx_tail, bdy, bdy_tail, cdx, cdx_tail, cdy, cdy_tail;
   two_diff(v[0], v[6], adx, adx_tail);
   two_diff(v[1], v[7], ady, ady_tail);
   two_diff(v[2], v[6], bdx, bdx_tail);
@@ -139,8 +138,8 @@ Sign incircle_expansion(const double* v) {
   if (tails_zero) return expansion_sign(det, det_len);
 
   // First-order effect of the tails on lift * cross, summed over the three points.
-  auto first_order = [](double xd, double xt, double yd, double yt, double pd, double pt,
-                        double qd, double qt, double rd, double rt, double sd, double st) {
+  auto first_order = [](double xd, double xt, double yd, double yt, double pd, double pt, double qd,
+                        double qt, double rd, double rt, double sd, double st) {
     const double lift = xd * xd + yd * yd;
     const double lift_tail = 2.0 * (xd * xt + yd * yt);
     const double cross = pd * qd - rd * sd;
@@ -149,17 +148,15 @@ Sign incircle_expansion(const double* v) {
   };
   double estimate_error;
   const double estimated = estimate(det, det_len, estimate_error);
-  const double corrected =
-      estimated + (first_order(adx, adx_tail, ady, ady_tail, bdx, bdx_tail, cdy, cdy_tail, cdx,
-                               cdx_tail, bdy, bdy_tail) +
-                   first_order(bdx, bdx_tail, bdy, bdy_tail, cdx, cdx_tail, ady, ady_tail, adx,
-                               adx_tail, cdy, cdy_tail) +
-                   first_order(cdx, cdx_tail, cdy, cdy_tail, adx, adx_tail, bdy, bdy_tail, bdx,
-                               bdx_tail, ady, ady_tail));
-  const double permanent =
-      (adx * adx + ady * ady) * (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) +
-      (bdx * bdx + bdy * bdy) * (std::fabs(cdx * ady) + std::fabs(adx * cdy)) +
-      (cdx * cdx + cdy * cdy) * (std::fabs(adx * bdy) + std::fabs(bdx * ady));
+  const double corrected = estimated + (first_order(adx, adx_tail, ady, ady_tail, bdx, bdx_tail,
+                                                    cdy, cdy_tail, cdx, cdx_tail, bdy, bdy_tail) +
+                                        first_order(bdx, bdx_tail, bdy, bdy_tail, cdx, cdx_tail,
+                                                    ady, ady_tail, adx, adx_tail, cdy, cdy_tail) +
+                                        first_order(cdx, cdx_tail, cdy, cdy_tail, adx, adx_tail,
+                                                    bdy, bdy_tail, bdx, bdx_tail, ady, ady_tail));
+  const double permanent = (adx * adx + ady * ady) * (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) +
+                           (bdx * bdx + bdy * bdy) * (std::fabs(cdx * ady) + std::fabs(adx * cdy)) +
+                           (cdx * cdx + cdy * cdy) * (std::fabs(adx * bdy) + std::fabs(bdx * ady));
   const double bound = (estimate_error + kIncircleTailBound * permanent) * kBoundMargin;
   if (corrected > bound) return Sign::Positive;
   if (-corrected > bound) return Sign::Negative;
@@ -173,34 +170,24 @@ Sign orient2d_exact(double ax, double ay, double bx, double by, double cx, doubl
   const RangeCheck range = check_range<kOrient2dLsbFloor, kOrient2dExponentCeiling>(v, 6);
   switch (range.range) {
     case Range::NotFinite:
-    case Range::AllZero:
-      return Sign::Zero;
-    case Range::TooWide:
-      return orient2d_bigint(v);
-    case Range::Shiftable:
-      shift_exponents(v, 6, range.shift);
-      break;
-    case Range::Inside:
-      break;
+    case Range::AllZero: return Sign::Zero;
+    case Range::TooWide: return orient2d_bigint(v);
+    case Range::Shiftable: shift_exponents(v, 6, range.shift); break;
+    case Range::Inside: break;
   }
   return orient2d_expansion(v);
 }
 
-Sign incircle_exact(double ax, double ay, double bx, double by, double cx, double cy,
-                    double dx, double dy) {
+Sign incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                    double dy) {
   double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
   const RangeCheck range = check_range<kIncircleLsbFloor, kIncircleExponentCeiling>(v, 8);
   switch (range.range) {
     case Range::NotFinite:
-    case Range::AllZero:
-      return Sign::Zero;
-    case Range::TooWide:
-      return incircle_bigint(v);
-    case Range::Shiftable:
-      shift_exponents(v, 8, range.shift);
-      break;
-    case Range::Inside:
-      break;
+    case Range::AllZero: return Sign::Zero;
+    case Range::TooWide: return incircle_bigint(v);
+    case Range::Shiftable: shift_exponents(v, 8, range.shift); break;
+    case Range::Inside: break;
   }
   return incircle_expansion(v);
 }

@@ -9,7 +9,6 @@
 
 namespace geocdt {
 
-
 Status SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src) {
   pieces_.clear();
   pieces_.push_back({u, v, src});
@@ -18,7 +17,8 @@ Status SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSourc
   const std::uint64_t budget = 1000 + 8 * static_cast<std::uint64_t>(d_.vertexCount());
   for (std::uint64_t round = 0; !pieces_.empty(); ++round) {
     if (round > budget)
-      return {StatusCode::ConstraintUnresolved, "the segment could not be resolved against the constraints it crosses"};
+      return {StatusCode::ConstraintUnresolved,
+              "the segment could not be resolved against the constraints it crosses"};
     const Piece piece = pieces_.back();
     if (piece.a == piece.b) {
       pieces_.pop_back();
@@ -47,7 +47,6 @@ Status SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSourc
   return Status::success();
 }
 
-
 std::int32_t SegmentInserter::edgeOutOf(std::uint32_t a) {
   // The piece before usually ended at a: its edge's twin starts here.
   if (hint_ >= 0 && hint_ < 3 * d_.topo.slotCount() && d_.topo.tri[hint_] == a) return hint_;
@@ -75,7 +74,9 @@ SegmentInserter::Walk SegmentInserter::walk(std::uint32_t a, std::uint32_t b) {
     const double c = p[2 * x + axis], s = axis == 0 ? ax : ay;
     return increasing ? c > s : c < s;
   };
-  const auto side = [&](std::uint32_t x) { return orient2d(ax, ay, bx, by, p[2 * x], p[2 * x + 1]); };
+  const auto side = [&](std::uint32_t x) {
+    return orient2d(ax, ay, bx, by, p[2 * x], p[2 * x + 1]);
+  };
 
   crossed_.clear();
   const std::int32_t start = edgeOutOf(a);
@@ -196,7 +197,8 @@ namespace {
 // 1e67-long segment, one rounding of s moved the point by 1e47.
 bool lineCrossing(const InputSegment& ab, const InputSegment& cd, double& x, double& y) {
   using L = long double;
-  const L ex = (L)ab.bx - ab.ax, ey = (L)ab.by - ab.ay, fx = (L)cd.bx - cd.ax, fy = (L)cd.by - cd.ay;
+  const L ex = (L)ab.bx - ab.ax, ey = (L)ab.by - ab.ay, fx = (L)cd.bx - cd.ax,
+          fy = (L)cd.by - cd.ay;
   const L denominator = ex * fy - ey * fx;
   const L lengthE = std::hypot(ex, ey), lengthF = std::hypot(fx, fy);
   L bestError = 0, bestX = 0, bestY = 0;
@@ -205,7 +207,8 @@ bool lineCrossing(const InputSegment& ab, const InputSegment& cd, double& x, dou
   const auto tryPair = [&](L px, L py, L dx, L dy, L length, L qx, L qy, L gx, L gy, L sign) {
     const L u = (qx - px) * gy, v = (qy - py) * gx;
     const L s = sign * (u - v) / denominator;
-    const L error = (std::fabs(u) + std::fabs(v)) / std::fabs(denominator) * length + std::fabs(s) * length;
+    const L error =
+        (std::fabs(u) + std::fabs(v)) / std::fabs(denominator) * length + std::fabs(s) * length;
     if (!(found && bestError <= error)) {
       found = true;
       bestError = error;
@@ -250,7 +253,8 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     return (t > 0) - (t < 0);
   };
   // Between lo and hi along g's direction: beyond one and short of the other.
-  const auto between = [&](const InputSegment& g, double x, double y, std::uint32_t lo, std::uint32_t hi) {
+  const auto between = [&](const InputSegment& g, double x, double y, std::uint32_t lo,
+                           std::uint32_t hi) {
     return beyond(g, x, y, lo) * beyond(g, x, y, hi) < 0;
   };
   const auto fits = [&](double x, double y) {
@@ -266,13 +270,16 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   // one within the other's span and nearest to its line.
   const auto meetAtAnEnd = [&]() -> std::uint32_t {
     const auto offLine = [&](std::uint32_t v, std::uint32_t u0, std::uint32_t u1) {
-      const long double dx = (long double)p[2 * u1] - p[2 * u0], dy = (long double)p[2 * u1 + 1] - p[2 * u0 + 1];
-      const long double cross = dx * ((long double)p[2 * v + 1] - p[2 * u0 + 1]) - dy * ((long double)p[2 * v] - p[2 * u0]);
+      const long double dx = (long double)p[2 * u1] - p[2 * u0],
+                        dy = (long double)p[2 * u1 + 1] - p[2 * u0 + 1];
+      const long double cross = dx * ((long double)p[2 * v + 1] - p[2 * u0 + 1]) -
+                                dy * ((long double)p[2 * v] - p[2 * u0]);
       return std::fabs(cross) / std::sqrt(dx * dx + dy * dy);
     };
     std::uint32_t best = kGhost;
     long double bestOff = 0;
-    const auto consider = [&](std::uint32_t v, const InputSegment& g, std::uint32_t u0, std::uint32_t u1) {
+    const auto consider = [&](std::uint32_t v, const InputSegment& g, std::uint32_t u0,
+                              std::uint32_t u1) {
       // Ends count as within: ends that nearly coincide must be able to meet.
       if (beyond(g, p[2 * v], p[2 * v + 1], u0) * beyond(g, p[2 * v], p[2 * v + 1], u1) > 0) return;
       const long double off = offLine(v, u0, u1);
@@ -287,7 +294,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     consider(l, ab, piece.a, piece.b);
     if (best == kGhost) best = distance(r) <= distance(l) ? r : l;
     if (best == r || best == l) return best;  // the piece bends through it
-    const std::int32_t e = findEdge(r, l);  // the crossed constraint bends through a piece end
+    const std::int32_t e = findEdge(r, l);    // the crossed constraint bends through a piece end
     if (e >= 0) {
       const EdgeSource moved = store.take(r, l);
       topo.fixed[e] = topo.fixed[topo.adj[e]] = 0;
@@ -300,7 +307,8 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   };
   // Two input segments meet at one vertex: once their crossing has one, later crossings of
   // their pieces (after rounding bent them) go there too, so no run of ever new vertices.
-  const std::uint64_t pair = ConstraintStore::key(piece.src.segment, crossedSource ? crossedSource->segment : kGhost);
+  const std::uint64_t pair =
+      ConstraintStore::key(piece.src.segment, crossedSource ? crossedSource->segment : kGhost);
   std::uint32_t w = kGhost;
   if (const std::uint32_t* met = met_.find(pair); met && *met < d_.vertexCount()) {
     w = *met;

@@ -50,7 +50,8 @@ class SegmentInserter {
   std::vector<std::int32_t> crossed_, touched_;
   std::deque<QueuedEdge> queue_;
   std::int32_t hint_ = -1;
-  EdgeMap<std::uint32_t> met_;  // input segment pair -> the vertex where they cross  // a half-edge out of where the next piece likely starts
+  EdgeMap<std::uint32_t> met_;  // input segment pair -> the vertex where they cross  // a half-edge
+                                // out of where the next piece likely starts
 };
 
 }  // namespace geocdt

@@ -14,9 +14,9 @@ inline std::int32_t nextEdge(std::int32_t e) { return e % 3 == 2 ? e - 2 : e + 1
 inline std::int32_t prevEdge(std::int32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
 
 struct Topology {
-  std::vector<std::uint32_t> tri;    // 3 vertex ids per slot
-  std::vector<std::int32_t> adj;     // twin of each half-edge
-  std::vector<std::uint8_t> fixed;   // 1 when the half-edge is constrained
+  std::vector<std::uint32_t> tri;   // 3 vertex ids per slot
+  std::vector<std::int32_t> adj;    // twin of each half-edge
+  std::vector<std::uint8_t> fixed;  // 1 when the half-edge is constrained
 
   std::int32_t slotCount() const { return static_cast<std::int32_t>(tri.size() / 3); }
   bool isGhost(std::int32_t t) const {

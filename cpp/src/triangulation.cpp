@@ -29,13 +29,13 @@ Status checkCoordinates(const double* xy, std::size_t count, const char* what) {
 }
 
 Status outOfMemory() {
-  return {StatusCode::OutOfMemory, "out of memory: the input is too large for the available memory"};
+  return {StatusCode::OutOfMemory,
+          "out of memory: the input is too large for the available memory"};
 }
 
 }  // namespace
 
-Triangulation::Triangulation(const Options& options)
-    : state_(std::make_unique<State>(options)) {}
+Triangulation::Triangulation(const Options& options) : state_(std::make_unique<State>(options)) {}
 Triangulation::~Triangulation() = default;
 Triangulation::Triangulation(Triangulation&&) noexcept = default;
 Triangulation& Triangulation::operator=(Triangulation&&) noexcept = default;
@@ -46,7 +46,9 @@ const Stats& Triangulation::stats() const {
   state_->delaunay.stats.gridSize = state_->delaunay.gridSize();
   return state_->delaunay.stats;
 }
-std::size_t Triangulation::polylineCount() const { return state_->delaunay.constraints.polylineCount; }
+std::size_t Triangulation::polylineCount() const {
+  return state_->delaunay.constraints.polylineCount;
+}
 
 std::size_t Triangulation::triangleCount() const {
   const Topology& topo = state_->delaunay.topo;
@@ -117,9 +119,7 @@ Location Triangulation::locate(double x, double y) const {
       loc.vertices[1] = topo.tri[nextEdge(e)];
       if (topo.isGhost(e / 3)) e = topo.adj[e];
       break;
-    default:
-      loc.kind = Location::Kind::Face;
-      break;
+    default: loc.kind = Location::Kind::Face; break;
   }
   loc.triangle = state_->slotToTriangle[e / 3];
   if (loc.kind == Location::Kind::Face)
@@ -151,7 +151,8 @@ Status triangulate(const double* xy, std::size_t count, const PolylineView* poly
     for (std::size_t i = 0; i < polylineCount; ++i) total += polylines[i].count;
     ids.resize(total);
     s = t.insertPoints(xy, count, ids.data());
-    if (s.ok() && polylineCount > 0) s = t.insertPolylines(polylines, polylineCount, ids.data() + count);
+    if (s.ok() && polylineCount > 0)
+      s = t.insertPolylines(polylines, polylineCount, ids.data() + count);
     if (!s.ok()) return s;
     out = t.release(meshOptions);
   } catch (const std::bad_alloc&) {

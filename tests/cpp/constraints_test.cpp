@@ -24,12 +24,14 @@ Result run(const std::vector<double>& points, const Polylines& lines, const Mesh
   std::vector<PolylineView> views;
   for (const auto& l : lines) views.push_back({l.data(), l.size() / 2});
   Result r;
-  r.status = triangulate(points.data(), points.size() / 2, views.data(), views.size(), options, mo, r.mesh, &r.ids);
+  r.status = triangulate(points.data(), points.size() / 2, views.data(), views.size(), options, mo,
+                         r.mesh, &r.ids);
   return r;
 }
 
 // Runs the whole checker; returns "" when everything holds.
-std::string check(const std::vector<double>& points, const Polylines& lines, const Options& options = {}) {
+std::string check(const std::vector<double>& points, const Polylines& lines,
+                  const Options& options = {}) {
   Result r = run(points, lines, {}, options);
   if (!r.status.ok()) return "status: " + r.status.message;
   std::vector<double> input(points);
@@ -68,8 +70,9 @@ TEST(Constraints, StarOf64SegmentsThroughOnePoint) {
 }
 
 TEST(Constraints, CollinearOverlappingChains) {
-  const Polylines lines = {{0, 0, 10, 0}, {2, 0, 5, 0, 12, 0}, {-3, 0, 1, 0, 1, 0, 7, 0}, {0, 0, 10, 0},
-                           {5, -5, 5, 5}, {0, 0, 5, 5, 10, 10}, {3, 3, 8, 8}};
+  const Polylines lines = {{0, 0, 10, 0}, {2, 0, 5, 0, 12, 0}, {-3, 0, 1, 0, 1, 0, 7, 0},
+                           {0, 0, 10, 0}, {5, -5, 5, 5},       {0, 0, 5, 5, 10, 10},
+                           {3, 3, 8, 8}};
   EXPECT_EQ(check({-5, -5, 15, 8, 4, 7, 6, -2}, lines), "");
 }
 
@@ -84,7 +87,8 @@ TEST(Constraints, RepeatedPointsAndZeroLengthSegments) {
 TEST(Constraints, ThousandsOfRandomCrossingSegments) {
   testing::Random r(9);
   Polylines lines;
-  for (int i = 0; i < 1500; ++i) lines.push_back({r.uniform(), r.uniform(), r.uniform(), r.uniform()});
+  for (int i = 0; i < 1500; ++i)
+    lines.push_back({r.uniform(), r.uniform(), r.uniform(), r.uniform()});
   EXPECT_EQ(check(testing::uniformPoints(1000, 4), lines), "");
 }
 
@@ -104,8 +108,10 @@ TEST(Constraints, RandomPolylinesScaledAndOffset) {
   }
   const std::vector<double> pts = testing::uniformPoints(500, 5);
   for (double scale = 1e-9; scale <= 1.01e9; scale *= 100)
-    EXPECT_EQ(check(testing::transformed(pts, scale, 0, 0), scaled(lines, scale, 0, 0)), "") << scale;
-  EXPECT_EQ(check(testing::transformed(pts, 0.37, 1.6e7, 4.2e6), scaled(lines, 0.37, 1.6e7, 4.2e6)), "");
+    EXPECT_EQ(check(testing::transformed(pts, scale, 0, 0), scaled(lines, scale, 0, 0)), "")
+        << scale;
+  EXPECT_EQ(check(testing::transformed(pts, 0.37, 1.6e7, 4.2e6), scaled(lines, 0.37, 1.6e7, 4.2e6)),
+            "");
   EXPECT_EQ(check(testing::transformed(pts, 1e-6, 1e7, -3e7), scaled(lines, 1e-6, 1e7, -3e7)), "");
 }
 
@@ -113,10 +119,10 @@ TEST(Constraints, RandomPolylinesScaledAndOffset) {
 // share vertices and edges.
 Polylines nestedRings() {
   return {
-      {0, 0, 10, 0, 10, 10, 0, 10, 0, 0},  // outer
-      {2, 2, 8, 2, 8, 8, 2, 8, 2, 2},      // hole
-      {3, 3, 7, 3, 7, 7, 3, 7, 3, 3},      // island in the hole
-      {4, 4, 6, 4, 6, 6, 4, 6, 4, 4},      // lake in the island
+      {0, 0, 10, 0, 10, 10, 0, 10, 0, 0},     // outer
+      {2, 2, 8, 2, 8, 8, 2, 8, 2, 2},         // hole
+      {3, 3, 7, 3, 7, 7, 3, 7, 3, 3},         // island in the hole
+      {4, 4, 6, 4, 6, 6, 4, 6, 4, 4},         // lake in the island
       {10, 0, 14, 0, 14, 10, 10, 10, 10, 0},  // shares an edge with the outer ring
       {14, 10, 16, 12, 12, 12, 14, 10},       // shares a vertex
       {0, 0, 10, 0, 5, -4, 0, 0},             // shares an edge, other side
@@ -133,7 +139,8 @@ void expectInsideMatchesOracle(const Polylines& rings, const Mesh& m) {
       y += m.points[2 * m.triangles[3 * t + k] + 1] / 3;
     }
     if (testing::distanceToPolylines(rings, x, y) < 1e-9) continue;
-    EXPECT_EQ(m.inside[t] != 0, testing::insideEvenOdd(rings, x, y)) << "triangle " << t << " at " << x << "," << y;
+    EXPECT_EQ(m.inside[t] != 0, testing::insideEvenOdd(rings, x, y))
+        << "triangle " << t << " at " << x << "," << y;
     ++compared;
   }
   EXPECT_GT(compared, 0);
@@ -203,9 +210,11 @@ TEST(Constraints, ProvenanceListsEveryPolylineOfAnEdge) {
     const std::uint32_t e = m.constraintEdges[i];
     ASSERT_TRUE(m.constrained[e]);
     const std::uint32_t u = m.triangles[e], v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
-    const double x0 = std::min(m.points[2 * u], m.points[2 * v]), x1 = std::max(m.points[2 * u], m.points[2 * v]);
+    const double x0 = std::min(m.points[2 * u], m.points[2 * v]),
+                 x1 = std::max(m.points[2 * u], m.points[2 * v]);
     const bool horizontal = m.points[2 * u + 1] == 0 && m.points[2 * v + 1] == 0;
-    std::vector<std::uint32_t> src(m.sources.begin() + m.sourceOffsets[i], m.sources.begin() + m.sourceOffsets[i + 1]);
+    std::vector<std::uint32_t> src(m.sources.begin() + m.sourceOffsets[i],
+                                   m.sources.begin() + m.sourceOffsets[i + 1]);
     std::sort(src.begin(), src.end());
     std::vector<std::uint32_t> expected;
     if (horizontal && x1 <= 5) expected.push_back(0);
@@ -253,7 +262,8 @@ TEST(Constraints, PointsLandingOnConstraintsKeepProvenanceAndInside) {
     ASSERT_TRUE(t.insertPolyline(line.data(), 2).ok());
     std::vector<double> xy = testing::transformed(testing::uniformPoints(extra, 3), 20, -5, -5);
     for (int k = 1; k < 20; ++k)
-      for (const double v : {k * 0.5, 0.0, 10.0, k * 0.5, k * 0.5, 10.0, 0.0, k * 0.5}) xy.push_back(v);
+      for (const double v : {k * 0.5, 0.0, 10.0, k * 0.5, k * 0.5, 10.0, 0.0, k * 0.5})
+        xy.push_back(v);
     ASSERT_TRUE(t.insertPoints(xy.data(), xy.size() / 2).ok());
     MeshOptions mo;
     mo.insideFlags = true;
@@ -273,7 +283,8 @@ TEST(Constraints, PointsLandingOnConstraintsKeepProvenanceAndInside) {
       const std::uint32_t e = m.constraintEdges[i];
       const std::uint32_t u = m.triangles[e], v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
       const bool horizontalLine = m.points[2 * u + 1] == 5 && m.points[2 * v + 1] == 5;
-      const std::uint32_t expected = horizontalLine && !(m.points[2 * u] == 0 || m.points[2 * u] == 10) ? 1 : 0;
+      const std::uint32_t expected =
+          horizontalLine && !(m.points[2 * u] == 0 || m.points[2 * u] == 10) ? 1 : 0;
       ASSERT_EQ(m.sourceOffsets[i + 1] - m.sourceOffsets[i], 1u);
       EXPECT_EQ(m.sources[m.sourceOffsets[i]], horizontalLine ? 1u : expected);
       onRing += !horizontalLine;
@@ -292,7 +303,9 @@ TEST(Constraints, FuzzCrossingOneUlpFromASegmentEnd) {
 
 TEST(Constraints, FuzzNearlyCollinearChainThatBacktracks) {
   // Collinear within rounding: the crossing of the lines lies far outside both pieces.
-  EXPECT_EQ(check({}, {{0, 0, 9.5999999999999996, 12.800000000000001, 5.3999999999999995, 7.2000000000000002, 3, 4}}), "");
+  EXPECT_EQ(check({}, {{0, 0, 9.5999999999999996, 12.800000000000001, 5.3999999999999995,
+                        7.2000000000000002, 3, 4}}),
+            "");
 }
 
 TEST(Constraints, FuzzTinyRingLeavesNoNonDelaunayEdge) {
@@ -313,7 +326,8 @@ TEST(Constraints, FuzzTinyRingLeavesNoNonDelaunayEdge) {
 TEST(Constraints, FuzzNearDuplicateBacktrackKeepsInsideFlags) {
   // A ring that runs out to a near-duplicate of its first point and back: the triangle it
   // encloses is inside.
-  std::vector<double> ring = {31, 13, 1e-300, 13, 1e-300, 1e-300, 31.000000000000004, 13.000000000000002};
+  std::vector<double> ring = {
+      31, 13, 1e-300, 13, 1e-300, 1e-300, 31.000000000000004, 13.000000000000002};
   for (int k = 0; k < 10; ++k) {
     ring.push_back(1e-300);
     ring.push_back(1e-300);
@@ -331,8 +345,8 @@ TEST(Constraints, FuzzNearDuplicateBacktrackKeepsInsideFlags) {
 TEST(Constraints, FuzzTinyBowtieRingResolves) {
   // Points a few ulps apart: rerouted pieces kept crossing at ever new points until each
   // pair of input segments was given one meeting vertex.
-  std::vector<double> ring = {1.0000000000268119, -12345.677999999991, 0.99999999999974531, -12345.678,
-                              1.0000000000023648, -12345.677999999998};
+  std::vector<double> ring = {1.0000000000268119, -12345.677999999991, 0.99999999999974531,
+                              -12345.678,         1.0000000000023648,  -12345.677999999998};
   for (int k = 0; k < 13; ++k) {
     ring.push_back(1);
     ring.push_back(-12345.678);
@@ -350,12 +364,20 @@ TEST(Constraints, FuzzTinyBowtieRingResolves) {
 TEST(Constraints, FuzzTinyCoordinatesAndHugeSegments) {
   // Products of 1e-171 coordinates underflow in double; a 6e76-long segment must not make
   // every vertex "near" a crossing with a short one.
-  std::vector<double> ring = {-7.4036710823662963e-171, -7.4036710823662963e-171,
-                              -7.4036710823662963e-171, 2.2301954389232176e-266,
-                              1.4464930455059793e-208, -7.2663735934183412e-171, 0, 0,
-                              -7.4036710823662963e-171, -7.4036710823662963e-171};
+  std::vector<double> ring = {-7.4036710823662963e-171,
+                              -7.4036710823662963e-171,
+                              -7.4036710823662963e-171,
+                              2.2301954389232176e-266,
+                              1.4464930455059793e-208,
+                              -7.2663735934183412e-171,
+                              0,
+                              0,
+                              -7.4036710823662963e-171,
+                              -7.4036710823662963e-171};
   EXPECT_EQ(check({}, {ring}), "");
-  EXPECT_EQ(check({}, {{11, 10, -6.1514547407324216e+76, 20.000000000000224}, {1, 0, 1, 20.000000014668331}}), "");
+  EXPECT_EQ(check({}, {{11, 10, -6.1514547407324216e+76, 20.000000000000224},
+                       {1, 0, 1, 20.000000014668331}}),
+            "");
 }
 
 TEST(Constraints, FuzzCrossingMeasuredFromTheNearEnd) {
@@ -363,9 +385,11 @@ TEST(Constraints, FuzzCrossingMeasuredFromTheNearEnd) {
   // end of the long one, the crossing landed 2.6e47 off the short one.
   Options input;
   input.order = InsertionOrder::Input;
-  std::vector<double> line = {7.4278671450229415e+49, 7.3787698243938564e+49, 7.4278671450229415e+49, 0,
-                              7.4278671450230972e+49, 7.4278671450229415e+49, 1.3101507285431828e+67,
-                              3.4034399518190365e-304, 2.8205219589785083e-319, 0};
+  std::vector<double> line = {7.4278671450229415e+49,  7.3787698243938564e+49,
+                              7.4278671450229415e+49,  0,
+                              7.4278671450230972e+49,  7.4278671450229415e+49,
+                              1.3101507285431828e+67,  3.4034399518190365e-304,
+                              2.8205219589785083e-319, 0};
   line.insert(line.end(), {0, 0, 0, 0});
   EXPECT_EQ(check({}, {line}, input), "");
   EXPECT_EQ(check({}, {line}), "");
@@ -376,8 +400,9 @@ TEST(Constraints, FuzzCrossingNextToTheEndOfALongSegment) {
   // compared equal in long double, so the crossing was routed through that end instead.
   Options input;
   input.order = InsertionOrder::Input;
-  const std::vector<double> line = {2.0722615146145237e-315, 4.861730685829017e-63, -3.0382876424295149e-182,
-                                    -3.0382887915688546e-182, -4.6432411455780696e-187, -2.3535810106819982e-185,
+  const std::vector<double> line = {2.0722615146145237e-315,  4.861730685829017e-63,
+                                    -3.0382876424295149e-182, -3.0382887915688546e-182,
+                                    -4.6432411455780696e-187, -2.3535810106819982e-185,
                                     -1.0900715865557387e-175, 8.1086053795465383e-320};
   EXPECT_EQ(check({}, {line}, input), "");
 }
@@ -388,20 +413,22 @@ TEST(Constraints, FuzzCrossingNotMeasuredAcrossACancellation) {
   // long segment.
   Options input;
   input.order = InsertionOrder::Input;
-  std::vector<double> ring = {-1.030730845916203e-279, 2.1250724792965388, 4.7783097445378864e-299,
-                              7.291122070187139e-304, 1.6628243732494243e-316, 0};
+  std::vector<double> ring = {-1.030730845916203e-279, 2.1250724792965388,
+                              4.7783097445378864e-299, 7.291122070187139e-304,
+                              1.6628243732494243e-316, 0};
   ring.insert(ring.end(), {0, 0, -1.030730845916203e-279, 2.1250724792965388});
-  const Polylines lines = {{11, 5.4323924391225434e-312, 2.064330555345791e-310, -1.0961440264327563e+141},
-                           {5.2408767532627783e-299, 0, 7.2913862538674818e-304, 1.090607744992117e-299},
-                           ring};
+  const Polylines lines = {
+      {11, 5.4323924391225434e-312, 2.064330555345791e-310, -1.0961440264327563e+141},
+      {5.2408767532627783e-299, 0, 7.2913862538674818e-304, 1.090607744992117e-299},
+      ring};
   EXPECT_EQ(check({}, lines, input), "");
 }
 
 TEST(Constraints, FuzzSubnormalCrossingGetsItsOwnVertex) {
   // Two segments among subnormals cross 1.6e-316 from an end: the crossing is a vertex, not
   // a bend through that end (which lies 1.2e-316 off the other segment).
-  const Polylines lines = {{3.2049228321345884e-294, 3.4732827106519577e-310, 8.2890618685587619e-317,
-                            2.4879282803014709e-316},
+  const Polylines lines = {{3.2049228321345884e-294, 3.4732827106519577e-310,
+                            8.2890618685587619e-317, 2.4879282803014709e-316},
                            {1.7767971548758891e-307, 1.8026574931812249e-307, 0, 0}};
   EXPECT_EQ(check({}, lines), "");
   const Result r = run({}, lines);

@@ -13,8 +13,8 @@
 namespace geocdt {
 namespace {
 
-using testing::checkTriangulation;
 using testing::CheckOptions;
+using testing::checkTriangulation;
 
 struct Built {
   Status status;
@@ -49,8 +49,8 @@ TEST(Delaunay, FewPointsGiveNoTriangles) {
 }
 
 TEST(Delaunay, ThreePointsInEitherOrientation) {
-  for (const std::vector<double>& xy : {std::vector<double>{0, 0, 1, 0, 0, 1},
-                                        std::vector<double>{0, 0, 0, 1, 1, 0}}) {
+  for (const std::vector<double>& xy :
+       {std::vector<double>{0, 0, 1, 0, 0, 1}, std::vector<double>{0, 0, 0, 1, 1, 0}}) {
     Built b = build(xy);
     ASSERT_TRUE(b.status.ok());
     EXPECT_EQ(b.mesh.triangles.size(), 3u);
@@ -104,7 +104,8 @@ TEST(Delaunay, HullWithManyCollinearPoints) {
   // The border of a lattice: 4 long collinear sides, plus a few interior points.
   std::vector<double> xy;
   for (int i = 0; i <= 200; ++i) {
-    for (const double v : {0.0 + i, 0.0, 200.0, 0.0 + i, 0.0 + i, 200.0, 0.0, 0.0 + i}) xy.push_back(v);
+    for (const double v : {0.0 + i, 0.0, 200.0, 0.0 + i, 0.0 + i, 200.0, 0.0, 0.0 + i})
+      xy.push_back(v);
   }
   for (const double v : {50.5, 70.25, 120.0, 3.0, 199.0, 199.0}) xy.push_back(v);
   Built b = build(xy);
@@ -128,7 +129,8 @@ TEST(Delaunay, EveryOrderAndLocateStart) {
 
 TEST(Delaunay, ScaledFrom1e_9To1e9) {
   const std::vector<double> sets[] = {testing::uniformPoints(3000, 8), testing::latticePoints(40),
-                                      testing::circlePoints(500), testing::gaussianClusters(3000, 9)};
+                                      testing::circlePoints(500),
+                                      testing::gaussianClusters(3000, 9)};
   for (const auto& xy : sets)
     for (double scale = 1e-9; scale <= 1e9 * 1.01; scale *= 10)
       EXPECT_EQ(check(testing::transformed(xy, scale, 0, 0)), "") << "scale " << scale;
@@ -174,7 +176,8 @@ TEST(Delaunay, IncrementalBatchesKeepIdsAndStayValid) {
   std::vector<std::uint32_t> ids2(more.size() / 2);
   ASSERT_TRUE(t.insertPoints(more.data(), more.size() / 2, ids2.data()).ok());
   const Mesh second = t.mesh();
-  for (std::size_t i = 0; i < first.points.size(); ++i) EXPECT_EQ(first.points[i], second.points[i]);
+  for (std::size_t i = 0; i < first.points.size(); ++i)
+    EXPECT_EQ(first.points[i], second.points[i]);
   std::vector<double> input(all.begin(), all.begin() + 6000);
   input.insert(input.end(), more.begin(), more.end());
   std::vector<std::uint32_t> map(ids);
@@ -198,7 +201,8 @@ TEST(Delaunay, ManySmallBatchesWithDuplicates) {
     std::vector<double> xy;
     for (int k = 0; k < 12; ++k) {
       // Each point is new, a repeat of an earlier point, or a repeat within the batch.
-      const std::size_t pick = r.next() % 3 == 0 ? r.next() % (input.size() / 2) : 1000 + r.next() % 2000;
+      const std::size_t pick =
+          r.next() % 3 == 0 ? r.next() % (input.size() / 2) : 1000 + r.next() % 2000;
       const double* src = k > 0 && r.next() % 4 == 0 ? &xy[xy.size() - 2] : &pool[2 * pick];
       const double x = src[0], y = src[1];
       xy.push_back(x);
@@ -239,7 +243,8 @@ TEST(Delaunay, LocateAgreesWithExactPredicates) {
   testing::Random r(5);
   for (int i = 0; i < 3000; ++i) {
     // Queries on vertices, on edges (half-integers) and in faces, inside and outside.
-    const double x = std::floor(r.uniform() * 70 - 20) / 2, y = std::floor(r.uniform() * 70 - 20) / 2;
+    const double x = std::floor(r.uniform() * 70 - 20) / 2,
+                 y = std::floor(r.uniform() * 70 - 20) / 2;
     const Location loc = t.locate(x, y);
     const bool inside = x >= 0 && x <= 29 && y >= 0 && y <= 29;
     if (!inside) {

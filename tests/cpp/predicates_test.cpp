@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
-#include <string>
 #include <limits>
 #include <random>
+#include <string>
 
 #include "geocdt/predicates.h"
 #include "predicates_bigint.h"
@@ -34,8 +34,10 @@ mpq_class exact(double v) {
   const double fraction = std::frexp(v, &exponent);  // |fraction| in [0.5, 1)
   mpq_class q(mpz_class(std::ldexp(fraction, 53)));  // an integer below 2^53: exact
   exponent -= 53;
-  if (exponent >= 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), exponent);
-  else mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), -exponent);
+  if (exponent >= 0)
+    mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), exponent);
+  else
+    mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), -exponent);
   return q;
 }
 
@@ -92,9 +94,11 @@ struct Predicate {
 };
 
 const Predicate kOrient2d = {
-    6, [](const double* v) { return orient2d(v[0], v[1], v[2], v[3], v[4], v[5]); },
+    6,
+    [](const double* v) { return orient2d(v[0], v[1], v[2], v[3], v[4], v[5]); },
     [](const double* v) { return detail::orient2d_exact(v[0], v[1], v[2], v[3], v[4], v[5]); },
-    detail::orient2d_bigint, oracle_orient2d,
+    detail::orient2d_bigint,
+    oracle_orient2d,
     [](const double* v) { return (v[0] - v[4]) * (v[3] - v[5]) - (v[1] - v[5]) * (v[2] - v[4]); },
     [](const double* v) { return detail::check_range<kOrientFloor, kOrientCeiling>(v, 6); }};
 
@@ -104,7 +108,8 @@ const Predicate kIncircle = {
     [](const double* v) {
       return detail::incircle_exact(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
     },
-    detail::incircle_bigint, oracle_incircle,
+    detail::incircle_bigint,
+    oracle_incircle,
     [](const double* v) {
       const double adx = v[0] - v[6], ady = v[1] - v[7], bdx = v[2] - v[6];
       const double bdy = v[3] - v[7], cdx = v[4] - v[6], cdy = v[5] - v[7];
@@ -152,7 +157,7 @@ Tally check_incircle(int count, std::uint64_t seed, const Maker& make) {
 // ---- Generators -------------------------------------------------------------------------
 
 double unit(Rng& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }  // [0, 1)
-double symmetric(Rng& rng) { return 2.0 * unit(rng) - 1.0; }                 // [-1, 1)
+double symmetric(Rng& rng) { return 2.0 * unit(rng) - 1.0; }                  // [-1, 1)
 int pick(Rng& rng, int n) { return static_cast<int>(rng() % static_cast<std::uint64_t>(n)); }
 
 double nudge(double x, int ulps) {
@@ -231,7 +236,7 @@ void exact_line(Rng& rng, double* v, int shift) {
 // Exactly cocircular: four distinct integer points at distance 5, 13, 25 or 65 from an
 // integer centre (Pythagorean triples, every sign and swap), then scaled by 2^shift.
 void exact_circle(Rng& rng, double* v, int shift, bool centred = false) {
-  static const int triples[][3] = {{3, 4, 5}, {5, 12, 13}, {7, 24, 25}, {15, 20, 25},
+  static const int triples[][3] = {{3, 4, 5},    {5, 12, 13},  {7, 24, 25},  {15, 20, 25},
                                    {16, 63, 65}, {33, 56, 65}, {25, 60, 65}, {39, 52, 65}};
   const auto& t = triples[pick(rng, 8)];
   double points[12][2];
@@ -369,14 +374,13 @@ TEST(Predicates, NearDegenerateAtLargeOffsets) {
     double x, y;
     int shift;  // the spacing of the exact configurations: 2^shift
   };
-  const Place places[] = {{1.6e7, -4.2e6, -4}, {13.404954, 52.520008, -30},
-                          {-122.4194, 37.7749, -30}};
+  const Place places[] = {
+      {1.6e7, -4.2e6, -4}, {13.404954, 52.520008, -30}, {-122.4194, 37.7749, -30}};
   std::uint64_t seed = 100;
   for (const Place& p : places) {
     const double scale = std::ldexp(1.0, p.shift + 3);
-    auto t = check_orient2d(5000, ++seed, [&](Rng& r, double* v) {
-      near_line(r, v, scale, p.x, p.y);
-    });
+    auto t =
+        check_orient2d(5000, ++seed, [&](Rng& r, double* v) { near_line(r, v, scale, p.x, p.y); });
     EXPECT_GT(t.positive, 1000);
     EXPECT_GT(t.negative, 1000);
     t = check_orient2d(5000, ++seed, [&](Rng& r, double* v) {
@@ -391,9 +395,8 @@ TEST(Predicates, NearDegenerateAtLargeOffsets) {
     });
     EXPECT_GT(t.positive, 1000);
     EXPECT_GT(t.negative, 1000);
-    t = check_incircle(5000, ++seed, [&](Rng& r, double* v) {
-      near_circle(r, v, scale, p.x, p.y);
-    });
+    t = check_incircle(5000, ++seed,
+                       [&](Rng& r, double* v) { near_circle(r, v, scale, p.x, p.y); });
     EXPECT_GT(t.positive, 1000);
     EXPECT_GT(t.negative, 1000);
     t = check_incircle(5000, ++seed, [&](Rng& r, double* v) {

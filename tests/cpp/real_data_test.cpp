@@ -21,10 +21,12 @@ struct Loaded {
 
 Loaded load(const std::string& name) {
   Loaded l;
-  const std::string error = testing::readPolylineFile(std::string(GEOCDT_REAL_DATA_DIR) + "/" + name, l.set);
+  const std::string error =
+      testing::readPolylineFile(std::string(GEOCDT_REAL_DATA_DIR) + "/" + name, l.set);
   EXPECT_EQ(error, "");
   for (std::size_t i = 0; i < l.set.polylineCount(); ++i)
-    l.lines.emplace_back(l.set.xy.begin() + 2 * l.set.offsets[i], l.set.xy.begin() + 2 * l.set.offsets[i + 1]);
+    l.lines.emplace_back(l.set.xy.begin() + 2 * l.set.offsets[i],
+                         l.set.xy.begin() + 2 * l.set.offsets[i + 1]);
   return l;
 }
 
@@ -49,7 +51,8 @@ void checkDataset(const std::string& name, std::size_t minimumCrossings) {
   // Inside flags against ray casting over the input rings, on a sample of triangles away
   // from the rings (where rounding of crossing points cannot matter).
   bool anyRing = false;
-  for (const auto& line : l.lines) anyRing |= line.size() >= 6 && line[0] == line[line.size() - 2] && line[1] == line.back();
+  for (const auto& line : l.lines)
+    anyRing |= line.size() >= 6 && line[0] == line[line.size() - 2] && line[1] == line.back();
   if (!anyRing) return;
   testing::Random r(1);
   int compared = 0;
@@ -61,7 +64,8 @@ void checkDataset(const std::string& name, std::size_t minimumCrossings) {
       y += m.points[2 * m.triangles[3 * tri + k] + 1] / 3;
     }
     if (testing::distanceToPolylines(l.lines, x, y) < 1e-9) continue;
-    EXPECT_EQ(m.inside[tri] != 0, testing::insideEvenOdd(l.lines, x, y)) << name << " triangle at " << x << ", " << y;
+    EXPECT_EQ(m.inside[tri] != 0, testing::insideEvenOdd(l.lines, x, y))
+        << name << " triangle at " << x << ", " << y;
     ++compared;
   }
   EXPECT_GT(compared, 100);
@@ -88,7 +92,8 @@ TEST(RealData, CountriesAsPointsAndScaled) {
   EXPECT_EQ(testing::checkTriangulation(m, c), "");
 
   testing::Polylines moved;
-  for (const auto& line : l.lines) moved.push_back(testing::transformed(line, 111319.49, 1.6e7, -4e6));
+  for (const auto& line : l.lines)
+    moved.push_back(testing::transformed(line, 111319.49, 1.6e7, -4e6));
   std::vector<PolylineView> views;
   for (const auto& line : moved) views.push_back({line.data(), line.size() / 2});
   Triangulation t;

@@ -66,7 +66,8 @@ class PointDecoder {
     const std::uint8_t b = in.byte();
     mode_ = static_cast<PointMode>(b & 3);
     if (mode_ != PointMode::Lattice) return;
-    static constexpr double kOrigins[8] = {0, 1, -12345.678, 1.6e7 + 0.25, 179.9999999, 1e-300, 1e100, 0};
+    static constexpr double kOrigins[8] = {0,           1,      -12345.678, 1.6e7 + 0.25,
+                                           179.9999999, 1e-300, 1e100,      0};
     static constexpr double kSteps[8] = {1, 0.5, 0.1, 1e-3, 1.0 / 3, 1e-9, 1e9, 0x1p-40};
     static constexpr double kRotations[4][2] = {
         {1, 0}, {0.6, 0.8}, {0.7071067811865476, 0.7071067811865476}, {0.96, 0.28}};
@@ -97,9 +98,7 @@ class PointDecoder {
         y = (b >> 4) - 8;
         break;
       }
-      case PointMode::Lattice:
-        nextLattice(in, x, y);
-        break;
+      case PointMode::Lattice: nextLattice(in, x, y); break;
     }
     history_.push_back(x);
     history_.push_back(y);
@@ -159,7 +158,8 @@ inline std::string describeOptions(const Options& o) {
 // Coordinates printed so that they read back bit for bit.
 inline void printPoints(const char* label, const double* xy, std::size_t count) {
   std::fprintf(stderr, "%s (%zu points):", label, count);
-  for (std::size_t i = 0; i < count; ++i) std::fprintf(stderr, " %.17g,%.17g", xy[2 * i], xy[2 * i + 1]);
+  for (std::size_t i = 0; i < count; ++i)
+    std::fprintf(stderr, " %.17g,%.17g", xy[2 * i], xy[2 * i + 1]);
   std::fprintf(stderr, "\n");
 }
 

@@ -42,8 +42,9 @@ Input decode(const std::uint8_t* data, std::size_t size) {
 }
 
 void print(const Input& input) {
-  std::fprintf(stderr, "%s, batches of %zu and %zu points\n", describeOptions(input.options).c_str(),
-               input.split, input.xy.size() / 2 - input.split);
+  std::fprintf(stderr, "%s, batches of %zu and %zu points\n",
+               describeOptions(input.options).c_str(), input.split,
+               input.xy.size() / 2 - input.split);
   printPoints("points", input.xy.data(), input.xy.size() / 2);
 }
 
@@ -60,7 +61,8 @@ std::size_t distinctPoints(const std::vector<double>& xy) {
   return static_cast<std::size_t>(std::unique(p.begin(), p.end()) - p.begin());
 }
 
-std::string check(const Mesh& mesh, const std::vector<double>& xy, const std::vector<std::uint32_t>& ids) {
+std::string check(const Mesh& mesh, const std::vector<double>& xy,
+                  const std::vector<std::uint32_t>& ids) {
   testing::CheckOptions options;
   options.inputXY = &xy;
   options.inputToVertex = &ids;
@@ -84,7 +86,8 @@ void checkRefused(const Input& input, std::size_t bad) {
   if (again.code != StatusCode::InvalidCoordinate || again.index != bad)
     fail("insertPoints took invalid point " + std::to_string(bad) + ": " + again.message);
   if (t.vertexCount() != vertices) fail("a refused batch changed the vertex count");
-  const std::vector<double> prefix(input.xy.begin(), input.xy.begin() + 2 * static_cast<std::ptrdiff_t>(bad));
+  const std::vector<double> prefix(input.xy.begin(),
+                                   input.xy.begin() + 2 * static_cast<std::ptrdiff_t>(bad));
   const std::string broken = check(t.mesh(), prefix, ids);
   if (!broken.empty()) fail("after a refused batch: " + broken);
 }
@@ -112,7 +115,8 @@ std::string checkLocation(const Mesh& m, const Location& loc, double x, double y
     for (std::size_t e = 0; e < m.halfedges.size(); ++e) {
       if (m.halfedges[e] >= 0) continue;
       const std::uint32_t u = m.triangles[e], v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
-      if ((u == loc.vertices[0] && v == loc.vertices[1]) || (u == loc.vertices[1] && v == loc.vertices[0]))
+      if ((u == loc.vertices[0] && v == loc.vertices[1]) ||
+          (u == loc.vertices[1] && v == loc.vertices[0]))
         return side(u, v) == Sign::Negative ? "" : "Outside but not beyond the hull edge given";
     }
     return "Outside names no hull edge";
@@ -131,7 +135,8 @@ std::string checkLocation(const Mesh& m, const Location& loc, double x, double y
       if (!hasEdge(m, t, v[0], v[1])) return "Edge not in the triangle given";
       if (side(v[0], v[1]) != Sign::Zero) return "Edge not through the point";
       if (x < std::min(p[2 * v[0]], p[2 * v[1]]) || x > std::max(p[2 * v[0]], p[2 * v[1]]) ||
-          y < std::min(p[2 * v[0] + 1], p[2 * v[1] + 1]) || y > std::max(p[2 * v[0] + 1], p[2 * v[1] + 1]))
+          y < std::min(p[2 * v[0] + 1], p[2 * v[1] + 1]) ||
+          y > std::max(p[2 * v[0] + 1], p[2 * v[1] + 1]))
         return "Edge does not span the point";
       if ((p[2 * v[0]] == x && p[2 * v[0] + 1] == y) || (p[2 * v[1]] == x && p[2 * v[1] + 1] == y))
         return "Edge at one of its vertices";
@@ -139,7 +144,8 @@ std::string checkLocation(const Mesh& m, const Location& loc, double x, double y
     default:
       for (int k = 0; k < 3; ++k) {
         if (v[k] != m.triangles[3 * t + k]) return "Face vertices differ from the triangle's";
-        if (side(v[k], v[(k + 1) % 3]) != Sign::Positive) return "Face not strictly containing the point";
+        if (side(v[k], v[(k + 1) % 3]) != Sign::Positive)
+          return "Face not strictly containing the point";
       }
       return "";
   }
@@ -164,7 +170,8 @@ void checkLocate(const Input& input, const Triangulation& t, const Mesh& m,
     const double mx = 0.5 * x + 0.5 * xy[2 * j], my = 0.5 * y + 0.5 * xy[2 * j + 1];
     const std::string between = checkLocation(m, t.locate(mx, my), mx, my);
     if (!between.empty())
-      fail("locate: " + between + " between input points " + std::to_string(i) + " and " + std::to_string(j));
+      fail("locate: " + between + " between input points " + std::to_string(i) + " and " +
+           std::to_string(j));
   }
 }
 
@@ -187,8 +194,8 @@ void run(const Input& input) {
   std::vector<std::uint32_t> batchIds(n);
   Status first = t.insertPoints(input.xy.data(), input.split, batchIds.data());
   if (!first.ok()) fail("first batch: " + first.message);
-  Status second =
-      t.insertPoints(input.xy.data() + 2 * input.split, n - input.split, batchIds.data() + input.split);
+  Status second = t.insertPoints(input.xy.data() + 2 * input.split, n - input.split,
+                                 batchIds.data() + input.split);
   if (!second.ok()) fail("second batch: " + second.message);
   const Mesh incremental = t.mesh();
   broken = check(incremental, input.xy, batchIds);

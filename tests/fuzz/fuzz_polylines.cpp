@@ -10,9 +10,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <string>
-#include <cstdlib>
 #include <vector>
 
 #include "constraint_invariants.h"
@@ -75,10 +75,12 @@ Input decode(const std::uint8_t* data, std::size_t size) {
 void print(const Input& input) {
   static const char* kPaths[4] = {"OneShot", "EachPolyline", "PolylinesFirst", "Mixed"};
   std::fprintf(stderr, "%s path=%s fill=%s\n", describeOptions(input.options).c_str(),
-               kPaths[static_cast<int>(input.path)], input.fill == FillRule::EvenOdd ? "EvenOdd" : "NonZero");
+               kPaths[static_cast<int>(input.path)],
+               input.fill == FillRule::EvenOdd ? "EvenOdd" : "NonZero");
   printPoints("free points", input.points.data(), input.points.size() / 2);
   for (std::size_t i = 0; i < input.lines.size(); ++i)
-    printPoints(("polyline " + std::to_string(i)).c_str(), input.lines[i].data(), input.lines[i].size() / 2);
+    printPoints(("polyline " + std::to_string(i)).c_str(), input.lines[i].data(),
+                input.lines[i].size() / 2);
 }
 
 bool allValid(const Input& input) {
@@ -113,7 +115,8 @@ Built build(const Input& input) {
 
   const auto require = [](const Status& s, const char* call) {
     if (s.ok()) return;
-    const std::string kind = s.code == StatusCode::ConstraintUnresolved ? "ConstraintUnresolved" : "error";
+    const std::string kind =
+        s.code == StatusCode::ConstraintUnresolved ? "ConstraintUnresolved" : "error";
     fail(std::string(call) + " returned " + kind + ": " + s.message);
   };
   const auto addPoints = [&] {
@@ -127,7 +130,8 @@ Built build(const Input& input) {
     std::vector<std::uint32_t> ids(count);
     if (oneByOne) {
       for (std::size_t i = from, offset = 0; i < to; offset += views[i].count, ++i)
-        require(t.insertPolyline(views[i].xy, views[i].count, ids.data() + offset), "insertPolyline");
+        require(t.insertPolyline(views[i].xy, views[i].count, ids.data() + offset),
+                "insertPolyline");
     } else if (from < to) {
       require(t.insertPolylines(views.data() + from, to - from, ids.data()), "insertPolylines");
     }
@@ -143,13 +147,15 @@ Built build(const Input& input) {
                                    input.options, flagged, out.mesh, &out.ids);
       require(s, "triangulate");
       Mesh inside;
-      require(triangulate(input.points.data(), pointIds.size(), views.data(), views.size(), input.options,
-                          insideOnly, inside),
+      require(triangulate(input.points.data(), pointIds.size(), views.data(), views.size(),
+                          input.options, insideOnly, inside),
               "triangulate (Keep::Inside)");
       out.insideKept = inside.triangles.size() / 3;
       out.inputXY = input.points;
-      for (const auto& line : input.lines) out.inputXY.insert(out.inputXY.end(), line.begin(), line.end());
-      out.lineIds.assign(out.ids.begin() + static_cast<std::ptrdiff_t>(pointIds.size()), out.ids.end());
+      for (const auto& line : input.lines)
+        out.inputXY.insert(out.inputXY.end(), line.begin(), line.end());
+      out.lineIds.assign(out.ids.begin() + static_cast<std::ptrdiff_t>(pointIds.size()),
+                         out.ids.end());
       return out;
     }
     case Path::EachPolyline:
@@ -194,7 +200,8 @@ int winding(const testing::Polylines& lines, double x, double y) {
     const std::size_t n = line.size() / 2;
     if (n < 3 || line[0] != line[2 * n - 2] || line[1] != line[2 * n - 1]) continue;
     for (std::size_t k = 0; k + 1 < n; ++k) {
-      const double ax = line[2 * k], ay = line[2 * k + 1], bx = line[2 * k + 2], by = line[2 * k + 3];
+      const double ax = line[2 * k], ay = line[2 * k + 1], bx = line[2 * k + 2],
+                   by = line[2 * k + 3];
       if ((ay > y) == (by > y)) continue;
       if (x < ax + (y - ay) / (by - ay) * (bx - ax)) w += by > ay ? 1 : -1;
     }
@@ -208,8 +215,10 @@ void checkInside(const Input& input, const Built& b) {
   const Mesh& m = b.mesh;
   const std::size_t triangles = m.triangles.size() / 3;
   if (m.inside.size() != triangles)
-    fail(std::to_string(m.inside.size()) + " inside flags for " + std::to_string(triangles) + " triangles");
-  const std::size_t flagged = static_cast<std::size_t>(std::count(m.inside.begin(), m.inside.end(), 1));
+    fail(std::to_string(m.inside.size()) + " inside flags for " + std::to_string(triangles) +
+         " triangles");
+  const std::size_t flagged =
+      static_cast<std::size_t>(std::count(m.inside.begin(), m.inside.end(), 1));
   if (flagged != b.insideKept)
     fail(std::to_string(flagged) + " triangles flagged inside but Keep::Inside kept " +
          std::to_string(b.insideKept));
@@ -222,7 +231,8 @@ void checkInside(const Input& input, const Built& b) {
     lines.push_back(scaled(line, exponent));
     // Whether it is a ring is decided before scaling, which can flush subnormals to zero.
     const std::size_t n = line.size() / 2;
-    if (n >= 3 && line[0] == line[2 * n - 2] && line[1] == line[2 * n - 1]) rings.push_back(lines.back());
+    if (n >= 3 && line[0] == line[2 * n - 2] && line[1] == line[2 * n - 1])
+      rings.push_back(lines.back());
   }
   double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
   for (const auto& line : lines)
@@ -234,10 +244,12 @@ void checkInside(const Input& input, const Built& b) {
   const double clearance = 1e-6 * std::hypot(maxX - minX, maxY - minY) + 1e-12;
   const std::vector<double> p = scaled(m.points, exponent);
   for (std::size_t t = 0; t < triangles; ++t) {
-    const std::uint32_t a = m.triangles[3 * t], c = m.triangles[3 * t + 1], d = m.triangles[3 * t + 2];
+    const std::uint32_t a = m.triangles[3 * t], c = m.triangles[3 * t + 1],
+                        d = m.triangles[3 * t + 2];
     const double x = (p[2 * a] + p[2 * c] + p[2 * d]) / 3,
                  y = (p[2 * a + 1] + p[2 * c + 1] + p[2 * d + 1]) / 3;
-    if (!std::isfinite(x) || !std::isfinite(y) || testing::distanceToPolylines(lines, x, y) <= clearance)
+    if (!std::isfinite(x) || !std::isfinite(y) ||
+        testing::distanceToPolylines(lines, x, y) <= clearance)
       continue;
     const int w = winding(rings, x, y);
     const bool inside = input.fill == FillRule::EvenOdd ? (w & 1) != 0 : w != 0;
@@ -271,7 +283,8 @@ void checkProvenance(const Input& input, const Mesh& m) {
   for (std::size_t i = 0; i < constrainedEdges; ++i) {
     const std::uint32_t e = m.constraintEdges[i];
     const std::uint32_t u = m.triangles[e], v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
-    if (m.sourceOffsets[i] >= m.sourceOffsets[i + 1]) fail("a constrained edge without a source polyline");
+    if (m.sourceOffsets[i] >= m.sourceOffsets[i + 1])
+      fail("a constrained edge without a source polyline");
     for (std::uint32_t k = m.sourceOffsets[i]; k < m.sourceOffsets[i + 1]; ++k) {
       const std::uint32_t line = m.sources[k];
       if (line >= input.lines.size()) fail("provenance names polyline " + std::to_string(line));
@@ -296,9 +309,10 @@ void run(const Input& input) {
     std::vector<PolylineView> views;
     for (const auto& line : input.lines) views.push_back({line.data(), line.size() / 2});
     Mesh mesh;
-    const Status s = triangulate(input.points.data(), input.points.size() / 2, views.data(), views.size(),
-                                 input.options, {}, mesh);
-    if (s.code != StatusCode::InvalidCoordinate) fail("invalid coordinates not refused: " + s.message);
+    const Status s = triangulate(input.points.data(), input.points.size() / 2, views.data(),
+                                 views.size(), input.options, {}, mesh);
+    if (s.code != StatusCode::InvalidCoordinate)
+      fail("invalid coordinates not refused: " + s.message);
     return;
   }
   const Built b = build(input);

@@ -38,8 +38,8 @@ namespace detail {
 
 // The exact paths, out of line so that the filters stay small enough to inline.
 Sign orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy);
-Sign incircle_exact(double ax, double ay, double bx, double by, double cx, double cy,
-                    double dx, double dy);
+Sign incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                    double dy);
 
 // u = 2^-53 is the unit roundoff. The relative bounds hold while nothing underflows; with
 // underflow every product may also be off by up to 2^-1075 (half the smallest subnormal).
@@ -77,8 +77,8 @@ inline Sign incircle(double ax, double ay, double bx, double by, double cx, doub
   const double alift = adx * adx + ady * ady;
   const double blift = bdx * bdx + bdy * bdy;
   const double clift = cdx * cdx + cdy * cdy;
-  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
-                     clift * (adxbdy - bdxady);
+  const double det =
+      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
   const double across = (bdxcdy < 0 ? -bdxcdy : bdxcdy) + (cdxbdy < 0 ? -cdxbdy : cdxbdy);
   const double bcross = (cdxady < 0 ? -cdxady : cdxady) + (adxcdy < 0 ? -adxcdy : adxcdy);
   const double ccross = (adxbdy < 0 ? -adxbdy : adxbdy) + (bdxady < 0 ? -bdxady : bdxady);
@@ -86,8 +86,7 @@ inline Sign incircle(double ax, double ay, double bx, double by, double cx, doub
   // An underflowing product's absolute error gets multiplied by a lift or a cross term:
   // bound those amplifiers by their sum.
   const double amplifiers = (alift + blift + clift) + (across + bcross + ccross) + 1.0;
-  const double bound =
-      detail::kIncircleBound * permanent + detail::kUnderflowSlack * amplifiers;
+  const double bound = detail::kIncircleBound * permanent + detail::kUnderflowSlack * amplifiers;
   if (det > bound) return Sign::Positive;
   if (-det > bound) return Sign::Negative;
   return detail::incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);

@@ -8,11 +8,11 @@ namespace geocdt {
 
 enum class StatusCode {
   Ok = 0,
-  InvalidArgument,     // wrong shape of input (odd length, null pointer with a count)
-  InvalidCoordinate,   // NaN, infinity, or |coordinate| > kMaxCoordinate
-  OutOfMemory,         // an allocation failed; the triangulation is unchanged or cleared
-  ConstraintUnresolved,// a constraint segment could not be inserted (names polyline/segment)
-  InternalError,       // a broken invariant (walk step bound hit): a bug, reported not hung
+  InvalidArgument,       // wrong shape of input (odd length, null pointer with a count)
+  InvalidCoordinate,     // NaN, infinity, or |coordinate| > kMaxCoordinate
+  OutOfMemory,           // an allocation failed; the triangulation is unchanged or cleared
+  ConstraintUnresolved,  // a constraint segment could not be inserted (names polyline/segment)
+  InternalError,         // a broken invariant (walk step bound hit): a bug, reported not hung
 };
 
 inline constexpr std::size_t kNoIndex = static_cast<std::size_t>(-1);
@@ -20,8 +20,8 @@ inline constexpr std::size_t kNoIndex = static_cast<std::size_t>(-1);
 struct Status {
   StatusCode code = StatusCode::Ok;
   std::string message;
-  std::size_t index = kNoIndex;   // offending point / polyline index, if any
-  std::size_t segment = kNoIndex; // offending segment within that polyline, if any
+  std::size_t index = kNoIndex;    // offending point / polyline index, if any
+  std::size_t segment = kNoIndex;  // offending segment within that polyline, if any
 
   bool ok() const { return code == StatusCode::Ok; }
   static Status success() { return {}; }

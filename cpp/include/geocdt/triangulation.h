@@ -82,16 +82,16 @@ struct Location {
 };
 
 struct Stats {
-  std::uint64_t inserted = 0;      // points that became vertices
-  std::uint64_t duplicates = 0;    // points equal to an existing vertex
-  std::uint64_t walkSteps = 0;     // triangles visited by point location
-  std::uint64_t locates = 0;       // point locations performed
+  std::uint64_t inserted = 0;    // points that became vertices
+  std::uint64_t duplicates = 0;  // points equal to an existing vertex
+  std::uint64_t walkSteps = 0;   // triangles visited by point location
+  std::uint64_t locates = 0;     // point locations performed
   std::uint64_t flips = 0;
-  std::uint64_t walkFallbacks = 0; // visibility walks that gave way to a straight walk
-  std::uint32_t gridSize = 0;      // current m of the m x m grid
-  std::uint64_t crossings = 0;     // vertices added where constraints cross
+  std::uint64_t walkFallbacks = 0;  // visibility walks that gave way to a straight walk
+  std::uint32_t gridSize = 0;       // current m of the m x m grid
+  std::uint64_t crossings = 0;      // vertices added where constraints cross
   std::uint64_t polylines = 0;
-  std::uint64_t segments = 0;      // constraint segments inserted
+  std::uint64_t segments = 0;  // constraint segments inserted
 };
 
 class Triangulation {
@@ -109,8 +109,7 @@ class Triangulation {
   // Inserts a polyline as constraints: its points, then its segments, split where they
   // cross earlier constraints. Its polyline id is polylineCount() before the call.
   // vertexIds, if not null, receives count ids. Nothing is inserted on invalid input.
-  Status insertPolyline(const double* xy, std::size_t count,
-                        std::uint32_t* vertexIds = nullptr);
+  Status insertPolyline(const double* xy, std::size_t count, std::uint32_t* vertexIds = nullptr);
   // Inserts several polylines at once: all their points in one spatially sorted batch,
   // then their segments in order. vertexIds receives one id per point of every polyline.
   Status insertPolylines(const PolylineView* polylines, std::size_t count,

@@ -17,7 +17,8 @@ struct Segment {
 double distanceToSegment(const Segment& s, double x, double y) {
   const long double dx = (long double)s.bx - s.ax, dy = (long double)s.by - s.ay;
   const long double len2 = dx * dx + dy * dy;
-  long double t = len2 > 0 ? (((long double)x - s.ax) * dx + ((long double)y - s.ay) * dy) / len2 : 0;
+  long double t =
+      len2 > 0 ? (((long double)x - s.ax) * dx + ((long double)y - s.ay) * dy) / len2 : 0;
   t = std::clamp(t, 0.0L, 1.0L);
   const long double ex = s.ax + t * dx - x, ey = s.ay + t * dy - y;
   return static_cast<double>(std::sqrt(ex * ex + ey * ey));
@@ -26,7 +27,8 @@ double distanceToSegment(const Segment& s, double x, double y) {
 // Rounding of crossing points: a few ulps of the coordinates plus a tiny part of the length.
 // Among subnormals an ulp is the smallest double, however small the coordinates.
 double tolerance(const Segment& s) {
-  const double magnitude = std::max({std::fabs(s.ax), std::fabs(s.ay), std::fabs(s.bx), std::fabs(s.by)});
+  const double magnitude =
+      std::max({std::fabs(s.ax), std::fabs(s.ay), std::fabs(s.bx), std::fabs(s.by)});
   const double ulp = std::max(magnitude * std::numeric_limits<double>::epsilon(),
                               std::numeric_limits<double>::denorm_min());
   return 1e-9 * std::hypot(s.bx - s.ax, s.by - s.ay) + 64 * ulp;
@@ -51,7 +53,8 @@ class SegmentGrid {
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const Segment& s = segments[i];
       const double t = tolerance(s);
-      const std::size_t x0 = column(std::min(s.ax, s.bx) - t), x1 = column(std::max(s.ax, s.bx) + t);
+      const std::size_t x0 = column(std::min(s.ax, s.bx) - t),
+                        x1 = column(std::max(s.ax, s.bx) + t);
       const std::size_t y0 = row(std::min(s.ay, s.by) - t), y1 = row(std::max(s.ay, s.by) + t);
       for (std::size_t y = y0; y <= y1; ++y)
         for (std::size_t x = x0; x <= x1; ++x) cells_[y * side_ + x].push_back(i);
@@ -111,8 +114,8 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
     if (mesh.halfedges[e] < 0) next[v].push_back(u);  // a hull edge has no twin to list it
     if (grid.find(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]) < 0) {
       std::ostringstream out;
-      out << "constrained edge " << u << "-" << v << " (" << p[2 * u] << ", " << p[2 * u + 1] << ")-("
-          << p[2 * v] << ", " << p[2 * v + 1] << ") lies on no input segment";
+      out << "constrained edge " << u << "-" << v << " (" << p[2 * u] << ", " << p[2 * u + 1]
+          << ")-(" << p[2 * v] << ", " << p[2 * v + 1] << ") lies on no input segment";
       return out.str();
     }
   }
@@ -152,7 +155,8 @@ bool insideEvenOdd(const Polylines& polylines, double x, double y) {
     const std::size_t n = line.size() / 2;
     if (n < 3 || line[0] != line[2 * n - 2] || line[1] != line[2 * n - 1]) continue;
     for (std::size_t k = 0; k + 1 < n; ++k) {
-      const double ax = line[2 * k], ay = line[2 * k + 1], bx = line[2 * k + 2], by = line[2 * k + 3];
+      const double ax = line[2 * k], ay = line[2 * k + 1], bx = line[2 * k + 2],
+                   by = line[2 * k + 3];
       if ((ay > y) != (by > y) && x < ax + (y - ay) / (by - ay) * (bx - ax)) inside = !inside;
     }
   }
@@ -163,7 +167,8 @@ double distanceToPolylines(const Polylines& polylines, double x, double y) {
   double best = std::numeric_limits<double>::infinity();
   for (const auto& line : polylines)
     for (std::size_t k = 0; k + 3 < line.size(); k += 2)
-      best = std::min(best, distanceToSegment({line[k], line[k + 1], line[k + 2], line[k + 3]}, x, y));
+      best =
+          std::min(best, distanceToSegment({line[k], line[k + 1], line[k + 2], line[k + 3]}, x, y));
   return best;
 }
 

@@ -38,7 +38,8 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options) {
   const std::size_t triangles = tri.size() / 3;
 
   for (std::size_t e = 0; e < tri.size(); ++e)
-    if (tri[e] >= vertices) return describe("half-edge ", e, " names vertex ", tri[e], " of ", vertices);
+    if (tri[e] >= vertices)
+      return describe("half-edge ", e, " names vertex ", tri[e], " of ", vertices);
 
   // Half-edges are symmetric and join the same two vertices in opposite directions.
   for (std::size_t e = 0; e < he.size(); ++e) {
@@ -94,8 +95,10 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options) {
     long double sum2 = 0, scale = 0;
     for (std::size_t t = 0; t < triangles; ++t) {
       const std::uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-      const long double abx = (long double)p[2 * b] - p[2 * a], aby = (long double)p[2 * b + 1] - p[2 * a + 1];
-      const long double acx = (long double)p[2 * c] - p[2 * a], acy = (long double)p[2 * c + 1] - p[2 * a + 1];
+      const long double abx = (long double)p[2 * b] - p[2 * a],
+                        aby = (long double)p[2 * b + 1] - p[2 * a + 1];
+      const long double acx = (long double)p[2 * c] - p[2 * a],
+                        acy = (long double)p[2 * c + 1] - p[2 * a + 1];
       sum2 += abx * acy - aby * acx;
       scale += std::fabs(abx * acy) + std::fabs(aby * acx);
     }
@@ -105,14 +108,17 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options) {
       const std::uint32_t a = tri[e], b = tri[nextOf(e)];
       // Relative to the first vertex, to keep large offsets from swamping the area.
       const std::uint32_t o = tri[start];
-      const long double ax = (long double)p[2 * a] - p[2 * o], ay = (long double)p[2 * a + 1] - p[2 * o + 1];
-      const long double bx = (long double)p[2 * b] - p[2 * o], by = (long double)p[2 * b + 1] - p[2 * o + 1];
+      const long double ax = (long double)p[2 * a] - p[2 * o],
+                        ay = (long double)p[2 * a + 1] - p[2 * o + 1];
+      const long double bx = (long double)p[2 * b] - p[2 * o],
+                        by = (long double)p[2 * b + 1] - p[2 * o + 1];
       hull2 += ax * by - bx * ay;
       hullScale += std::fabs(ax * by) + std::fabs(bx * ay);
       e = static_cast<std::size_t>(outgoing[b]);
     }
     if (std::fabs(hull2 - sum2) > 1e-9L * (scale + hullScale))
-      return describe("triangle areas sum to ", double(sum2 / 2), " but the hull's area is ", double(hull2 / 2));
+      return describe("triangle areas sum to ", double(sum2 / 2), " but the hull's area is ",
+                      double(hull2 / 2));
   }
 
   // Euler: T = 2V - h - 2 over the vertices the triangles use.
@@ -159,8 +165,8 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options) {
       if (f < static_cast<std::int32_t>(e) || mesh.constrained[e]) continue;
       const std::uint32_t a = tri[e], b = tri[nextOf(e)], c = tri[nextOf(nextOf(e))];
       const std::uint32_t d = tri[nextOf(nextOf(static_cast<std::uint32_t>(f)))];
-      if (incircle(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1],
-                   p[2 * d], p[2 * d + 1]) == Sign::Positive)
+      if (incircle(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1], p[2 * d],
+                   p[2 * d + 1]) == Sign::Positive)
         return describe("edge ", a, "-", b, " is not locally Delaunay (vertex ", d, " in circle)");
     }
   }
