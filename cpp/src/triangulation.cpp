@@ -143,6 +143,8 @@ Status triangulate(const double* xy, std::size_t count, const PolylineView* poly
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
                    std::vector<std::uint32_t>* inputToVertex) {
+  if (polylineCount > 0 && polylines == nullptr)
+    return {StatusCode::InvalidArgument, "null polylines with a count"};
   Triangulation t(options);
   std::vector<std::uint32_t> ids;
   Status s;
