@@ -48,12 +48,21 @@ fi
 
 # npm ci when node_modules is missing or older than the lock file. Some registries answer
 # without the other platforms' optional packages (rollup, esbuild), which npm ci then finds
-# missing from the lock: npm install, which keeps the lock as it is, takes over.
+# missing from the lock: npm install, which leaves the lock as it is, takes over. npm ci's
+# errors come with its whole usage text: only their first lines are shown.
 cd "$root"
 if [ ! -f node_modules/.package-lock.json ] \
   || [ package-lock.json -nt node_modules/.package-lock.json ]; then
   echo "ensure-deps: npm ci" >&2
-  npm ci --no-audit --no-fund || npm install --no-audit --no-fund
+  log=$(mktemp)
+  if npm ci --no-audit --no-fund 2>"$log"; then
+    cat "$log" >&2
+  else
+    grep '^npm error [^ ]' "$log" | head -n 3 >&2
+    echo "ensure-deps: npm ci failed; npm install instead" >&2
+    npm install --no-audit --no-fund
+  fi
+  rm -f "$log"
 fi
 
 # The wasm (glue and binary) when either is missing or any source of it is newer: the core,
