@@ -21,7 +21,9 @@ function bundledData() {
       });
     },
     generateBundle() {
-      for (const [fileName, source] of Object.entries(all())) this.emitFile({ type: 'asset', fileName, source });
+      for (const [fileName, source] of Object.entries(all())) {
+        this.emitFile({ type: 'asset', fileName, source });
+      }
     },
   };
 }

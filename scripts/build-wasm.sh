@@ -11,7 +11,8 @@ if ! command -v emcmake >/dev/null 2>&1; then
     export DEBIAN_FRONTEND=noninteractive
     apt-get install -y emscripten || { apt-get update && apt-get install -y emscripten; }
   else
-    echo "build-wasm: Emscripten (emcmake, em++) is missing. Install it, then run npm run build:" >&2
+    echo "build-wasm: Emscripten (emcmake, em++) is missing." \
+      "Install it, then run npm run build:" >&2
     echo "  sudo apt-get update && sudo apt-get install -y emscripten    # Debian, Ubuntu" >&2
     echo "  or install the emsdk and source its emsdk_env.sh, so that emcmake is on PATH" >&2
     exit 1
@@ -38,4 +39,5 @@ cp "$build/bindings/geocdt.mjs" "$root/web/dist/.geocdt.mjs.tmp"
 cp "$build/bindings/geocdt.wasm" "$root/web/dist/.geocdt.wasm.tmp"
 mv "$root/web/dist/.geocdt.wasm.tmp" "$root/web/dist/geocdt.wasm"
 mv "$root/web/dist/.geocdt.mjs.tmp" "$root/web/dist/geocdt.mjs"
-echo "build-wasm: web/dist/geocdt.mjs and web/dist/geocdt.wasm ($(wc -c <"$root/web/dist/geocdt.wasm") bytes)" >&2
+bytes=$(wc -c <"$root/web/dist/geocdt.wasm")
+echo "build-wasm: web/dist/geocdt.mjs and web/dist/geocdt.wasm ($bytes bytes)" >&2

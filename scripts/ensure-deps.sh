@@ -1,21 +1,34 @@
 #!/bin/sh
-# Installs what a fresh Debian machine lacks to build and test geocdt (compilers, CMake,
-# GoogleTest, GMP, Emscripten, Chromium), then the npm dev dependencies. As root it installs;
-# otherwise it prints the exact command to run and fails.
+# Installs what a fresh Debian machine lacks, then the npm dev dependencies, then builds the
+# wasm when web/dist is missing or older than its sources. As root it installs Debian
+# packages; otherwise it prints the exact command to run and fails.
+#
+#   sh scripts/ensure-deps.sh demo   # what `npm run demo` needs: CMake, make, Emscripten
+#   sh scripts/ensure-deps.sh        # what `npm test` needs: those, the native compilers,
+#                                    # GoogleTest, GMP, clang-format and Chromium
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
+profile=${1:-test}
+case "$profile" in
+  demo | test) ;;
+  *) echo "ensure-deps: unknown profile '$profile' (demo or test)" >&2; exit 2 ;;
+esac
 
 missing=""
 need_command() { command -v "$1" >/dev/null 2>&1 || missing="$missing $2"; }
 need_file() { [ -e "$1" ] || missing="$missing $2"; }
 
 need_command cmake cmake
-need_command g++ g++
-need_command clang++ clang
+need_command make make
 need_command em++ emscripten
-need_command chromium chromium
-need_file /usr/include/gtest/gtest.h libgtest-dev
-need_file /usr/include/gmpxx.h libgmp-dev
+if [ "$profile" = test ]; then
+  need_command g++ g++
+  need_command clang++ clang
+  need_command clang-format clang-format
+  need_command chromium chromium
+  need_file /usr/include/gtest/gtest.h libgtest-dev
+  need_file /usr/include/gmpxx.h libgmp-dev
+fi
 
 if [ -n "$missing" ]; then
   if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
@@ -35,9 +48,29 @@ fi
 
 # npm ci when node_modules is missing or older than the lock file. Some registries answer
 # without the other platforms' optional packages (rollup, esbuild), which npm ci then finds
-# missing from the lock: npm install, which keeps the lock as it is, takes over.
+# missing from the lock: npm install, which leaves the lock as it is, takes over. npm ci's
+# errors come with its whole usage text: only their first lines are shown.
 cd "$root"
-if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+if [ ! -f node_modules/.package-lock.json ] \
+  || [ package-lock.json -nt node_modules/.package-lock.json ]; then
   echo "ensure-deps: npm ci" >&2
-  npm ci --no-audit --no-fund || npm install --no-audit --no-fund
+  log=$(mktemp)
+  if npm ci --no-audit --no-fund 2>"$log"; then
+    cat "$log" >&2
+  else
+    grep '^npm error [^ ]' "$log" | head -n 3 >&2
+    echo "ensure-deps: npm ci failed; npm install instead" >&2
+    npm install --no-audit --no-fund
+  fi
+  rm -f "$log"
+fi
+
+# The wasm (glue and binary) when either is missing or any source of it is newer: the core,
+# the bindings, the CMake files and the build script. Folders count too (a file removed).
+wasm=web/dist/geocdt.wasm
+if [ ! -f "$wasm" ] || [ ! -f web/dist/geocdt.mjs ] \
+  || [ -n "$(find cpp bindings CMakeLists.txt scripts/build-wasm.sh -newer "$wasm" | head -n 1)" ]
+then
+  echo "ensure-deps: building the wasm (web/dist is missing or older than its sources)" >&2
+  sh scripts/build-wasm.sh
 fi

@@ -40,7 +40,8 @@ probe=$(mktemp -d)
 trap 'rm -rf "$probe"' EXIT
 printf 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }\n' \
   >"$probe/probe.cpp"
-if ! clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" 2>"$probe/log"; then
+if ! clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" \
+  2>"$probe/log"; then
   major=$(clang++ -dumpversion | cut -d. -f1)
   install_or_explain "libclang-rt-$major-dev"
   clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" || {
@@ -71,7 +72,8 @@ for target in $targets; do
     echo "run-fuzz: $target FAILED" >&2
     grep -o 'Test unit written to .*' "$build/$target.log" >&2 || true
   else
-    grep -E '^(stat::number_of_executed_units|stat::peak_rss_mb)|^Done' "$build/$target.log" >&2 || true
+    grep -E '^(stat::number_of_executed_units|stat::peak_rss_mb)|^Done' "$build/$target.log" >&2 \
+      || true
   fi
 done
 exit $status

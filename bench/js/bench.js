@@ -21,9 +21,10 @@ function table(header, rows) {
 }
 
 function resultRows(results, reference) {
+  const base = results[reference]?.ms;
   return Object.entries(results).map(([name, r]) => r.error
     ? [name, 'FAILED', '', r.error]
-    : [name, ms(r.ms), reference && results[reference]?.ms ? `${(r.ms / results[reference].ms).toFixed(2)}×` : '', r.summary]);
+    : [name, ms(r.ms), base ? `${(r.ms / base).toFixed(2)}×` : '', r.summary]);
 }
 
 // Reports the median of the wasm core's share of the time (the rest: checks and copies).
@@ -41,29 +42,39 @@ function geocdt(name, input, options) {
   };
 }
 
+// Runs a script in a fresh Node process and parses the JSON it prints.
+function runJson(script, ...args) {
+  return JSON.parse(execFileSync(process.execPath, [script, ...args], { encoding: 'utf8' }));
+}
+
 async function startup() {
   const wasm = readFileSync(here('../../web/dist/geocdt.wasm'));
   const runs = [];
-  for (let i = 0; i < 7; i++) runs.push(JSON.parse(execFileSync(process.execPath, [here('startup.js')], { encoding: 'utf8' })));
+  for (let i = 0; i < 7; i++) runs.push(runJson(here('startup.js')));
+  const gzipped = gzipSync(wasm, { level: 9 }).length;
+  const initMs = median(runs.map((r) => r.initMs));
   console.log('## Package\n');
   table(['measure', 'value', 'target'], [
-    ['geocdt.wasm', `${n(wasm.length)} B, ${n(gzipSync(wasm, { level: 9 }).length)} B gzipped`, '≤ 100 KB gzipped'],
-    ['cold `await init()` (median of 7 processes)', `${ms(median(runs.map((r) => r.initMs)))} ms`, '≤ 50 ms'],
+    ['geocdt.wasm', `${n(wasm.length)} B, ${n(gzipped)} B gzipped`, '≤ 100 KB gzipped'],
+    ['cold `await init()` (median of 7 processes)', `${ms(initMs)} ms`, '≤ 50 ms'],
     ['import + init', `${ms(median(runs.map((r) => r.importAndInitMs)))} ms`, ''],
   ]);
 }
 
 function heapPeak(sizes) {
   console.log('## wasm heap per point (fresh process, uniform points)\n');
-  table(['points', 'allocator peak / point', 'memory growth / point', 'target'], sizes.map((size) => {
-    const r = JSON.parse(execFileSync(process.execPath, [here('heap-peak.js'), String(size)], { encoding: 'utf8' }));
-    return [n(size), `${r.peakBytesPerPoint.toFixed(1)} B`, `${r.heapGrowthPerPoint.toFixed(1)} B`, '≤ 80 B'];
+  const header = ['points', 'allocator peak / point', 'memory growth / point', 'target'];
+  table(header, sizes.map((size) => {
+    const r = runJson(here('heap-peak.js'), String(size));
+    const perPoint = (bytes) => `${bytes.toFixed(1)} B`;
+    return [n(size), perPoint(r.peakBytesPerPoint), perPoint(r.heapGrowthPerPoint), '≤ 80 B'];
   }));
 }
 
 async function uniformPoints(sizes) {
   console.log('## Uniform points: geocdt vs delaunator\n');
-  console.log('geocdt times include the input checks and the copies in and out of the wasm heap.\n');
+  console.log('geocdt times include the input checks and the copies in and out of the wasm ' +
+    'heap.\n');
   for (const size of sizes) {
     const xy = uniform(size);
     const rounds = size <= 100_000 ? 9 : size <= 1_000_000 ? 5 : 3;
@@ -86,8 +97,12 @@ async function constrained(dataset, { cdt2d, triangleWasm }) {
     geocdt('geocdt (keep inside)', { polylines }, { keep: 'inside' }),
     { name: 'constrainautor', run: () => peers.constrainautor(graph), describe: peers.summary },
   ];
-  if (cdt2d) contenders.push({ name: 'cdt2d', run: () => peers.cdt(graph), describe: peers.cdtSummary });
-  if (triangleWasm) contenders.push({ name: 'triangle-wasm', run: () => triangle.run(graph), describe: (s) => s });
+  if (cdt2d) {
+    contenders.push({ name: 'cdt2d', run: () => peers.cdt(graph), describe: peers.cdtSummary });
+  }
+  if (triangleWasm) {
+    contenders.push({ name: 'triangle-wasm', run: () => triangle.run(graph), describe: (s) => s });
+  }
   if (polygons) {
     contenders.push({
       name: 'earcut (each polygon alone)',
@@ -97,8 +112,8 @@ async function constrained(dataset, { cdt2d, triangleWasm }) {
   }
   const rounds = pointCount(polylines) > 200_000 ? 3 : 5;
   const results = await alternate(contenders, rounds);
-  console.log(`### ${name}: ${n(pointCount(polylines))} points, ${n(polylines.length)} polylines, ` +
-    `${n(graph.edges.length)} distinct-point segments (${rounds} rounds)\n`);
+  console.log(`### ${name}: ${n(pointCount(polylines))} points, ${n(polylines.length)} ` +
+    `polylines, ${n(graph.edges.length)} distinct-point segments (${rounds} rounds)\n`);
   table(['library', 'ms', 'vs geocdt', 'result'], resultRows(results, 'geocdt (keep all)'));
   const skipped = [!cdt2d && 'cdt2d', !triangleWasm && 'triangle-wasm'].filter(Boolean);
   if (skipped.length) console.log(`(${skipped.join(' and ')}: not run at this scale.)\n`);
@@ -110,7 +125,8 @@ await startup();
 heapPeak(quick ? [100_000] : [100_000, 1_000_000]);
 await uniformPoints(quick ? [100_000] : [100_000, 1_000_000, 2_000_000]);
 console.log('## Constraints: Natural Earth (world-atlas), triangulated in lon/lat\n');
-console.log('Peers get deduplicated points and index edges prepared outside the timing; geocdt gets the raw rings.\n');
+console.log('Peers get deduplicated points and index edges prepared outside the timing; ' +
+  'geocdt gets the raw rings.\n');
 for (const scale of quick ? ['110m'] : ['110m', '50m', '10m']) {
   const peersHere = { cdt2d: scale === '110m', triangleWasm: scale !== '10m' };
   await constrained(countryRings(scale), peersHere);

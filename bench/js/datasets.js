@@ -47,7 +47,8 @@ export function countryRings(scale) {
 export function countryArcs(scale) {
   const t = topology(scale);
   const m = mesh(t, t.objects.countries);
-  return { name: `Natural Earth ${scale} arcs`, polylines: m.coordinates.map((l) => Float64Array.from(l.flat())) };
+  const polylines = m.coordinates.map((l) => Float64Array.from(l.flat()));
+  return { name: `Natural Earth ${scale} arcs`, polylines };
 }
 
 export function pointCount(polylines) {

@@ -26,7 +26,8 @@ export function badTriangles(xy, triangles) {
 
 export function summary({ xy, triangles }) {
   const bad = badTriangles(xy, triangles);
-  return `${(triangles.length / 3).toLocaleString('en-US')} triangles${bad ? `, ${bad} INVALID (flipped or zero-area)` : ''}`;
+  const count = (triangles.length / 3).toLocaleString('en-US');
+  return `${count} triangles${bad ? `, ${bad} INVALID (flipped or zero-area)` : ''}`;
 }
 
 export function delaunator(xy) {
@@ -64,7 +65,8 @@ export function triangleInWorker(timeoutMs = 60_000) {
   return {
     run(graph) {
       // Triangle prints its internal errors: keep them out of the report (the failure is in it).
-      worker ??= new Worker(new URL('./triangle-worker.js', import.meta.url), { stdout: true, stderr: true });
+      worker ??= new Worker(new URL('./triangle-worker.js', import.meta.url),
+        { stdout: true, stderr: true });
       worker.stdout.resume();
       worker.stderr.resume();
       return new Promise((resolve, reject) => {
@@ -77,7 +79,11 @@ export function triangleInWorker(timeoutMs = 60_000) {
         }, timeoutMs);
         const onMessage = (m) => { done(); resolve(m); };
         const onError = (e) => { done(); worker = null; reject(e); };
-        const onExit = (code) => { done(); worker = null; reject(new Error(`Triangle exited (code ${code}): internal error`)); };
+        const onExit = (code) => {
+          done();
+          worker = null;
+          reject(new Error(`Triangle exited (code ${code}): internal error`));
+        };
         const done = () => {
           clearTimeout(timer);
           w.off('message', onMessage).off('error', onError).off('exit', onExit);

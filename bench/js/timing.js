@@ -31,7 +31,8 @@ export async function alternate(contenders, rounds) {
         r.times.push(elapsed);
         r.summary = c.describe(output);
       } catch (error) {
-        r.error = `${error?.name ?? 'Error'}: ${String(error?.message ?? error).split('\n')[0].slice(0, 120)}`;
+        const firstLine = String(error?.message ?? error).split('\n')[0];
+        r.error = `${error?.name ?? 'Error'}: ${firstLine.slice(0, 120)}`;
       }
     }
   }

@@ -4,7 +4,7 @@
 // Every routine here is exact provided no intermediate result overflows or needs bits
 // below the normal range; the callers guarantee that by scaling (see predicates_range.h).
 // They also rely on round-to-nearest binary64 without FMA contraction, hence the
-// -ffp-contract=off on the core.
+// -ffp-contract=off on the core. Names are snake_case, as in the papers (see predicates.h).
 #include <cmath>
 
 #include "geocdt/predicates.h"

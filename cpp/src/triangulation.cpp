@@ -42,9 +42,10 @@ Triangulation& Triangulation::operator=(Triangulation&&) noexcept = default;
 
 std::size_t Triangulation::vertexCount() const { return state_->delaunay.vertexCount(); }
 const std::vector<double>& Triangulation::points() const { return state_->delaunay.xy; }
-const Stats& Triangulation::stats() const {
-  state_->delaunay.stats.gridSize = state_->delaunay.gridSize();
-  return state_->delaunay.stats;
+Stats Triangulation::stats() const {
+  Stats s = state_->delaunay.stats;
+  s.gridSize = state_->delaunay.gridSize();
+  return s;
 }
 std::size_t Triangulation::polylineCount() const {
   return state_->delaunay.constraints.polylineCount;
@@ -91,7 +92,10 @@ Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
 
 Location Triangulation::locate(double x, double y) const {
   Location loc;
-  if (!std::isfinite(x) || !std::isfinite(y)) return loc;
+  if (!std::isfinite(x) || !std::isfinite(y)) {
+    loc.kind = Location::Kind::Invalid;
+    return loc;
+  }
   Delaunay& d = state_->delaunay;
   const Hit h = d.locate(x, y, true);
   const Topology& topo = d.topo;
@@ -143,6 +147,8 @@ Status triangulate(const double* xy, std::size_t count, const PolylineView* poly
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
                    std::vector<std::uint32_t>* inputToVertex) {
+  if (polylineCount > 0 && polylines == nullptr)
+    return {StatusCode::InvalidArgument, "null polylines with a count"};
   Triangulation t(options);
   std::vector<std::uint32_t> ids;
   Status s;

@@ -1,5 +1,6 @@
 // `npm run demo:build`: builds the static demo into demo/dist (page, worker, wasm, data).
-// geocdt's wasm is built first when it is missing (a fresh clone after `npm ci`).
+// geocdt's wasm is built first when it is missing. (`npm run demo` and `npm run demo:build`
+// run scripts/ensure-deps.sh before, which also rebuilds a stale one.)
 import { spawnSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';

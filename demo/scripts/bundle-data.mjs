@@ -86,7 +86,8 @@ function openLines(q) {
 }
 
 function layerOf(topology, name, role, lines) {
-  return { name, role, scale: topology.transform.scale, translate: topology.transform.translate, lines };
+  const { scale, translate } = topology.transform;
+  return { name, role, scale, translate, lines };
 }
 
 export function buildDataset({ atlas, rivers, riverLevels }, dataDir) {
@@ -100,7 +101,9 @@ export function buildDataset({ atlas, rivers, riverLevels }, dataDir) {
     const g = f.geometry;
     const polygons = g.type === 'Polygon' ? [g.coordinates] : g.coordinates;
     for (const polygon of polygons) {
-      for (const ring of polygon) for (const piece of cutRing(ring)) rings.push(quantize(land, piece));
+      for (const ring of polygon) {
+        for (const piece of cutRing(ring)) rings.push(quantize(land, piece));
+      }
     }
   }
 
@@ -112,7 +115,8 @@ export function buildDataset({ atlas, rivers, riverLevels }, dataDir) {
   const levels = new Set(riverLevels);
   const riverObject = {
     ...riverTopology.objects.rivers,
-    geometries: riverTopology.objects.rivers.geometries.filter((g) => levels.has(g.properties.level)),
+    geometries: riverTopology.objects.rivers.geometries
+      .filter((g) => levels.has(g.properties.level)),
   };
   const riverLines = feature(riverTopology, riverObject).features.flatMap((f) =>
     cutLine(f.geometry.coordinates).flatMap((piece) => openLines(quantize(riverTopology, piece))));

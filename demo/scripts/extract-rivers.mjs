@@ -41,7 +41,9 @@ const topology = {
   objects: {
     rivers: {
       type: 'GeometryCollection',
-      geometries: lines.map((l, i) => ({ type: 'LineString', arcs: [i], properties: { level: l.level } })),
+      geometries: lines.map((l, i) => ({
+        type: 'LineString', arcs: [i], properties: { level: l.level },
+      })),
     },
   },
   arcs,
@@ -49,7 +51,8 @@ const topology = {
 const out = new URL(`../data/rivers-${resolution}.topo.json`, import.meta.url);
 writeFileSync(out, JSON.stringify(topology));
 const pointCount = lines.reduce((n, l) => n + l.points.length, 0);
-console.log(`${segments.length} bin segments -> ${lines.length} lines, ${pointCount} points -> ${out.pathname}`);
+console.log(`${segments.length} bin segments -> ${lines.length} lines, ${pointCount} points ` +
+  `-> ${out.pathname}`);
 
 function key(p) {
   return `${p[0]},${p[1]}`;

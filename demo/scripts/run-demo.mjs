@@ -1,4 +1,6 @@
-// `npm run demo`: builds the demo, serves it on localhost and prints its URL.
+// `npm run demo`: builds the demo, serves it on localhost and prints its URL. npm runs
+// scripts/ensure-deps.sh demo first, which installs what a fresh clone lacks and builds the
+// wasm when it is missing or stale.
 // Options: --port N (default 8080, or the next free one), --no-build (serve demo/dist as is).
 import { buildDemo, distDir } from './build-demo.mjs';
 import { serveDirectory } from './static-server.mjs';

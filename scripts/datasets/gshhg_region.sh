@@ -9,7 +9,10 @@ set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 out_dir=${1:-"$here/../../build/data"}
 region=${2:-"-12/45/33/68"}
-command -v gmt >/dev/null || { echo "gmt is missing: apt-get install gmt gmt-gshhg-full" >&2; exit 1; }
+if ! command -v gmt >/dev/null; then
+  echo "gmt is missing: apt-get install gmt gmt-gshhg-full" >&2
+  exit 1
+fi
 mkdir -p "$out_dir"
 out="$(cd "$out_dir" && pwd)/gshhg_region.gpl"
 # gmt leaves a gmt.history file in its working folder: give it a scratch one.

@@ -463,5 +463,20 @@ TEST(Constraints, InvalidPolylineNamesItAndInsertsNothing) {
   EXPECT_EQ(t.vertexCount(), 0u);
 }
 
+TEST(Constraints, OneShotWithNullPolylinesAndACountIsInvalidArgument) {
+  const std::vector<double> xy = {0, 0, 1, 0, 0, 1};
+  Mesh m;
+  m.points = {7, 7};  // left as it was
+  std::vector<std::uint32_t> ids = {9};
+  const Status s = triangulate(xy.data(), 3, nullptr, 2, {}, {}, m, &ids);
+  EXPECT_EQ(s.code, StatusCode::InvalidArgument);
+  EXPECT_NE(s.message.find("null polylines"), std::string::npos) << s.message;
+  EXPECT_EQ(m.points, (std::vector<double>{7, 7}));
+  EXPECT_EQ(ids, (std::vector<std::uint32_t>{9}));
+  // No polylines and a null pointer is the ordinary points-only call.
+  EXPECT_TRUE(triangulate(xy.data(), 3, nullptr, 0, {}, {}, m, &ids).ok());
+  EXPECT_EQ(m.triangles.size(), 3u);
+}
+
 }  // namespace
 }  // namespace geocdt

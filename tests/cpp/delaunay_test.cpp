@@ -271,6 +271,45 @@ TEST(Delaunay, LocateAgreesWithExactPredicates) {
   }
 }
 
+TEST(Delaunay, LocateAnswersInvalidForNonFiniteCoordinates) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const double bad[][2] = {{nan, 1}, {1, nan}, {inf, 1}, {1, -inf}, {nan, inf}};
+  Triangulation t;
+  // Empty only while there are no triangles; a non-finite query is Invalid even then.
+  EXPECT_EQ(t.locate(1, 1).kind, Location::Kind::Empty);
+  EXPECT_EQ(t.locate(nan, 1).kind, Location::Kind::Invalid);
+  const std::vector<double> xy = testing::latticePoints(4);
+  ASSERT_TRUE(t.insertPoints(xy.data(), xy.size() / 2).ok());
+  const std::uint64_t locates = t.stats().locates;
+  for (const auto& q : bad) {
+    const Location loc = t.locate(q[0], q[1]);
+    EXPECT_EQ(loc.kind, Location::Kind::Invalid) << q[0] << "," << q[1];
+    EXPECT_EQ(loc.triangle, -1);
+  }
+  EXPECT_EQ(t.stats().locates, locates);  // nothing was walked
+  // Finite coordinates beyond what insertPoints accepts are still positions: outside.
+  const double huge = std::numeric_limits<double>::max();
+  EXPECT_EQ(t.locate(huge, -huge).kind, Location::Kind::Outside);
+  EXPECT_EQ(t.locate(1.5, 1.5).kind, Location::Kind::Edge);
+}
+
+TEST(Delaunay, StatsIsACopyAndLocateCountsItsWalk) {
+  const std::vector<double> xy = testing::uniformPoints(1000, 12);
+  Triangulation t;
+  ASSERT_TRUE(t.insertPoints(xy.data(), 1000).ok());
+  const Stats before = t.stats();
+  EXPECT_EQ(before.inserted, 1000u);
+  EXPECT_GT(before.gridSize, 1u);
+  // locate() is const but counts (see the header): one more location, at least one step.
+  t.locate(0.5, 0.5);
+  const Stats after = t.stats();
+  EXPECT_EQ(after.locates, before.locates + 1);
+  EXPECT_GT(after.walkSteps, before.walkSteps);
+  EXPECT_EQ(after.inserted, before.inserted);
+  EXPECT_EQ(after.gridSize, before.gridSize);
+}
+
 TEST(Delaunay, WalkStaysShortInHilbertOrder) {
   // Not a timing: the number of triangles visited per insertion, which the paper's O(N)
   // argument needs to stay flat as n grows.

@@ -52,7 +52,8 @@ after(async () => {
 });
 
 async function waitForStatus(statuses, timeout = READY_TIMEOUT) {
-  await page.waitForFunction((s) => s.includes(document.body.dataset.status), statuses, { timeout });
+  await page.waitForFunction((s) => s.includes(document.body.dataset.status), statuses,
+    { timeout });
 }
 
 // Waits until the page has handled the change that `action` starts.
@@ -65,6 +66,7 @@ async function settle(action, statuses = ['ready']) {
 async function readStats() {
   return page.evaluate(() => {
     const number = (id) => Number(document.getElementById(id).textContent.replace(/[^\d.]/g, ''));
+    const errorBox = document.getElementById('error');
     return {
       status: document.body.dataset.status,
       points: number('stat-points'),
@@ -76,7 +78,7 @@ async function readStats() {
       triangulateMs: number('stat-triangulate-ms'),
       totalMs: number('stat-total-ms'),
       renderer: document.getElementById('stat-renderer').textContent,
-      error: document.getElementById('error').hidden ? null : document.getElementById('error').textContent,
+      error: errorBox.hidden ? null : errorBox.textContent,
       raw: window.geocdtDemo.stats,
     };
   });
@@ -101,7 +103,8 @@ function stopFrameLog() {
 }
 
 async function dropFile(name, text) {
-  await page.setInputFiles('#file', { name, mimeType: 'application/geo+json', buffer: Buffer.from(text) });
+  const buffer = Buffer.from(text);
+  await page.setInputFiles('#file', { name, mimeType: 'application/geo+json', buffer });
 }
 
 test('the bundled Natural Earth dataset is triangulated and drawn', async () => {
@@ -127,7 +130,8 @@ test('the worker projects exactly as Leaflet\'s EPSG3857', async () => {
   }, lonLats);
   const ours = projectLonLat(lonLats.flat());
   leaflet.forEach(([x, y], i) => {
-    assert.ok(Math.abs(ours[2 * i] - x) < 1e-6 && Math.abs(ours[2 * i + 1] - y) < 1e-6, `at ${lonLats[i]}`);
+    const close = Math.abs(ours[2 * i] - x) < 1e-6 && Math.abs(ours[2 * i + 1] - y) < 1e-6;
+    assert.ok(close, `at ${lonLats[i]}`);
   });
 });
 
@@ -142,7 +146,9 @@ const SQUARE = {
     { type: 'Feature', properties: {}, geometry: { type: 'MultiLineString', coordinates: [
       [[1, 1], [5, 5]], [[1, 5], [5, 1]],
     ] } },
-    { type: 'Feature', properties: {}, geometry: { type: 'MultiPoint', coordinates: [[2, 8], [8, 2], [4, 4.5]] } },
+    { type: 'Feature', properties: {}, geometry: {
+      type: 'MultiPoint', coordinates: [[2, 8], [8, 2], [4, 4.5]],
+    } },
   ],
 };
 
@@ -191,12 +197,15 @@ test('clicks add points and constraint segments through the incremental API', as
 
 test('bad files are reported on the page, and the map keeps the last good mesh', async () => {
   const before = await readStats();
-  await settle(() => dropFile('broken.geojson', '{"type": "FeatureCollection", "features": ['), ['error']);
+  const broken = '{"type": "FeatureCollection", "features": [';
+  await settle(() => dropFile('broken.geojson', broken), ['error']);
   let s = await readStats();
   assert.match(s.error, /broken\.geojson: not valid JSON/);
   assert.equal(s.triangles, before.triangles);
 
-  const badPosition = { type: 'Feature', geometry: { type: 'LineString', coordinates: [[0, 0], ['a', 1]] } };
+  const badPosition = {
+    type: 'Feature', geometry: { type: 'LineString', coordinates: [[0, 0], ['a', 1]] },
+  };
   await settle(() => dropFile('bad.geojson', JSON.stringify(badPosition)), ['error']);
   s = await readStats();
   assert.match(s.error, /a position is not two finite numbers/);
@@ -226,7 +235,8 @@ test('a failing worker (here: the wasm cannot be fetched) is reported on the pag
   broken.on('pageerror', (e) => errors.push(String(e)));
   await broken.route('**/*.wasm', (route) => route.abort());
   await broken.goto(page.url());
-  await broken.waitForFunction(() => document.body.dataset.status === 'failed', null, { timeout: 60_000 });
+  await broken.waitForFunction(() => document.body.dataset.status === 'failed', null,
+    { timeout: 60_000 });
   const message = await broken.locator('#error').textContent();
   assert.match(message, /the triangulation (failed|worker crashed)/);
   assert.ok(await broken.locator('#error').isVisible());
@@ -242,12 +252,14 @@ test('Natural Earth 10m (500k+ triangles) loads with WebGL and stays pannable', 
   const s = await readStats();
   const gaps = await page.evaluate(stopFrameLog);
   console.log('# world-10m:', JSON.stringify(s.raw));
-  console.log(`# frames while loading 10m: ${gaps.length}, longest gap ${Math.round(Math.max(...gaps))} ms`);
+  const longestGap = Math.round(Math.max(...gaps));
+  console.log(`# frames while loading 10m: ${gaps.length}, longest gap ${longestGap} ms`);
   assert.equal(s.status, 'ready', s.error);
   assert.ok(s.triangles > 500_000, `triangles: ${s.triangles}`);
   // The worker triangulates off the main thread: the page kept painting meanwhile.
   const loadSeconds = gaps.reduce((a, b) => a + b, 0) / 1000;
-  assert.ok(gaps.length > 10 * loadSeconds, `${gaps.length} frames in ${loadSeconds.toFixed(1)} s of loading`);
+  assert.ok(gaps.length > 10 * loadSeconds,
+    `${gaps.length} frames in ${loadSeconds.toFixed(1)} s of loading`);
   assert.match(s.renderer, /^WebGL/);
 
   // Drag the map by hand: the frames painted meanwhile are the user's experience of panning.
@@ -266,8 +278,10 @@ test('Natural Earth 10m (500k+ triangles) loads with WebGL and stays pannable', 
   const afterFrames = await page.evaluate(stopFrameLog);
   const sorted = [...dragFrames].sort((a, b) => a - b);
   const median = sorted[sorted.length >> 1];
-  console.log(`# dragging the 10m mesh: ${dragFrames.length} frames, median ${median.toFixed(1)} ms, ` +
-    `longest ${Math.max(...dragFrames).toFixed(0)} ms; redraw after the drag: longest frame ${Math.max(...afterFrames).toFixed(0)} ms`);
+  const longest = (frames) => Math.max(...frames).toFixed(0);
+  console.log(`# dragging the 10m mesh: ${dragFrames.length} frames, ` +
+    `median ${median.toFixed(1)} ms, longest ${longest(dragFrames)} ms; ` +
+    `redraw after the drag: longest frame ${longest(afterFrames)} ms`);
   assert.ok(dragFrames.length >= 10, `only ${dragFrames.length} frames painted while dragging`);
   assert.ok(median < 100, `median frame while dragging: ${median} ms`);
   const moved = await page.evaluate(() => window.geocdtDemo.map.getCenter());

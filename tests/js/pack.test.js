@@ -27,6 +27,7 @@ test('npm pack ships the wasm and the sources, nothing else', () => {
     'web/index.browser.js', 'web/index.d.ts', 'web/worker.d.ts', 'web/cli.js']) {
     assert.ok(paths.includes(needed), `${needed} is in the tarball`);
   }
+  assert.ok(paths.includes('LICENSE'), 'the licence text is in the tarball');
   assert.ok(paths.every((p) => p === 'package.json' || /^(web\/|README|LICENSE)/.test(p)), `unexpected files: ${paths}`);
 
   const app = join(dir, 'app');
@@ -34,6 +35,9 @@ test('npm pack ships the wasm and the sources, nothing else', () => {
   writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', private: true, type: 'module' }));
   npm(['install', join(dir, filename)], app);
   installed = true;
+  // MIT asks for the licence text to travel with every copy.
+  const licence = readFileSync(join(app, 'node_modules/geocdt/LICENSE'), 'utf8');
+  assert.match(licence, /^MIT License\n\nCopyright \(c\) the geocdt authors\n/);
 });
 
 test('the installed package runs in Node, worker and CLI included', () => {

@@ -20,6 +20,11 @@
 // Requires IEEE binary64 arithmetic rounding to nearest (x86-64 SSE2, ARM64, wasm). The
 // filters stay valid if a compiler fuses their multiply-adds; the exact path is compiled
 // with -ffp-contract=off and uses Dekker splitting, never a hardware FMA.
+//
+// Naming: the exact layer (the detail namespace here, expansion.h, bigint.h,
+// predicates_range.h, predicates*.cpp) is written in snake_case, after the papers it
+// follows (Shewchuk's two_sum, two_product, scale_expansion, b_hi/b_lo, e_len), so that
+// it reads side by side with them. Everything else in geocdt is camelCase.
 #include <cstdint>
 
 namespace geocdt {

@@ -12,7 +12,8 @@ enum class StatusCode {
   InvalidCoordinate,     // NaN, infinity, or |coordinate| > kMaxCoordinate
   OutOfMemory,           // an allocation failed; the triangulation is unchanged or cleared
   ConstraintUnresolved,  // a constraint segment could not be inserted (names polyline/segment)
-  InternalError,         // a broken invariant (walk step bound hit): a bug, reported not hung
+  InternalError,         // a broken invariant (say, point location or a segment walk that
+                         // finds no way on): a bug, reported rather than hung on
 };
 
 inline constexpr std::size_t kNoIndex = static_cast<std::size_t>(-1);

@@ -69,15 +69,18 @@ struct PolylineView {
 };
 
 struct Location {
+  // The values are stable: the bindings pass them on as integers.
   enum class Kind : std::uint8_t {
     Empty,    // fewer than three non-collinear vertices: there are no triangles
     Outside,  // strictly outside the convex hull
     Face,     // strictly inside triangle
     Edge,     // on the edge between vertices[0] and vertices[1] (inside the hull)
     Vertex,   // equal to vertex vertices[0]
+    Invalid,  // x or y is NaN or infinite: not a position, whatever the triangulation holds
   };
   Kind kind = Kind::Empty;
-  std::int64_t triangle = -1;  // index into mesh().triangles / 3, or -1 when outside/empty
+  // Index into mesh().triangles / 3, or -1 when outside, empty or invalid.
+  std::int64_t triangle = -1;
   std::uint32_t vertices[3] = {0, 0, 0};
 };
 
@@ -87,13 +90,17 @@ struct Stats {
   std::uint64_t walkSteps = 0;   // triangles visited by point location
   std::uint64_t locates = 0;     // point locations performed
   std::uint64_t flips = 0;
-  std::uint64_t walkFallbacks = 0;  // visibility walks that gave way to a straight walk
+  std::uint64_t walkFallbacks = 0;  // visibility walks that hit their step bound and gave
+                                    // way to a scan of every triangle
   std::uint32_t gridSize = 0;       // current m of the m x m grid
   std::uint64_t crossings = 0;      // vertices added where constraints cross
   std::uint64_t polylines = 0;
   std::uint64_t segments = 0;  // constraint segments inserted
 };
 
+// One Triangulation serves one thread at a time. Its const functions leave the mesh as it
+// is, but locate() is not a pure read (see there): calls on one Triangulation must not
+// overlap, const or not. Separate Triangulations share nothing.
 class Triangulation {
  public:
   explicit Triangulation(const Options& options = {});
@@ -116,12 +123,17 @@ class Triangulation {
                          std::uint32_t* vertexIds = nullptr);
   std::size_t polylineCount() const;
 
+  // Where (x, y) lies in the triangulation. const because the mesh does not change; but the
+  // call moves the walk's start hints (the grid cell of (x, y) and the last triangle) to
+  // the triangle found, adds to stats().locates and walkSteps, and may rebuild a cached
+  // triangle numbering. Hence the one-thread-at-a-time rule above. A NaN or infinite x or y
+  // answers Kind::Invalid (Empty means only that there are no triangles yet).
   Location locate(double x, double y) const;
 
   std::size_t vertexCount() const;
   std::size_t triangleCount() const;  // real triangles
   const std::vector<double>& points() const;
-  const Stats& stats() const;
+  Stats stats() const;  // a copy of the counters as they are now
 
   Mesh mesh(const MeshOptions& options = {}) const;  // a compact copy, no ghost triangles
   Mesh release(const MeshOptions& options = {});     // the same; leaves this empty
