@@ -45,7 +45,8 @@ export function createApi(instantiate) {
   function triangulateGeoJSON(geojson, options = {}) {
     const { output = 'geojson', ...rest } = options ?? {};
     if (output !== 'geojson' && output !== 'arrays') {
-      throw new TypeError(`geocdt: options.output must be 'geojson' or 'arrays', got ${JSON.stringify(output)}`);
+      throw new TypeError(
+        `geocdt: options.output must be 'geojson' or 'arrays', got ${JSON.stringify(output)}`);
     }
     const input = geoJSONToInput(geojson);
     const mesh = triangulate(input, rest);

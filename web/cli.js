@@ -28,7 +28,10 @@ const BIG_INPUT_POINTS = 200_000;
 class UsageError extends Error {}
 
 function parseArgs(argv) {
-  const args = { input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false, stats: false, quiet: false };
+  const args = {
+    input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false,
+    stats: false, quiet: false,
+  };
   const value = (i, flag) => {
     if (i + 1 >= argv.length) throw new UsageError(`${flag} needs a value`);
     return argv[i + 1];
@@ -48,7 +51,9 @@ function parseArgs(argv) {
     else throw new UsageError(`unexpected argument ${a}`);
   }
   if (!args.help && !args.version && args.input === null) throw new UsageError('no input file');
-  if (!['all', 'inside'].includes(args.keep)) throw new UsageError(`--keep must be all or inside, not ${args.keep}`);
+  if (!['all', 'inside'].includes(args.keep)) {
+    throw new UsageError(`--keep must be all or inside, not ${args.keep}`);
+  }
   if (!['evenodd', 'nonzero'].includes(args.fillRule)) {
     throw new UsageError(`--fill-rule must be evenodd or nonzero, not ${args.fillRule}`);
   }
@@ -80,7 +85,9 @@ async function writeGeoJSON(mesh, stream, progress) {
     for (let t = start; t < end; t++) {
       const a = at(triangles[3 * t]);
       const properties = inside ? `{"inside":${inside[t] === 1}}` : '{}';
-      parts.push(`{"type":"Feature","id":${t},"properties":${properties},"geometry":{"type":"Polygon","coordinates":[[${a},${at(triangles[3 * t + 1])},${at(triangles[3 * t + 2])},${a}]]}}`);
+      const ring = `[[${a},${at(triangles[3 * t + 1])},${at(triangles[3 * t + 2])},${a}]]`;
+      parts.push(`{"type":"Feature","id":${t},"properties":${properties},`
+        + `"geometry":{"type":"Polygon","coordinates":${ring}}}`);
     }
     await write((start === 0 ? '\n' : ',\n') + parts.join(',\n'));
     progress(end, count);
@@ -108,16 +115,21 @@ async function main(argv) {
   try {
     geojson = JSON.parse(text);
   } catch (error) {
-    throw new Error(`${args.input} is not valid JSON: ${error.message}`);
+    throw new Error(`${args.input} is not valid JSON: ${error.message}`, { cause: error });
   }
   const input = geoJSONToInput(geojson);
-  const pointCount = input.points.length / 2 + input.polylines.reduce((s, l) => s + l.length / 2, 0);
-  if (!args.quiet && pointCount >= BIG_INPUT_POINTS) say = (message) => process.stderr.write(`geocdt: ${message}\n`);
+  const pointCount = input.points.length / 2
+    + input.polylines.reduce((s, l) => s + l.length / 2, 0);
+  if (!args.quiet && pointCount >= BIG_INPUT_POINTS) {
+    say = (message) => process.stderr.write(`geocdt: ${message}\n`);
+  }
   say(`read ${n(pointCount)} points (${n(input.polylines.length)} polylines) in ${elapsed()}`);
 
   await init();
-  const mesh = triangulate(input, { keep: args.keep, fillRule: args.fillRule, insideFlags: args.insideFlags });
-  say(`triangulated: ${n(mesh.triangles.length / 3)} triangles in ${mesh.stats.milliseconds.toFixed(0)} ms`);
+  const mesh = triangulate(input,
+    { keep: args.keep, fillRule: args.fillRule, insideFlags: args.insideFlags });
+  const ms = mesh.stats.milliseconds.toFixed(0);
+  say(`triangulated: ${n(mesh.triangles.length / 3)} triangles in ${ms} ms`);
 
   const stream = args.output ? createWriteStream(args.output) : process.stdout;
   let reported = 0;

@@ -1,6 +1,7 @@
 // Turns the core's status values into the exceptions JS callers expect.
 
-const CODES = ['Ok', 'InvalidArgument', 'InvalidCoordinate', 'OutOfMemory', 'ConstraintUnresolved', 'InternalError'];
+const CODES = ['Ok', 'InvalidArgument', 'InvalidCoordinate', 'OutOfMemory', 'ConstraintUnresolved',
+  'InternalError'];
 
 export function outOfMemoryError(detail) {
   const error = new RangeError(

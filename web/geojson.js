@@ -92,7 +92,8 @@ function geometry(g, path, points, polylines) {
         geometry(child, `${path}.geometries[${i}]`, points, polylines));
       break;
     default:
-      throw new TypeError(`geocdt: ${path}.type ${JSON.stringify(g.type)} is not a GeoJSON geometry type`);
+      throw new TypeError(
+        `geocdt: ${path}.type ${JSON.stringify(g.type)} is not a GeoJSON geometry type`);
   }
 }
 
@@ -101,7 +102,8 @@ function geometry(g, path, points, polylines) {
 // every Polygon and MultiPolygon ring becomes a closed constraint that bounds the inside.
 export function geoJSONToInput(geojson) {
   if (geojson === null || typeof geojson !== 'object') {
-    throw new TypeError(`geocdt: expected a GeoJSON object, got ${geojson === null ? 'null' : typeof geojson}`);
+    const got = geojson === null ? 'null' : typeof geojson;
+    throw new TypeError(`geocdt: expected a GeoJSON object, got ${got}`);
   }
   const points = new Coordinates();
   const polylines = [];

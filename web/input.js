@@ -28,7 +28,8 @@ export function checkCoordinates(value, name, owner = '') {
   const typed = value instanceof Float64Array || value instanceof Float32Array;
   if (!typed && !Array.isArray(value)) {
     throw new TypeError(
-      `geocdt: ${name} must be a Float64Array or an array of numbers (x0, y0, x1, y1, ...), got ${describe(value)}`);
+      `geocdt: ${name} must be a Float64Array or an array of numbers (x0, y0, x1, y1, ...), `
+      + `got ${describe(value)}`);
   }
   const n = value.length;
   if (n % 2 !== 0) {
@@ -55,16 +56,19 @@ export function checkCoordinates(value, name, owner = '') {
 
 // { points, polylines } -> checked arrays. Both are optional.
 export function checkInput(input) {
-  if (input === null || typeof input !== 'object' || Array.isArray(input) || ArrayBuffer.isView(input)) {
+  if (input === null || typeof input !== 'object' || Array.isArray(input)
+    || ArrayBuffer.isView(input)) {
     throw new TypeError(
       `geocdt: triangulate() takes an object { points, polylines }, got ${describe(input)}`);
   }
-  const points = input.points == null ? new Float64Array(0) : checkCoordinates(input.points, 'points');
+  const points = input.points == null ? new Float64Array(0)
+    : checkCoordinates(input.points, 'points');
   let polylines = [];
   if (input.polylines != null) {
     if (!Array.isArray(input.polylines)) {
       throw new TypeError(
-        `geocdt: polylines must be an array of Float64Array or number[], got ${describe(input.polylines)}`);
+        'geocdt: polylines must be an array of Float64Array or number[], '
+        + `got ${describe(input.polylines)}`);
     }
     polylines = input.polylines.map((line, i) =>
       checkCoordinates(line, `polylines[${i}]`, ` of polyline ${i}`));
@@ -83,14 +87,16 @@ export function checkOptions(options) {
   }
   const { keep = 'all', fillRule = 'evenodd', insideFlags = false } = options;
   if (typeof keep !== 'string' || !Object.hasOwn(KEEP, keep)) {
-    throw new TypeError(`geocdt: options.keep must be 'all' or 'inside', got ${JSON.stringify(keep)}`);
+    throw new TypeError(
+      `geocdt: options.keep must be 'all' or 'inside', got ${JSON.stringify(keep)}`);
   }
   if (typeof fillRule !== 'string' || !Object.hasOwn(FILL, fillRule)) {
     throw new TypeError(
       `geocdt: options.fillRule must be 'evenodd' or 'nonzero', got ${JSON.stringify(fillRule)}`);
   }
   if (typeof insideFlags !== 'boolean') {
-    throw new TypeError(`geocdt: options.insideFlags must be a boolean, got ${describe(insideFlags)}`);
+    throw new TypeError(
+      `geocdt: options.insideFlags must be a boolean, got ${describe(insideFlags)}`);
   }
   return { keep: KEEP[keep], fill: FILL[fillRule], insideFlags: insideFlags || keep === 'inside' };
 }

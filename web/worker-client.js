@@ -86,7 +86,8 @@ export class GeocdtWorker {
   async triangulateGeoJSON(geojson, options = {}) {
     const { output = 'geojson', ...rest } = options ?? {};
     if (output !== 'geojson' && output !== 'arrays') {
-      throw new TypeError(`geocdt: options.output must be 'geojson' or 'arrays', got ${JSON.stringify(output)}`);
+      throw new TypeError(
+        `geocdt: options.output must be 'geojson' or 'arrays', got ${JSON.stringify(output)}`);
     }
     const mesh = await this.triangulate(geoJSONToInput(geojson), { ...rest, transfer: true });
     return output === 'arrays' ? mesh : meshToGeoJSON(mesh);

@@ -43,7 +43,11 @@ export function createHost(api, post) {
     stats: (id) => live(id).stats,
     counts: (id) => {
       const t = live(id);
-      return { vertexCount: t.vertexCount, triangleCount: t.triangleCount, polylineCount: t.polylineCount };
+      return {
+        vertexCount: t.vertexCount,
+        triangleCount: t.triangleCount,
+        polylineCount: t.polylineCount,
+      };
     },
     dispose: (id) => {
       triangulations.get(id)?.dispose();

@@ -6,7 +6,10 @@ import { GeocdtWorker } from './worker-client.js';
 export { GeocdtWorker, RemoteTriangulation } from './worker-client.js';
 
 export function createWorker() {
-  const worker = new Worker(new URL('./worker-thread.browser.js', import.meta.url), { type: 'module' });
+  // Written in the one form bundlers recognise: the URL inline in the Worker call.
+  const worker = new Worker(new URL('./worker-thread.browser.js', import.meta.url), {
+    type: 'module',
+  });
   const client = new GeocdtWorker({
     post: (message, transfer) => worker.postMessage(message, transfer),
     busy: () => {},

@@ -17,7 +17,8 @@ function workerFlags() {
 }
 
 export function createWorker() {
-  const worker = new Worker(new URL('./worker-thread.node.js', import.meta.url), { execArgv: workerFlags() });
+  const url = new URL('./worker-thread.node.js', import.meta.url);
+  const worker = new Worker(url, { execArgv: workerFlags() });
   const client = new GeocdtWorker({
     post: (message, transfer) => worker.postMessage(message, transfer),
     busy: (isBusy) => (isBusy ? worker.ref() : worker.unref()),

@@ -20,7 +20,8 @@ L.control.scale().addTo(map);
 
 const style = { ...DEFAULT_STYLE };
 const view = new MeshView(map, style, showNotice);
-const worker = new MeshWorker(() => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' }));
+const worker = new MeshWorker(
+  () => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' }));
 const state = { generation: 0, pending: 0, stats: null, source: null, hasMesh: false };
 
 // One round trip: ask the worker, draw the answer, show the numbers. A newer load makes
@@ -50,7 +51,12 @@ async function run(source, ask, { fit = false, isEdit = false } = {}) {
     const now = performance.now();
     state.source = source;
     state.hasMesh = true;
-    state.stats = { ...reply.stats, drawMs: now - drawStarted, totalMs: now - started, renderer: view.drawnWith };
+    state.stats = {
+      ...reply.stats,
+      drawMs: now - drawStarted,
+      totalMs: now - started,
+      renderer: view.drawnWith,
+    };
     showStats(state.stats);
     if (state.pending === 0) setStatus('ready', 'ready');
   } catch (e) {
@@ -69,7 +75,8 @@ async function loadFile(file) {
   if (!file) return;
   editing.finishLine();
   if (file.size > MAX_FILE_BYTES) {
-    showError(`${file.name}: too big for the demo (${format(file.size)} bytes; the limit is ${format(MAX_FILE_BYTES)}).`);
+    showError(`${file.name}: too big for the demo (${format(file.size)} bytes; `
+      + `the limit is ${format(MAX_FILE_BYTES)}).`);
     setStatus(state.hasMesh ? 'error' : 'failed', 'error');
     return;
   }
@@ -79,13 +86,15 @@ async function loadFile(file) {
 
 function fitTo([west, south, east, north]) {
   const clamp = (lat) => Math.max(-85, Math.min(85, lat));
-  map.fitBounds([[clamp(south), west], [clamp(north), east]], { padding: [20, 20], maxZoom: 16, animate: false });
+  map.fitBounds([[clamp(south), west], [clamp(north), east]],
+    { padding: [20, 20], maxZoom: 16, animate: false });
 }
 
 const editing = new MapEditing(map, {
-  onPoint: (lonLat) => state.hasMesh && run(state.source, () => worker.request('addPoint', { lonLat }), { isEdit: true }),
-  onSegment: (from, to) =>
-    state.hasMesh && run(state.source, () => worker.request('addSegment', { from, to }), { isEdit: true }),
+  onPoint: (lonLat) => state.hasMesh
+    && run(state.source, () => worker.request('addPoint', { lonLat }), { isEdit: true }),
+  onSegment: (from, to) => state.hasMesh
+    && run(state.source, () => worker.request('addSegment', { from, to }), { isEdit: true }),
   onModeChange: () => {
     $('finish-line').disabled = !editing.drawing;
   },

@@ -53,7 +53,8 @@ export class MeshWorker {
       e.preventDefault();
       fail(`the triangulation worker crashed: ${e.message || 'it could not start'}`);
     };
-    worker.onmessageerror = () => fail('the triangulation worker sent a message that could not be read');
+    worker.onmessageerror =
+      () => fail('the triangulation worker sent a message that could not be read');
     this._worker = worker;
     return worker;
   }

@@ -17,10 +17,12 @@ self.onmessage = async ({ data: request }) => {
   try {
     await loadWasm();
     const reply = await handle(request);
-    self.postMessage({ id: request.id, ok: true, ...reply }, reply.mesh ? transferablesOf(reply.mesh) : []);
+    self.postMessage({ id: request.id, ok: true, ...reply },
+      reply.mesh ? transferablesOf(reply.mesh) : []);
   } catch (e) {
     // geocdt rejects bad coordinates with a TypeError or RangeError that names them.
-    const checked = (e instanceof TypeError || e instanceof RangeError) && /^geocdt:/.test(e.message);
+    const checked =
+      (e instanceof TypeError || e instanceof RangeError) && /^geocdt:/.test(e.message);
     const userFacing = e && (e.name === 'InputError' || checked);
     self.postMessage({
       id: request.id,
@@ -35,7 +37,7 @@ async function loadWasm() {
   try {
     await init();
   } catch (e) {
-    throw new Error(`could not load geocdt's WebAssembly module (${e.message})`);
+    throw new Error(`could not load geocdt's WebAssembly module (${e.message})`, { cause: e });
   }
 }
 
@@ -136,9 +138,11 @@ function addSegment(from, to) {
 function reply(result, triangulateMs, loadMs, bounds) {
   const started = performance.now();
   const { input } = current;
-  const inputPoints =
-    input.points.length / 2 + input.polylines.reduce((n, l) => n + l.length / 2, 0) + input.addedPoints + 2 * input.addedSegments;
-  const constraints = input.polylines.reduce((n, l) => n + l.length / 2 - 1, 0) + input.addedSegments;
+  const inputPoints = input.points.length / 2
+    + input.polylines.reduce((n, l) => n + l.length / 2, 0)
+    + input.addedPoints + 2 * input.addedSegments;
+  const constraints =
+    input.polylines.reduce((n, l) => n + l.length / 2 - 1, 0) + input.addedSegments;
   const mesh = meshBuffers(result);
   const stats = {
     inputPoints,

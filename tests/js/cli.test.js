@@ -16,7 +16,8 @@ const dir = mkdtempSync(join(tmpdir(), 'geocdt-cli-'));
 before(() => init());
 
 function run(args, input) {
-  return spawnSync(process.execPath, [cli, ...args], { encoding: 'utf8', input, maxBuffer: 1 << 30 });
+  return spawnSync(process.execPath, [cli, ...args],
+    { encoding: 'utf8', input, maxBuffer: 1 << 30 });
 }
 
 function multiPointFile(n) {
@@ -24,7 +25,8 @@ function multiPointFile(n) {
   const coordinates = [];
   for (let i = 0; i < xy.length; i += 2) coordinates.push([xy[i], xy[i + 1]]);
   const path = join(dir, `points-${n}.geojson`);
-  writeFileSync(path, JSON.stringify({ type: 'Feature', properties: {}, geometry: { type: 'MultiPoint', coordinates } }));
+  const geometry = { type: 'MultiPoint', coordinates };
+  writeFileSync(path, JSON.stringify({ type: 'Feature', properties: {}, geometry }));
   return path;
 }
 
@@ -35,7 +37,8 @@ test('writes the same FeatureCollection as the API', () => {
   assert.equal(p.status, 0, p.stderr);
   assert.equal(p.stderr, '', 'small inputs print nothing');
   const written = JSON.parse(readFileSync(out, 'utf8'));
-  const expected = meshToGeoJSON(triangulateGeoJSON(JSON.parse(readFileSync(input, 'utf8')), { output: 'arrays' }));
+  const arrays = triangulateGeoJSON(JSON.parse(readFileSync(input, 'utf8')), { output: 'arrays' });
+  const expected = meshToGeoJSON(arrays);
   assert.deepEqual(written, expected);
 });
 
@@ -43,7 +46,8 @@ test('reads stdin and writes stdout', () => {
   const geojson = readFileSync(multiPointFile(50), 'utf8');
   const p = run(['-'], geojson);
   assert.equal(p.status, 0, p.stderr);
-  assert.equal(JSON.parse(p.stdout).features.length, triangulateGeoJSON(JSON.parse(geojson)).features.length);
+  assert.equal(JSON.parse(p.stdout).features.length,
+    triangulateGeoJSON(JSON.parse(geojson)).features.length);
 });
 
 test('--stats and progress for a big input go to stderr', () => {
@@ -89,6 +93,7 @@ test('usage errors exit 2, bad input exits 1, both with a message', () => {
 
 test('--help and --version', () => {
   assert.match(run(['--help']).stdout, /Usage: geocdt/);
-  const version = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8')).version;
+  const pkg = new URL('../../package.json', import.meta.url);
+  const version = JSON.parse(readFileSync(pkg, 'utf8')).version;
   assert.equal(run(['--version']).stdout.trim(), version);
 });

@@ -8,7 +8,8 @@ before(() => init());
 
 function throwsWith(fn, Type, pattern) {
   assert.throws(fn, (error) => {
-    assert.ok(error instanceof Type, `expected ${Type.name}, got ${error?.name}: ${error?.message}`);
+    assert.ok(error instanceof Type,
+      `expected ${Type.name}, got ${error?.name}: ${error?.message}`);
     assert.match(error.message, pattern);
     return true;
   });

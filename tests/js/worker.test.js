@@ -56,7 +56,8 @@ test('the host transfers every result buffer back', async () => {
 test('errors keep their type and message across the worker', async () => {
   await assert.rejects(worker.triangulate({ points: [0, 0, 1] }), { name: 'RangeError', message: /odd length/ });
   await assert.rejects(worker.triangulate({ points: [0, 0, 1, NaN] }), { name: 'RangeError', message: /points\[3\]/ });
-  await assert.rejects(worker.triangulate({ points: [0, 0] }, { keep: 'most' }), { name: 'TypeError' });
+  await assert.rejects(worker.triangulate({ points: [0, 0] }, { keep: 'most' }),
+    { name: 'TypeError' });
   const t = worker.createTriangulation();
   await t.dispose();
   await assert.rejects(t.insertPoints([0, 0]), { message: /no Triangulation 1 in this worker/ });
@@ -91,8 +92,11 @@ test('memoryUsage and GeoJSON through the worker', async () => {
 
 test('an idle worker does not keep node running', async () => {
   const { spawnSync } = await import('node:child_process');
-  const script = "import { createWorker } from 'geocdt/worker'; const w = createWorker(); const r = await w.triangulate({ points: [0, 0, 1, 0, 0, 1] }); console.log(r.triangles.length);";
-  const p = spawnSync(process.execPath, ['--input-type=module', '-e', script], { encoding: 'utf8', timeout: 20_000 });
+  const script = "import { createWorker } from 'geocdt/worker'; const w = createWorker(); "
+    + 'const r = await w.triangulate({ points: [0, 0, 1, 0, 0, 1] }); '
+    + 'console.log(r.triangles.length);';
+  const p = spawnSync(process.execPath, ['--input-type=module', '-e', script],
+    { encoding: 'utf8', timeout: 20_000 });
   assert.equal(p.status, 0, p.stderr);
   assert.equal(p.stdout.trim(), '3');
 });
