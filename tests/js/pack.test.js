@@ -10,6 +10,7 @@ import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
 import { extname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { checkProgressEvents } from './support/progress.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const here = fileURLToPath(new URL('./pack/', import.meta.url));
@@ -106,6 +107,11 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
     assert.equal(result.workerTriangles, result.triangles);
     assert.equal(result.transferred, true);
     assert.equal(result.located, 'face');
+    // onProgress in the page and through the module Web Worker.
+    checkProgressEvents(result.syncProgress);
+    checkProgressEvents(result.workerProgress);
+    assert.deepEqual(result.syncProgress.at(-1), { phase: 'export', fraction: 1 });
+    assert.deepEqual(result.workerProgress.at(-1), { phase: 'export', fraction: 1 });
   } finally {
     await browser.close();
     server.close();

@@ -3,17 +3,9 @@
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { init, triangulate, Triangulation, memoryUsage } from 'geocdt';
+import { throwsWith } from './support/throws.js';
 
 before(() => init());
-
-function throwsWith(fn, Type, pattern) {
-  assert.throws(fn, (error) => {
-    assert.ok(error instanceof Type,
-      `expected ${Type.name}, got ${error?.name}: ${error?.message}`);
-    assert.match(error.message, pattern);
-    return true;
-  });
-}
 
 function stillWorks() {
   const r = triangulate({ points: [0, 0, 1, 0, 0, 1] });
@@ -24,7 +16,10 @@ test('wrong types', () => {
   throwsWith(() => triangulate(), TypeError, /takes an object \{ points, polylines \}, got undefined/);
   throwsWith(() => triangulate([0, 0, 1, 1]), TypeError, /takes an object/);
   throwsWith(() => triangulate({ points: 'abc' }), TypeError, /points must be a Float64Array or an array of numbers.*got string/);
-  throwsWith(() => triangulate({ points: new Int32Array(4) }), TypeError, /got a Int32Array/);
+  throwsWith(() => triangulate({ points: new BigInt64Array(4) }), TypeError,
+    /got a BigInt64Array/);
+  throwsWith(() => triangulate({ points: new DataView(new ArrayBuffer(16)) }), TypeError,
+    /got a DataView/);
   throwsWith(() => triangulate({ points: [0, 0, '1', 2] }), TypeError, /points\[2\] must be a number, got string/);
   throwsWith(() => triangulate({ points: [0, 0, 1, null] }), TypeError, /points\[3\] must be a number, got null/);
   throwsWith(() => triangulate({ polylines: [0, 1, 2, 3] }), TypeError, /polylines\[0\] must be a Float64Array/);
