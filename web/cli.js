@@ -4,6 +4,7 @@ import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
 import { geoJSONToInput, init, triangulate } from './index.node.js';
+import { ProgressDisplay } from './progress-display.js';
 
 const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
 
@@ -18,11 +19,11 @@ Options:
   --fill-rule <evenodd|nonzero>  how rings decide inside (default: evenodd)
   --inside-flags             add properties.inside to every triangle
   --stats                    print statistics to stderr
-  --quiet                    no progress messages, even for big inputs
+  --quiet                    no progress (a bar on a terminal, lines otherwise)
   -h, --help                 show this help
   -v, --version              show the version`;
 
-// Inputs at least this big report progress on stderr.
+// Inputs at least this big report progress on stderr: a bar on a terminal, lines otherwise.
 const BIG_INPUT_POINTS = 200_000;
 
 class UsageError extends Error {}
@@ -109,6 +110,7 @@ async function main(argv) {
   const started = performance.now();
   const elapsed = () => `${((performance.now() - started) / 1000).toFixed(2)} s`;
   let say = () => {};
+  let show = null;
 
   const text = await readInput(args.input);
   let geojson;
@@ -117,29 +119,28 @@ async function main(argv) {
   } catch (error) {
     throw new Error(`${args.input} is not valid JSON: ${error.message}`, { cause: error });
   }
-  const input = geoJSONToInput(geojson);
-  const pointCount = input.points.length / 2
-    + input.polylines.reduce((s, l) => s + l.length / 2, 0);
+  const input = geoJSONToInput(geojson, { flat: true });
+  const lines = input.polylines.offsets.length - 1;
+  const pointCount = input.points.length / 2 + input.polylines.offsets[lines];
   if (!args.quiet && pointCount >= BIG_INPUT_POINTS) {
-    say = (message) => process.stderr.write(`geocdt: ${message}\n`);
+    const display = new ProgressDisplay(process.stderr);
+    say = (message) => display.line(message);
+    show = (label, fraction) => display.update(label, fraction);
   }
-  say(`read ${n(pointCount)} points (${n(input.polylines.length)} polylines) in ${elapsed()}`);
+  say(`read ${n(pointCount)} points (${n(lines)} polylines) in ${elapsed()}`);
 
   await init();
-  const mesh = triangulate(input,
-    { keep: args.keep, fillRule: args.fillRule, insideFlags: args.insideFlags });
+  const mesh = triangulate(input, {
+    keep: args.keep,
+    fillRule: args.fillRule,
+    insideFlags: args.insideFlags,
+    onProgress: show && (({ phase, fraction }) => show(`triangulating: ${phase}`, fraction)),
+  });
   const ms = mesh.stats.milliseconds.toFixed(0);
   say(`triangulated: ${n(mesh.triangles.length / 3)} triangles in ${ms} ms`);
 
   const stream = args.output ? createWriteStream(args.output) : process.stdout;
-  let reported = 0;
-  await writeGeoJSON(mesh, stream, (done, total) => {
-    const percent = Math.floor((100 * done) / total);
-    if (percent >= reported + 25 || done === total) {
-      reported = percent;
-      say(`writing ${percent}%`);
-    }
-  });
+  await writeGeoJSON(mesh, stream, (done, total) => show?.('writing', done / total));
   if (stream !== process.stdout) {
     stream.end();
     await once(stream, 'finish');
@@ -155,6 +156,7 @@ async function main(argv) {
 
 main(process.argv.slice(2)).catch((error) => {
   const usage = error instanceof UsageError;
-  process.stderr.write(`geocdt: ${error.message.replace(/^geocdt: /, '')}\n${usage ? 'Try geocdt --help\n' : ''}`);
+  const hint = usage ? 'Try geocdt --help\n' : '';
+  process.stderr.write(`geocdt: ${error.message.replace(/^geocdt: /, '')}\n${hint}`);
   process.exitCode = usage ? 2 : 1;
 });

@@ -7,6 +7,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { init, meshToGeoJSON, triangulateGeoJSON } from 'geocdt';
+import { ProgressDisplay } from '../../web/progress-display.js';
 import { uniform } from './support/inputs.js';
 
 const cli = fileURLToPath(new URL('../../web/cli.js', import.meta.url));
@@ -57,6 +58,10 @@ test('--stats and progress for a big input go to stderr', () => {
   assert.match(p.stderr, /geocdt: read 250,000 points/);
   assert.match(p.stderr, /geocdt: triangulated: [\d,]+ triangles in \d+ ms/);
   assert.match(p.stderr, /geocdt: writing 100%/);
+  // Not a terminal: plain lines, one per phase and quarter, never a bar.
+  assert.match(p.stderr, /^geocdt: triangulating: points \d+%$/m);
+  assert.match(p.stderr, /^geocdt: triangulating: export 100%$/m);
+  assert.doesNotMatch(p.stderr, /\r|\[#/);
   assert.match(p.stderr, /inserted\s+250,000/);
   assert.ok(JSON.parse(readFileSync(out, 'utf8')).features.length > 490_000);
 });
@@ -96,4 +101,31 @@ test('--help and --version', () => {
   const pkg = new URL('../../package.json', import.meta.url);
   const version = JSON.parse(readFileSync(pkg, 'utf8')).version;
   assert.equal(run(['--version']).stdout.trim(), version);
+});
+
+test('on a terminal, progress is one bar redrawn in place', () => {
+  const written = [];
+  const display = new ProgressDisplay({ write: (s) => written.push(s) }, true);
+  display.update('triangulating: points', 0);
+  display.update('triangulating: points', 0.004);  // the same bar: not drawn again
+  display.update('triangulating: points', 0.5);
+  display.update('writing', 1);
+  display.line('done in 1.00 s');
+  assert.equal(written.length, 5, JSON.stringify(written));
+  assert.ok(written.slice(0, 3).every((s) => s.startsWith('\r') && s.endsWith('\x1b[K')));
+  assert.match(written[1], /triangulating: points +\[#{15}-{15}\] 50%/);
+  assert.match(written[2], /writing +\[#{30}\] 100%/);
+  assert.equal(written[3], '\r\x1b[K', 'the bar is cleared before a message');
+  assert.equal(written[4], 'geocdt: done in 1.00 s\n');
+});
+
+test('elsewhere, a line when a step starts and at each quarter', () => {
+  const written = [];
+  const display = new ProgressDisplay({ write: (s) => written.push(s) }, false);
+  for (const f of [0, 0.1, 0.26, 0.3, 0.74, 0.75, 1]) display.update('writing', f);
+  display.update('done', 1);
+  // 0.3 is in the quarter 0.26 entered; 0.74 enters the third, 0.75 the fourth.
+  assert.deepEqual(written, ['geocdt: writing 0%\n', 'geocdt: writing 26%\n',
+    'geocdt: writing 74%\n', 'geocdt: writing 75%\n', 'geocdt: writing 100%\n',
+    'geocdt: done 100%\n']);
 });
