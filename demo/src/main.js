@@ -23,6 +23,7 @@ const view = new MeshView(map, style, showNotice);
 const worker = new MeshWorker(
   () => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' }));
 const state = { generation: 0, pending: 0, stats: null, source: null, hasMesh: false };
+const progress = createProgressBar();
 
 // One round trip: ask the worker, draw the answer, show the numbers. A newer load makes
 // older answers stale; edits are applied in the order they were made.
@@ -31,16 +32,20 @@ async function run(source, ask, { fit = false, isEdit = false } = {}) {
   const started = performance.now();
   state.pending++;
   setStatus('working', isEdit ? 'updating…' : `triangulating ${source}…`);
+  const onProgress = ({ phase, fraction }) => {
+    if (generation === state.generation) progress.show(phase, fraction);
+  };
   let reply = null;
   let failure = null;
   try {
-    reply = await ask();
+    reply = await ask(onProgress);
   } catch (e) {
     failure = e;
   } finally {
     state.pending--;
   }
   if (generation !== state.generation) return;
+  progress.hide();
   try {
     if (failure) throw failure;
     hideMessages();
@@ -68,7 +73,8 @@ async function run(source, ask, { fit = false, isEdit = false } = {}) {
 function loadDataset(name) {
   editing.finishLine();
   const url = new URL(`data/${name}.bin`, document.baseURI).href;
-  return run(name, () => worker.request('dataset', { url }), { fit: false });
+  return run(name, (onProgress) => worker.request('dataset', { url }, [], onProgress),
+    { fit: false });
 }
 
 async function loadFile(file) {
@@ -81,7 +87,8 @@ async function loadFile(file) {
     return;
   }
   const bytes = await file.arrayBuffer();
-  await run(file.name, () => worker.request('geojson', { bytes }, [bytes]), { fit: true });
+  await run(file.name,
+    (onProgress) => worker.request('geojson', { bytes }, [bytes], onProgress), { fit: true });
 }
 
 function fitTo([west, south, east, north]) {
@@ -138,6 +145,32 @@ function restyle(change) {
 
 // --- messages and statistics -----------------------------------------------------------
 
+// The bar under the statistics while a triangulation runs: geocdt's phase and how far it is.
+// Every report is also kept in window.geocdtDemo.progress, for automated checks.
+function createProgressBar() {
+  const box = document.createElement('div');
+  box.id = 'progress';
+  box.hidden = true;
+  const bar = document.createElement('progress');
+  bar.max = 1;
+  const label = document.createElement('span');
+  box.append(bar, label);
+  $('stats').before(box);
+  const log = [];
+  return {
+    log,
+    show(phase, fraction) {
+      log.push({ phase, fraction });
+      box.hidden = false;
+      bar.value = fraction;
+      label.textContent = `${phase} ${Math.round(100 * fraction)}%`;
+    },
+    hide() {
+      box.hidden = true;
+    },
+  };
+}
+
 function setStatus(status, text) {
   document.body.dataset.status = status;
   $('stat-status').textContent = text;
@@ -177,6 +210,6 @@ function nextFrame() {
 }
 
 // For automated checks and for the curious in the console.
-window.geocdtDemo = { map, get stats() { return state.stats; } };
+window.geocdtDemo = { map, progress: progress.log, get stats() { return state.stats; } };
 
 loadDataset($('dataset').value);

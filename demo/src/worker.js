@@ -16,7 +16,9 @@ let current = null;
 self.onmessage = async ({ data: request }) => {
   try {
     await loadWasm();
-    const reply = await handle(request);
+    // geocdt reports at most about ten times a second: each report goes straight to the page.
+    const onProgress = (progress) => self.postMessage({ id: request.id, progress });
+    const reply = await handle(request, onProgress);
     self.postMessage({ id: request.id, ok: true, ...reply },
       reply.mesh ? transferablesOf(reply.mesh) : []);
   } catch (e) {
@@ -41,14 +43,14 @@ async function loadWasm() {
   }
 }
 
-async function handle(request) {
+async function handle(request, onProgress) {
   switch (request.type) {
     case 'dataset':
-      return loadDataset(request.url);
+      return loadDataset(request.url, onProgress);
     case 'geojson': {
       const started = performance.now();
       const input = prepareGeoJSON(new TextDecoder().decode(request.bytes));
-      return loadInput(input, performance.now() - started);
+      return loadInput(input, performance.now() - started, onProgress);
     }
     case 'addPoint':
       return addPoint(request.lonLat);
@@ -59,14 +61,14 @@ async function handle(request) {
   }
 }
 
-async function loadDataset(url) {
+async function loadDataset(url, onProgress) {
   const started = performance.now();
   const response = await fetch(url);
   if (!response.ok) throw new Error(`could not load ${url}: HTTP ${response.status}`);
   const layers = decodeDataset(await response.arrayBuffer());
   const input = { points: new Float64Array(0), polylines: [] };
   for (const layer of layers) for (const line of layer.lines) input.polylines.push(line);
-  return loadInput(projectInput(input), performance.now() - started);
+  return loadInput(projectInput(input), performance.now() - started, onProgress);
 }
 
 function prepareGeoJSON(text) {
@@ -96,9 +98,10 @@ function projectInput({ points, polylines }) {
   };
 }
 
-function loadInput(input, loadMs = 0) {
+function loadInput(input, loadMs, onProgress) {
   const started = performance.now();
-  const result = triangulate({ points: input.points, polylines: input.polylines }, MESH_OPTIONS);
+  const result = triangulate({ points: input.points, polylines: input.polylines },
+    { ...MESH_OPTIONS, onProgress });
   const triangulateMs = performance.now() - started;
   current?.incremental?.dispose();
   current = { input, incremental: null };
