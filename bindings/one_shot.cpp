@@ -23,7 +23,7 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
   const std::size_t points = input.pointCount();
   relay.start(std::move(onProgress), points + input.linePointCount());
   Options options;
-  options.progress = relay.hook();
+  if (relay.active()) options.progress = relay.hook();  // else the core never calls out
   const bool ok = guarded(
       out,
       [&] {
@@ -39,7 +39,7 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
         if (status.ok() && !lines.empty())
           status = triangulation.insertPolylines(lines.data(), lines.size(),
                                                  out.inputToVertex.data() + points);
-        input.clear();
+        input.clear();  // the core holds its own copy: the export runs without this one
         if (!status.ok()) {
           out.clear();  // a failed call hands back no arrays
           return status;

@@ -16,6 +16,7 @@ class ProgressRelay {
   // The Progress to put in the core's Options: it reports to this relay, which stays silent
   // between calls and in calls made without a JS function.
   Progress hook() { return {&ProgressRelay::report, this}; }
+  bool active() const { return active_; }
 
   // A call begins; callback is a JS function or undefined. points: how many points the call
   // inserts in all, so that the points phase spans its batches.
