@@ -5,7 +5,7 @@ import { createWorker } from 'geocdt/worker';
 import { init, triangulate, triangulateGeoJSON } from 'geocdt';
 import { createHost } from '../../web/worker-host.js';
 import { checkMesh } from './support/invariants.js';
-import { uniform } from './support/inputs.js';
+import { flatPolylines, uniform } from './support/inputs.js';
 
 const worker = createWorker();
 after(() => worker.terminate());
@@ -99,4 +99,30 @@ test('an idle worker does not keep node running', async () => {
     { encoding: 'utf8', timeout: 20_000 });
   assert.equal(p.status, 0, p.stderr);
   assert.equal(p.stdout.trim(), '3');
+});
+
+test('the worker takes every input form, and transfers any typed array', async () => {
+  const xy = Int16Array.from(uniform(500, 37), (v) => Math.round(v));
+  const lines = [[0, 0, 1000, 1000], [0, 1000, 1000, 0, 500, 0]];
+  const flat = flatPolylines(lines);
+  const here = triangulate({ points: xy, polylines: lines });
+  const sent = { points: xy.slice(), polylines: { coords: Float32Array.from(flat.coords),
+    offsets: Int32Array.from(flat.offsets) } };
+  const { coords, offsets } = sent.polylines;
+  const there = await worker.triangulate(sent);
+  for (const key of ['points', 'triangles', 'halfedges', 'constrained', 'inputToVertex',
+    'sources']) {
+    assert.deepEqual(there[key], here[key], key);
+  }
+  assert.equal(coords.byteLength, 0, 'the flat coordinates were transferred');
+  assert.equal(offsets.byteLength, 0, 'the offsets were transferred');
+  const mixed = await worker.triangulate({ points: Array.from(xy), polylines: lines });
+  assert.deepEqual(mixed.triangles, here.triangles);
+  await assert.rejects(worker.triangulate({ points: [0, 0, 1, 'x'] }),
+    { name: 'TypeError', message: /points\[3\] must be a number, got string/ });
+  const bad = { polylines: { coords: [0, 0, NaN, 1], offsets: [0, 2] } };
+  await assert.rejects(worker.triangulate(bad), {
+    name: 'RangeError',
+    message: /polylines\.coords\[2\] \(x of point 1 of polyline 0\) is NaN/,
+  });
 });
