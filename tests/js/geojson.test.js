@@ -45,12 +45,17 @@ test('an unclosed ring is closed', () => {
 test('bad GeoJSON names the place', () => {
   const at = (geometry) => () =>
     geoJSONToInput({ type: 'FeatureCollection', features: [{ type: 'Feature', geometry }] });
-  assert.throws(at({ type: 'Point', coordinates: [1] }), { name: 'TypeError', message: /features\[0\].geometry.coordinates must be a position/ });
-  assert.throws(at({ type: 'LineString', coordinates: [[0, 0], [1, 'a']] }), { name: 'TypeError', message: /coordinates\[1\]\[1\] must be a number/ });
-  assert.throws(at({ type: 'Polygon', coordinates: [[[0, 0], [NaN, 1], [1, 1], [0, 0]]] }), { name: 'RangeError', message: /coordinates\[0\]\[1\]\[0\] is NaN/ });
-  assert.throws(at({ type: 'Circle', coordinates: [] }), { name: 'TypeError', message: /"Circle" is not a GeoJSON geometry type/ });
+  assert.throws(at({ type: 'Point', coordinates: [1] }),
+    { name: 'TypeError', message: /features\[0\].geometry.coordinates must be a position/ });
+  assert.throws(at({ type: 'LineString', coordinates: [[0, 0], [1, 'a']] }),
+    { name: 'TypeError', message: /coordinates\[1\]\[1\] must be a number/ });
+  assert.throws(at({ type: 'Polygon', coordinates: [[[0, 0], [NaN, 1], [1, 1], [0, 0]]] }),
+    { name: 'RangeError', message: /coordinates\[0\]\[1\]\[0\] is NaN/ });
+  assert.throws(at({ type: 'Circle', coordinates: [] }),
+    { name: 'TypeError', message: /"Circle" is not a GeoJSON geometry type/ });
   assert.throws(() => geoJSONToInput('{}'), TypeError);
-  assert.throws(() => triangulateGeoJSON(small, { output: 'svg' }), { name: 'TypeError', message: /options.output/ });
+  assert.throws(() => triangulateGeoJSON(small, { output: 'svg' }),
+    { name: 'TypeError', message: /options.output/ });
 });
 
 test('meshToGeoJSON writes one counter-clockwise triangle per feature', () => {

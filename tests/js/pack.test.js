@@ -64,7 +64,8 @@ const MIME = {
 
 function serve(folder) {
   const server = createServer((req, res) => {
-    const path = join(folder, new URL(req.url, 'http://localhost').pathname.replace(/\/$/, '/index.html'));
+    const pathname = new URL(req.url, 'http://localhost').pathname;
+    const path = join(folder, pathname.replace(/\/$/, '/index.html'));
     if (!path.startsWith(folder) || !existsSync(path)) {
       res.writeHead(404).end();
       return;

@@ -54,8 +54,10 @@ test('the host transfers every result buffer back', async () => {
 });
 
 test('errors keep their type and message across the worker', async () => {
-  await assert.rejects(worker.triangulate({ points: [0, 0, 1] }), { name: 'RangeError', message: /odd length/ });
-  await assert.rejects(worker.triangulate({ points: [0, 0, 1, NaN] }), { name: 'RangeError', message: /points\[3\]/ });
+  await assert.rejects(worker.triangulate({ points: [0, 0, 1] }),
+    { name: 'RangeError', message: /odd length/ });
+  await assert.rejects(worker.triangulate({ points: [0, 0, 1, NaN] }),
+    { name: 'RangeError', message: /points\[3\]/ });
   await assert.rejects(worker.triangulate({ points: [0, 0] }, { keep: 'most' }),
     { name: 'TypeError' });
   const t = worker.createTriangulation();
