@@ -1,42 +1,58 @@
 #include "incremental.h"
 
+#include <utility>
+
 #include "guard.h"
 #include "one_shot.h"
 
 namespace geocdt::wasm {
 
-bool Incremental::insertPoints(Output& out, std::uintptr_t xy, std::size_t count) {
-  return insert(out, xy, count, false);
+Incremental::Incremental() : triangulation_(options()) {}
+
+Options Incremental::options() {
+  Options options;
+  options.progress = relay_.hook();
+  return options;
 }
 
-bool Incremental::insertPolyline(Output& out, std::uintptr_t xy, std::size_t count) {
-  return insert(out, xy, count, true);
+bool Incremental::insertPoints(Output& out, Input& input, emscripten::val onProgress) {
+  return insert(out, input, false, std::move(onProgress));
 }
 
-bool Incremental::insert(Output& out, std::uintptr_t xy, std::size_t count, bool polyline) {
+bool Incremental::insertPolyline(Output& out, Input& input, emscripten::val onProgress) {
+  return insert(out, input, true, std::move(onProgress));
+}
+
+bool Incremental::insert(Output& out, Input& input, bool polyline, emscripten::val onProgress) {
   out.clear();
-  const auto* coords = reinterpret_cast<const double*>(xy);
+  const std::size_t count = input.pointCount();
+  relay_.start(std::move(onProgress), count);
   bool ok = guarded(
       out,
       [&] {
         out.vertexIds.resize(count);
-        return polyline ? triangulation_.insertPolyline(coords, count, out.vertexIds.data())
-                        : triangulation_.insertPoints(coords, count, out.vertexIds.data());
+        const double* xy = input.points.data();
+        return polyline ? triangulation_.insertPolyline(xy, count, out.vertexIds.data())
+                        : triangulation_.insertPoints(xy, count, out.vertexIds.data());
       },
       "out of memory: the triangulation needs more than the 4 GB a WebAssembly module can "
       "address; it was cleared");
+  input.clear();
+  relay_.finish();
   if (out.status.code == StatusCode::OutOfMemory) {
     // An insertion cut short by an exception may leave the topology half-updated: start over
     // from an empty, valid triangulation rather than hand out a broken one.
-    triangulation_ = Triangulation();
+    triangulation_ = Triangulation(options());
   }
   if (!ok) out.vertexIds.clear();
   return ok;
 }
 
-bool Incremental::mesh(Output& out, int keep, int fill, bool insideFlags) const {
+bool Incremental::mesh(Output& out, Keep keep, FillRule fill, bool insideFlags,
+                       emscripten::val onProgress) {
   out.clear();
-  return guarded(
+  relay_.start(std::move(onProgress), 0);
+  const bool ok = guarded(
       out,
       [&] {
         out.mesh = triangulation_.mesh(meshOptions(keep, fill, insideFlags));
@@ -44,14 +60,25 @@ bool Incremental::mesh(Output& out, int keep, int fill, bool insideFlags) const 
         return Status::success();
       },
       "out of memory while copying the triangulation out; it is unchanged");
+  relay_.finish();
+  return ok;
 }
 
 void Incremental::locate(double x, double y, std::uintptr_t into) const {
-  Location location = triangulation_.locate(x, y);
+  const Location location = triangulation_.locate(x, y);
+  int vertices = 0;
+  switch (location.kind) {
+    case Location::Kind::Face: vertices = 3; break;
+    case Location::Kind::Outside:
+    case Location::Kind::Edge: vertices = 2; break;
+    case Location::Kind::Vertex: vertices = 1; break;
+    default: break;
+  }
   auto* slots = reinterpret_cast<double*>(into);
   slots[0] = static_cast<double>(location.kind);
   slots[1] = static_cast<double>(location.triangle);
-  for (int i = 0; i < 3; ++i) slots[2 + i] = location.vertices[i];
+  slots[2] = vertices;
+  for (int i = 0; i < 3; ++i) slots[3 + i] = location.vertices[i];
 }
 
 }  // namespace geocdt::wasm

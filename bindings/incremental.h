@@ -1,23 +1,31 @@
 #pragma once
 // The object behind the JS Triangulation class: a core Triangulation that results are
 // copied from (never released) so that insertions can go on.
-#include <cstddef>
-#include <cstdint>
+#include <emscripten/val.h>
 
 #include "geocdt/triangulation.h"
+#include "input.h"
 #include "output.h"
+#include "progress.h"
 
 namespace geocdt::wasm {
 
 class Incremental {
  public:
-  // out.vertexIds receives one vertex id per point.
-  bool insertPoints(Output& out, std::uintptr_t xy, std::size_t count);
-  bool insertPolyline(Output& out, std::uintptr_t xy, std::size_t count);
-  bool mesh(Output& out, int keep, int fill, bool insideFlags) const;
-  void stats(Output& out) const { out.stats = triangulation_.stats(); }
+  Incremental();
+  Incremental(const Incremental&) = delete;  // the triangulation's options point at relay_
+  Incremental& operator=(const Incremental&) = delete;
 
-  // Writes kind, triangle, and three vertex ids as five doubles at into.
+  // Insert the coordinates JS wrote into input.points (freed afterwards); out.vertexIds
+  // receives one vertex id per point. onProgress: a JS function (phase, fraction) or
+  // undefined.
+  bool insertPoints(Output& out, Input& input, emscripten::val onProgress);
+  bool insertPolyline(Output& out, Input& input, emscripten::val onProgress);
+  bool mesh(Output& out, Keep keep, FillRule fill, bool insideFlags, emscripten::val onProgress);
+  emscripten::val stats() const { return statsObject(triangulation_.stats()); }
+
+  // Writes kind, triangle, the number of vertices that name the place, and those vertex ids
+  // as six doubles at into.
   void locate(double x, double y, std::uintptr_t into) const;
 
   double vertexCount() const { return static_cast<double>(triangulation_.vertexCount()); }
@@ -25,8 +33,11 @@ class Incremental {
   double polylineCount() const { return static_cast<double>(triangulation_.polylineCount()); }
 
  private:
-  bool insert(Output& out, std::uintptr_t xy, std::size_t count, bool polyline);
+  bool insert(Output& out, Input& input, bool polyline, emscripten::val onProgress);
+  Options options();
 
+  // Declared before the triangulation, whose options point at it.
+  ProgressRelay relay_;
   Triangulation triangulation_;
 };
 

@@ -1,9 +1,12 @@
-// The embind surface. Only numbers, byte addresses and two small classes cross it: bulk data
-// moves through the heap in one copy each way (web/heap.js), never element by element.
+// The embind surface. Numbers, byte addresses, the enums' names and three small classes cross
+// it: bulk data moves through the heap in one copy each way (web/kernel.js), never element by
+// element.
 #include <emscripten/bind.h>
 #include <malloc.h>
 
 #include "incremental.h"
+#include "input.h"
+#include "names.h"
 #include "one_shot.h"
 #include "output.h"
 
@@ -17,12 +20,31 @@ double allocatedBytes() { return static_cast<unsigned>(mallinfo().uordblks); }
 // The allocator's high-water mark of memory taken from the system.
 double peakBytes() { return static_cast<unsigned>(mallinfo().usmblks); }
 
+// Registers every value of an enum numbered 0, 1, 2, ... under its jsName().
+template <typename Enum>
+void registerEnum(const char* name) {
+  emscripten::enum_<Enum> e(name);
+  for (int i = 0; jsName(static_cast<Enum>(i)) != nullptr; ++i)
+    e.value(jsName(static_cast<Enum>(i)), static_cast<Enum>(i));
+}
+
 }  // namespace
 }  // namespace geocdt::wasm
 
 EMSCRIPTEN_BINDINGS(geocdt) {
   using namespace emscripten;
+  using namespace geocdt;
   using namespace geocdt::wasm;
+
+  registerEnum<StatusCode>("StatusCode");
+  registerEnum<Location::Kind>("LocationKind");
+  registerEnum<Keep>("Keep");
+  registerEnum<FillRule>("FillRule");
+  registerEnum<Phase>("Phase");
+  registerEnum<Field>("Field");
+  registerEnum<ElementType>("ElementType");
+  function("elementType", &elementType);
+  constant("maxCoordinate", kMaxCoordinate);
 
   class_<Output>("Output")
       .constructor<>()
@@ -32,8 +54,17 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("message", &Output::message)
       .function("index", &Output::index)
       .function("segment", &Output::segment)
-      .function("stat", &Output::stat)
+      .function("stats", &Output::statsObject)
       .function("clear", &Output::clear);
+
+  class_<Input>("Input")
+      .constructor<>()
+      .function("resize", &Input::resize)
+      .function("pointsAddress", &Input::pointsAddress)
+      .function("lineCoordsAddress", &Input::lineCoordsAddress)
+      .function("lineOffsetsAddress", &Input::lineOffsetsAddress)
+      .function("badOffset", &Input::badOffset)
+      .function("clear", &Input::clear);
 
   class_<Incremental>("Incremental")
       .constructor<>()

@@ -1,45 +1,45 @@
 #include "one_shot.h"
 
+#include <utility>
 #include <vector>
 
 #include "guard.h"
+#include "progress.h"
 
 namespace geocdt::wasm {
 
-MeshOptions meshOptions(int keep, int fill, bool insideFlags) {
+MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags) {
   MeshOptions options;
-  options.keep = keep == 1 ? Keep::Inside : Keep::All;
-  options.fill = fill == 1 ? FillRule::NonZero : FillRule::EvenOdd;
+  options.keep = keep;
+  options.fill = fill;
   options.insideFlags = insideFlags;
   return options;
 }
 
-bool triangulateInto(Output& out, std::uintptr_t xy, std::size_t count, std::uintptr_t lineXY,
-                     std::uintptr_t lineCounts, std::size_t lineCount, int keep, int fill,
-                     bool insideFlags) {
+bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
+                     emscripten::val onProgress) {
   out.clear();
-  return guarded(
+  ProgressRelay relay;
+  const std::size_t points = input.pointCount();
+  relay.start(std::move(onProgress), points + input.linePointCount());
+  Options options;
+  if (relay.active()) options.progress = relay.hook();  // else the core never calls out
+  const bool ok = guarded(
       out,
       [&] {
         // Points first, then all polylines at once (one spatially sorted batch of their
         // points, then their segments), as geocdt::triangulate() does; done here through the
         // class so that the statistics can be read before release() clears them.
-        const auto* coords = reinterpret_cast<const double*>(lineXY);
-        const auto* counts = reinterpret_cast<const std::uint32_t*>(lineCounts);
-        std::vector<PolylineView> lines(lineCount);
-        std::size_t total = count;
-        for (std::size_t i = 0; i < lineCount; ++i) {
-          lines[i] = {coords, counts[i]};
-          coords += 2 * static_cast<std::size_t>(counts[i]);
-          total += counts[i];
-        }
-        out.inputToVertex.resize(total);
-        Triangulation triangulation;
-        Status status = triangulation.insertPoints(reinterpret_cast<const double*>(xy), count,
-                                                   out.inputToVertex.data());
-        if (status.ok() && lineCount > 0)
-          status = triangulation.insertPolylines(lines.data(), lineCount,
-                                                 out.inputToVertex.data() + count);
+        const std::vector<PolylineView> lines = input.polylines();
+        out.inputToVertex.resize(points + input.linePointCount());
+        Triangulation triangulation(options);
+        Status status =
+            triangulation.insertPoints(input.points.data(), points, out.inputToVertex.data());
+        relay.batch(points);
+        if (status.ok() && !lines.empty())
+          status = triangulation.insertPolylines(lines.data(), lines.size(),
+                                                 out.inputToVertex.data() + points);
+        input.clear();  // the core holds its own copy: the export runs without this one
         if (!status.ok()) {
           out.clear();  // a failed call hands back no arrays
           return status;
@@ -50,6 +50,9 @@ bool triangulateInto(Output& out, std::uintptr_t xy, std::size_t count, std::uin
       },
       "out of memory: the triangulation needs more than the 4 GB a WebAssembly module can "
       "address");
+  input.clear();
+  relay.finish();
+  return ok;
 }
 
 }  // namespace geocdt::wasm

@@ -1,5 +1,10 @@
 #include "output.h"
 
+#include <iterator>
+
+// A Field without its case below is an error, not a warning.
+#pragma clang diagnostic error "-Wswitch"
+
 namespace geocdt::wasm {
 namespace {
 
@@ -15,10 +20,73 @@ void release(std::vector<T>& v) {
 
 double indexOrMinusOne(std::size_t i) { return i == kNoIndex ? -1.0 : static_cast<double>(i); }
 
+// Every counter of Stats, under its own name: the names JS sees are the C++ ones.
+struct StatField {
+  const char* name;
+  double (*read)(const Stats&);
+};
+#define GEOCDT_STAT(field)                                              \
+  {                                                                     \
+#field, [](const Stats& s) { return static_cast<double>(s.field); } \
+  }
+constexpr StatField kStatFields[] = {
+    GEOCDT_STAT(inserted), GEOCDT_STAT(duplicates), GEOCDT_STAT(walkSteps),
+    GEOCDT_STAT(locates),  GEOCDT_STAT(flips),      GEOCDT_STAT(walkFallbacks),
+    GEOCDT_STAT(gridSize), GEOCDT_STAT(crossings),  GEOCDT_STAT(polylines),
+    GEOCDT_STAT(segments),
+};
+#undef GEOCDT_STAT
+// Every counter takes 8 bytes (gridSize with its padding): a counter added to Stats and not
+// listed above fails here.
+static_assert(sizeof(Stats) == 8 * std::size(kStatFields),
+              "list the new Stats counter in kStatFields, web/index.d.ts and web/API.md");
+
 }  // namespace
 
-std::uintptr_t Output::data(int field) const {
-  switch (static_cast<Field>(field)) {
+const char* jsName(Field field) {
+  switch (field) {
+    case Field::Points: return "points";
+    case Field::Triangles: return "triangles";
+    case Field::Halfedges: return "halfedges";
+    case Field::Constrained: return "constrained";
+    case Field::ConstraintEdges: return "constraintEdges";
+    case Field::SourceOffsets: return "sourceOffsets";
+    case Field::Sources: return "sources";
+    case Field::Inside: return "inside";
+    case Field::InputToVertex: return "inputToVertex";
+    case Field::VertexIds: return "vertexIds";
+  }
+  return nullptr;
+}
+
+const char* jsName(ElementType type) {
+  switch (type) {
+    case ElementType::Float64: return "Float64";
+    case ElementType::Int32: return "Int32";
+    case ElementType::Uint32: return "Uint32";
+    case ElementType::Uint8: return "Uint8";
+  }
+  return nullptr;
+}
+
+ElementType elementType(Field field) {
+  switch (field) {
+    case Field::Points: return ElementType::Float64;
+    case Field::Halfedges: return ElementType::Int32;
+    case Field::Constrained:
+    case Field::Inside: return ElementType::Uint8;
+    case Field::Triangles:
+    case Field::ConstraintEdges:
+    case Field::SourceOffsets:
+    case Field::Sources:
+    case Field::InputToVertex:
+    case Field::VertexIds: return ElementType::Uint32;
+  }
+  return ElementType::Uint32;
+}
+
+std::uintptr_t Output::data(Field field) const {
+  switch (field) {
     case Field::Points: return address(mesh.points);
     case Field::Triangles: return address(mesh.triangles);
     case Field::Halfedges: return address(mesh.halfedges);
@@ -29,13 +97,12 @@ std::uintptr_t Output::data(int field) const {
     case Field::Inside: return address(mesh.inside);
     case Field::InputToVertex: return address(inputToVertex);
     case Field::VertexIds: return address(vertexIds);
-    case Field::Count: break;
   }
   return 0;
 }
 
-std::size_t Output::size(int field) const {
-  switch (static_cast<Field>(field)) {
+std::size_t Output::size(Field field) const {
+  switch (field) {
     case Field::Points: return mesh.points.size();
     case Field::Triangles: return mesh.triangles.size();
     case Field::Halfedges: return mesh.halfedges.size();
@@ -46,7 +113,6 @@ std::size_t Output::size(int field) const {
     case Field::Inside: return mesh.inside.size();
     case Field::InputToVertex: return inputToVertex.size();
     case Field::VertexIds: return vertexIds.size();
-    case Field::Count: break;
   }
   return 0;
 }
@@ -54,22 +120,13 @@ std::size_t Output::size(int field) const {
 double Output::index() const { return indexOrMinusOne(status.index); }
 double Output::segment() const { return indexOrMinusOne(status.segment); }
 
-// The order is part of the protocol with web/api.js (STAT_NAMES).
-double Output::stat(int which) const {
-  switch (which) {
-    case 0: return static_cast<double>(stats.inserted);
-    case 1: return static_cast<double>(stats.duplicates);
-    case 2: return static_cast<double>(stats.walkSteps);
-    case 3: return static_cast<double>(stats.locates);
-    case 4: return static_cast<double>(stats.flips);
-    case 5: return static_cast<double>(stats.walkFallbacks);
-    case 6: return static_cast<double>(stats.gridSize);
-    case 7: return static_cast<double>(stats.crossings);
-    case 8: return static_cast<double>(stats.polylines);
-    case 9: return static_cast<double>(stats.segments);
-    default: return 0.0;
-  }
+emscripten::val statsObject(const Stats& stats) {
+  emscripten::val object = emscripten::val::object();
+  for (const StatField& f : kStatFields) object.set(f.name, f.read(stats));
+  return object;
 }
+
+emscripten::val Output::statsObject() const { return wasm::statsObject(stats); }
 
 void Output::clear() {
   release(mesh.points);

@@ -2,6 +2,8 @@
 // What one call hands back to JS. The arrays stay in the wasm heap only until JS has copied
 // each of them out with a single slice; clear() then frees them, so no heap view outlives
 // the call that made it.
+#include <emscripten/val.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -12,7 +14,8 @@
 
 namespace geocdt::wasm {
 
-// The order is part of the protocol with web/api.js (OUTPUT_FIELDS).
+// The arrays an Output holds. JS finds them by the names and element types below (registered
+// as embind enums by module.cpp), so this is the only list of them.
 enum class Field : int {
   Points,
   Triangles,
@@ -24,8 +27,14 @@ enum class Field : int {
   Inside,
   InputToVertex,
   VertexIds,
-  Count,
 };
+
+// Named after the JS typed array that holds such elements (Float64Array, ...).
+enum class ElementType : int { Float64, Int32, Uint32, Uint8 };
+
+const char* jsName(Field field);  // nullptr past the last field
+const char* jsName(ElementType type);
+ElementType elementType(Field field);
 
 class Output {
  public:
@@ -36,17 +45,21 @@ class Output {
   Stats stats;
 
   // Byte address and element count of one array in the wasm heap.
-  std::uintptr_t data(int field) const;
-  std::size_t size(int field) const;
+  std::uintptr_t data(Field field) const;
+  std::size_t size(Field field) const;
 
-  int code() const { return static_cast<int>(status.code); }
+  StatusCode code() const { return status.code; }
   std::string message() const { return status.message; }
   // kNoIndex becomes -1 so that JS sees a plain number.
   double index() const;
   double segment() const;
-  double stat(int which) const;
+  // The statistics as a JS object, one property per counter.
+  emscripten::val statsObject() const;
 
   void clear();  // frees every array: the heap returns to where it was before the call
 };
+
+// Stats as a JS object: the one list of the statistics' names.
+emscripten::val statsObject(const Stats& stats);
 
 }  // namespace geocdt::wasm

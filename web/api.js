@@ -1,8 +1,9 @@
 // The public API, shared by the Node and browser entries; each entry passes the function that
 // instantiates the wasm module in its environment.
 import { Kernel } from './kernel.js';
-import { checkCoordinates, checkInput, checkOptions } from './input.js';
-import { geoJSONToInput, meshToGeoJSON } from './geojson.js';
+import { GeocdtError } from './errors.js';
+import { checkCoordinates, checkInput, describe } from './input.js';
+import { geoJSONOutput, readGeoJSON, meshToGeoJSON } from './geojson.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
 
@@ -14,13 +15,23 @@ function finish(mesh, started) {
   return mesh;
 }
 
+// Options of the incremental insertions: only onProgress.
+function insertOptions(options) {
+  if (options == null) return undefined;
+  if (typeof options !== 'object') {
+    throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
+  }
+  return options.onProgress;
+}
+
 export function createApi(instantiate) {
   let kernel = null;
   let loading = null;
 
   function ready() {
     if (kernel === null) {
-      throw new Error('geocdt: the WebAssembly module is not loaded yet: `await init()` first');
+      throw new GeocdtError('NotLoaded',
+        'geocdt: the WebAssembly module is not loaded yet: `await init()` first');
     }
     return kernel;
   }
@@ -36,19 +47,15 @@ export function createApi(instantiate) {
 
   function triangulate(input, options) {
     const started = now();
-    const { points, polylines } = checkInput(input);
-    const o = checkOptions(options);
     const k = ready();
-    return finish(k.triangulate(points, polylines, o), started);
+    const checked = checkInput(input);
+    const o = k.meshOptions(options);
+    return finish(k.triangulate(checked, o, options?.onProgress), started);
   }
 
-  function triangulateGeoJSON(geojson, options = {}) {
-    const { output = 'geojson', ...rest } = options ?? {};
-    if (output !== 'geojson' && output !== 'arrays') {
-      throw new TypeError(`geocdt: options.output must be 'geojson' or 'arrays', got ${JSON.stringify(output)}`);
-    }
-    const input = geoJSONToInput(geojson);
-    const mesh = triangulate(input, rest);
+  function triangulateGeoJSON(geojson, options) {
+    const { output, rest } = geoJSONOutput(options);
+    const mesh = triangulate(readGeoJSON(geojson), rest);
     return output === 'arrays' ? mesh : meshToGeoJSON(mesh);
   }
 
@@ -73,44 +80,54 @@ export function createApi(instantiate) {
     }
 
     #live() {
-      if (this.#incremental === null) throw new Error('geocdt: this Triangulation was disposed');
+      if (this.#incremental === null) {
+        throw new GeocdtError('Disposed', 'geocdt: this Triangulation was disposed');
+      }
+      this.#kernel.idle();
       return this.#incremental;
     }
 
     // Returns the vertex id of each point.
-    insertPoints(points) {
+    insertPoints(points, options) {
+      const live = this.#live();
       const xy = checkCoordinates(points, 'points');
-      return this.#kernel.insert(this.#live(), xy, false);
+      return this.#kernel.insert(live, xy, false, insertOptions(options));
     }
 
     // Inserts one polyline as constraints; returns the vertex id of each of its points.
-    insertPolyline(polyline) {
+    insertPolyline(polyline, options) {
+      const live = this.#live();
       const xy = checkCoordinates(polyline, 'polyline');
-      return this.#kernel.insert(this.#live(), xy, true);
+      return this.#kernel.insert(live, xy, true, insertOptions(options));
     }
 
     locate(x, y) {
       if (typeof x !== 'number' || typeof y !== 'number') {
         throw new TypeError('geocdt: locate(x, y) takes two numbers');
       }
+      if (!Number.isFinite(x) || !Number.isFinite(y)) {
+        throw new RangeError(`geocdt: locate(${x}, ${y}): x and y must be finite numbers`);
+      }
       return this.#kernel.locate(this.#live(), x, y);
     }
 
     // A copy of the current mesh; the triangulation stays as it is for more insertions.
     results(options) {
-      const o = checkOptions(options);
       const started = now();
-      return finish(this.#kernel.mesh(this.#live(), o), started);
+      const live = this.#live();
+      const o = this.#kernel.meshOptions(options);
+      return finish(this.#kernel.mesh(live, o, options?.onProgress), started);
     }
 
     get vertexCount() { return this.#live().vertexCount(); }
     get triangleCount() { return this.#live().triangleCount(); }
     get polylineCount() { return this.#live().polylineCount(); }
-    get stats() { return this.#kernel.incrementalStats(this.#live()); }
+    get stats() { return this.#live().stats(); }
     get disposed() { return this.#incremental === null; }
 
     dispose() {
       if (this.#incremental === null) return;
+      this.#kernel.idle();
       finalizer?.unregister(this);
       this.#incremental.delete();
       this.#incremental = null;

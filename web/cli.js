@@ -4,6 +4,7 @@ import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
 import { geoJSONToInput, init, triangulate } from './index.node.js';
+import { ProgressDisplay } from './progress-display.js';
 
 const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
 
@@ -18,17 +19,20 @@ Options:
   --fill-rule <evenodd|nonzero>  how rings decide inside (default: evenodd)
   --inside-flags             add properties.inside to every triangle
   --stats                    print statistics to stderr
-  --quiet                    no progress messages, even for big inputs
+  --quiet                    no progress (a bar on a terminal, lines otherwise)
   -h, --help                 show this help
   -v, --version              show the version`;
 
-// Inputs at least this big report progress on stderr.
+// Inputs at least this big report progress on stderr: a bar on a terminal, lines otherwise.
 const BIG_INPUT_POINTS = 200_000;
 
 class UsageError extends Error {}
 
 function parseArgs(argv) {
-  const args = { input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false, stats: false, quiet: false };
+  const args = {
+    input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false,
+    stats: false, quiet: false,
+  };
   const value = (i, flag) => {
     if (i + 1 >= argv.length) throw new UsageError(`${flag} needs a value`);
     return argv[i + 1];
@@ -48,7 +52,9 @@ function parseArgs(argv) {
     else throw new UsageError(`unexpected argument ${a}`);
   }
   if (!args.help && !args.version && args.input === null) throw new UsageError('no input file');
-  if (!['all', 'inside'].includes(args.keep)) throw new UsageError(`--keep must be all or inside, not ${args.keep}`);
+  if (!['all', 'inside'].includes(args.keep)) {
+    throw new UsageError(`--keep must be all or inside, not ${args.keep}`);
+  }
   if (!['evenodd', 'nonzero'].includes(args.fillRule)) {
     throw new UsageError(`--fill-rule must be evenodd or nonzero, not ${args.fillRule}`);
   }
@@ -80,7 +86,9 @@ async function writeGeoJSON(mesh, stream, progress) {
     for (let t = start; t < end; t++) {
       const a = at(triangles[3 * t]);
       const properties = inside ? `{"inside":${inside[t] === 1}}` : '{}';
-      parts.push(`{"type":"Feature","id":${t},"properties":${properties},"geometry":{"type":"Polygon","coordinates":[[${a},${at(triangles[3 * t + 1])},${at(triangles[3 * t + 2])},${a}]]}}`);
+      const ring = `[[${a},${at(triangles[3 * t + 1])},${at(triangles[3 * t + 2])},${a}]]`;
+      parts.push(`{"type":"Feature","id":${t},"properties":${properties},`
+        + `"geometry":{"type":"Polygon","coordinates":${ring}}}`);
     }
     await write((start === 0 ? '\n' : ',\n') + parts.join(',\n'));
     progress(end, count);
@@ -102,32 +110,37 @@ async function main(argv) {
   const started = performance.now();
   const elapsed = () => `${((performance.now() - started) / 1000).toFixed(2)} s`;
   let say = () => {};
+  let show = null;
 
   const text = await readInput(args.input);
   let geojson;
   try {
     geojson = JSON.parse(text);
   } catch (error) {
-    throw new Error(`${args.input} is not valid JSON: ${error.message}`);
+    throw new Error(`${args.input} is not valid JSON: ${error.message}`, { cause: error });
   }
-  const input = geoJSONToInput(geojson);
-  const pointCount = input.points.length / 2 + input.polylines.reduce((s, l) => s + l.length / 2, 0);
-  if (!args.quiet && pointCount >= BIG_INPUT_POINTS) say = (message) => process.stderr.write(`geocdt: ${message}\n`);
-  say(`read ${n(pointCount)} points (${n(input.polylines.length)} polylines) in ${elapsed()}`);
+  const input = geoJSONToInput(geojson, { flat: true });
+  const lines = input.polylines.offsets.length - 1;
+  const pointCount = input.points.length / 2 + input.polylines.offsets[lines];
+  if (!args.quiet && pointCount >= BIG_INPUT_POINTS) {
+    const display = new ProgressDisplay(process.stderr);
+    say = (message) => display.line(message);
+    show = (label, fraction) => display.update(label, fraction);
+  }
+  say(`read ${n(pointCount)} points (${n(lines)} polylines) in ${elapsed()}`);
 
   await init();
-  const mesh = triangulate(input, { keep: args.keep, fillRule: args.fillRule, insideFlags: args.insideFlags });
-  say(`triangulated: ${n(mesh.triangles.length / 3)} triangles in ${mesh.stats.milliseconds.toFixed(0)} ms`);
+  const mesh = triangulate(input, {
+    keep: args.keep,
+    fillRule: args.fillRule,
+    insideFlags: args.insideFlags,
+    onProgress: show && (({ phase, fraction }) => show(`triangulating: ${phase}`, fraction)),
+  });
+  const ms = mesh.stats.milliseconds.toFixed(0);
+  say(`triangulated: ${n(mesh.triangles.length / 3)} triangles in ${ms} ms`);
 
   const stream = args.output ? createWriteStream(args.output) : process.stdout;
-  let reported = 0;
-  await writeGeoJSON(mesh, stream, (done, total) => {
-    const percent = Math.floor((100 * done) / total);
-    if (percent >= reported + 25 || done === total) {
-      reported = percent;
-      say(`writing ${percent}%`);
-    }
-  });
+  await writeGeoJSON(mesh, stream, (done, total) => show?.('writing', done / total));
   if (stream !== process.stdout) {
     stream.end();
     await once(stream, 'finish');
@@ -143,6 +156,7 @@ async function main(argv) {
 
 main(process.argv.slice(2)).catch((error) => {
   const usage = error instanceof UsageError;
-  process.stderr.write(`geocdt: ${error.message.replace(/^geocdt: /, '')}\n${usage ? 'Try geocdt --help\n' : ''}`);
+  const hint = usage ? 'Try geocdt --help\n' : '';
+  process.stderr.write(`geocdt: ${error.message.replace(/^geocdt: /, '')}\n${hint}`);
   process.exitCode = usage ? 2 : 1;
 });

@@ -1,45 +1,96 @@
 // geocdt: constrained Delaunay triangulation for maps, in WebAssembly.
 
-/** x0, y0, x1, y1, …: a Float64Array (or Float32Array) or an array of numbers. */
-export type Coordinates = Float64Array | Float32Array | readonly number[];
+/**
+ * x0, y0, x1, y1, …: any numeric typed array (BigInt64Array and BigUint64Array aside) or an
+ * array of numbers. Typed arrays are copied into the wasm heap with one TypedArray.set().
+ */
+export type Coordinates =
+  | Float64Array | Float32Array
+  | Int32Array | Uint32Array | Int16Array | Uint16Array | Int8Array | Uint8Array
+  | Uint8ClampedArray
+  | readonly number[];
+
+/**
+ * Polylines as one flat buffer, in GeoArrow's layout: polyline i has the points
+ * offsets[i] .. offsets[i + 1] - 1, whose x, y are coords[2 * offsets[i]] ..
+ * coords[2 * offsets[i + 1] - 1]. offsets holds n + 1 entries for n polylines, starts at 0,
+ * never decreases and ends at coords.length / 2. No JS array per polyline.
+ */
+export interface FlatPolylines {
+  coords: Coordinates;
+  offsets: Uint32Array | Int32Array | Uint16Array | Uint8Array | readonly number[];
+}
 
 export interface TriangulateInput {
   /** Points to triangulate: x0, y0, x1, y1, … */
   points?: Coordinates;
   /**
-   * Polylines whose segments become constrained edges, split where they cross. A ring repeats
-   * its first point at its end (the GeoJSON convention) and bounds the inside.
+   * Polylines whose segments become constrained edges, split where they cross: an array with
+   * one coordinate array per polyline, or the flat form. A ring repeats its first point at its
+   * end (the GeoJSON convention) and bounds the inside.
    */
-  polylines?: readonly Coordinates[];
+  polylines?: readonly Coordinates[] | FlatPolylines;
 }
 
-export interface MeshOptions {
+/** What a long call is doing: sorting points, inserting them, constraints, the arrays out. */
+export type ProgressPhase = 'sort' | 'points' | 'constraints' | 'export';
+
+export interface ProgressEvent {
+  phase: ProgressPhase;
+  /** How far the phase is, 0 to 1. Phases only move forward; a phase's fraction only grows. */
+  fraction: number;
+}
+
+export interface ProgressOptions {
+  /**
+   * Called at most about ten times a second while the call runs: the first report, then one
+   * per 100 ms, then the last. Costs nothing when absent. An exception it throws ends the
+   * reports and is thrown once the call has returned; it may not call geocdt meanwhile.
+   */
+  onProgress?: (event: ProgressEvent) => void;
+}
+
+export type Keep = 'all' | 'inside';
+export type FillRule = 'evenodd' | 'nonzero';
+
+export interface MeshOptions extends ProgressOptions {
   /** 'all' (default) keeps every triangle; 'inside' only those inside the rings. */
-  keep?: 'all' | 'inside';
+  keep?: Keep;
   /** How rings decide inside: 'evenodd' (default) or 'nonzero' (winding number). */
-  fillRule?: 'evenodd' | 'nonzero';
+  fillRule?: FillRule;
   /** Return `inside`, one flag per triangle (implied by keep: 'inside'). */
   insideFlags?: boolean;
 }
 
-export interface Stats {
+/** The counters of the core (Triangulation.stats). */
+export interface CoreStats {
   /** Points that became vertices. */
   inserted: number;
   /** Points equal to an existing vertex. */
   duplicates: number;
   /** Triangles visited by point location, over `locates` locations. */
   walkSteps: number;
+  /** Point locations performed. */
   locates: number;
+  /** Edge flips that restored the Delaunay property. */
   flips: number;
+  /** Walks that hit their step bound and gave way to a scan of every triangle. */
   walkFallbacks: number;
   /** m of the m × m point-location grid. */
   gridSize: number;
   /** Vertices added where constraints cross. */
   crossings: number;
+  /** Polylines inserted. */
   polylines: number;
   /** Constraint segments inserted. */
   segments: number;
+}
+
+/** The counters of a call: the core's, and what the call returned and took. */
+export interface Stats extends CoreStats {
+  /** Vertices in the result. */
   vertices: number;
+  /** Triangles in the result. */
   triangles: number;
   /** Constrained edges in the result. */
   constraintEdges: number;
@@ -93,9 +144,42 @@ export interface InitOptions {
 export function init(options?: InitOptions): Promise<void>;
 
 /**
+ * The package's error for everything that is not a mistake in the input (those are
+ * TypeError and RangeError): `code` says which.
+ */
+export type GeocdtErrorCode =
+  /** The wasm heap cannot hold the input or the result (4 GB at most). */
+  | 'OutOfMemory'
+  /** A constraint segment could not be inserted; index and segment name it. */
+  | 'ConstraintUnresolved'
+  /** A broken invariant in the core: a bug, reported rather than hung on. */
+  | 'InternalError'
+  /** A call before `await init()`, or a worker that could not load the module. */
+  | 'NotLoaded'
+  /** A call on a disposed Triangulation. */
+  | 'Disposed'
+  /** A call to geocdt from inside an onProgress callback. */
+  | 'Busy'
+  /** The worker crashed or exited. */
+  | 'WorkerFailed'
+  /** The worker was terminated with terminate(). */
+  | 'WorkerTerminated';
+
+export class GeocdtError extends Error {
+  readonly name: 'GeocdtError';
+  readonly code: GeocdtErrorCode;
+  /** The input polyline (or point) concerned, when known. */
+  readonly index?: number;
+  /** The segment of that polyline, when known. */
+  readonly segment?: number;
+}
+
+/**
  * Triangulates points and polylines in one call.
  * @throws TypeError on wrong types; RangeError on odd lengths, NaN, ±Infinity,
- *   |coordinate| > 1e150 or memory exhaustion; Error before init() has resolved.
+ *   |coordinate| > 1e150 or a bad flat layout (with `code` 'InvalidCoordinate' when the core
+ *   found the value); GeocdtError otherwise (code 'OutOfMemory', 'ConstraintUnresolved',
+ *   'InternalError', 'NotLoaded' before init() has resolved, 'Busy').
  */
 export function triangulate(input: TriangulateInput, options?: MeshOptions): TriangulateResult;
 
@@ -128,12 +212,25 @@ export type GeoJSONInput = { type: string; [key: string]: unknown };
  * constraints, Polygon and MultiPolygon rings give constraints that bound the inside.
  * Coordinates are used as given (lon/lat or projected) and triangulated in the plane.
  */
-export function triangulateGeoJSON(geojson: GeoJSONInput, options?: MeshOptions & { output?: 'geojson' }): TriangleFeatureCollection;
-export function triangulateGeoJSON(geojson: GeoJSONInput, options: MeshOptions & { output: 'arrays' }): TriangulateResult;
-export function triangulateGeoJSON(geojson: GeoJSONInput, options?: GeoJSONOptions): TriangleFeatureCollection | TriangulateResult;
+export function triangulateGeoJSON(
+  geojson: GeoJSONInput, options?: MeshOptions & { output?: 'geojson' }): TriangleFeatureCollection;
+export function triangulateGeoJSON(
+  geojson: GeoJSONInput, options: MeshOptions & { output: 'arrays' }): TriangulateResult;
+export function triangulateGeoJSON(
+  geojson: GeoJSONInput, options?: GeoJSONOptions): TriangleFeatureCollection | TriangulateResult;
 
-/** GeoJSON -> the input of triangulate(); rings are closed if they are not. */
-export function geoJSONToInput(geojson: GeoJSONInput): { points: Float64Array; polylines: Float64Array[] };
+/**
+ * GeoJSON -> the input of triangulate(); rings are closed if they are not. With flat: true
+ * the polylines come in the flat form (no array per polyline), as triangulateGeoJSON() uses.
+ */
+export function geoJSONToInput(
+  geojson: GeoJSONInput,
+  options?: { flat?: false },
+): { points: Float64Array; polylines: Float64Array[] };
+export function geoJSONToInput(
+  geojson: GeoJSONInput,
+  options: { flat: true },
+): { points: Float64Array; polylines: { coords: Float64Array; offsets: Uint32Array } };
 
 /** A mesh -> a FeatureCollection with one counter-clockwise Polygon per triangle. */
 export function meshToGeoJSON(mesh: Mesh): TriangleFeatureCollection;
@@ -149,12 +246,14 @@ export interface MemoryUsage {
 
 export function memoryUsage(): MemoryUsage;
 
+/**
+ * 'empty': no triangle yet; 'outside': outside the convex hull (vertices: the hull edge that
+ * sees the point); 'face': inside a triangle; 'edge': on an edge; 'vertex': on a vertex.
+ */
+export type LocationKind = 'empty' | 'outside' | 'face' | 'edge' | 'vertex';
+
 export interface Location {
-  /**
-   * 'empty': no triangle yet; 'outside': outside the convex hull (vertices: the hull edge
-   * that sees the point); 'face': inside a triangle; 'edge': on an edge; 'vertex': on a vertex.
-   */
-  kind: 'empty' | 'outside' | 'face' | 'edge' | 'vertex';
+  kind: LocationKind;
   /** Index into results().triangles / 3 (with keep: 'all'), or -1. */
   triangle: number;
   /** 3 for a face, 2 for an edge or outside, 1 for a vertex, 0 when empty. */
@@ -165,16 +264,17 @@ export interface Location {
 export class Triangulation {
   constructor();
   /** Inserts points; returns the vertex id of each (an existing one for a duplicate). */
-  insertPoints(points: Coordinates): Uint32Array;
+  insertPoints(points: Coordinates, options?: ProgressOptions): Uint32Array;
   /** Inserts one polyline as constraints; returns the vertex id of each of its points. */
-  insertPolyline(polyline: Coordinates): Uint32Array;
+  insertPolyline(polyline: Coordinates, options?: ProgressOptions): Uint32Array;
+  /** @throws RangeError when x or y is NaN or infinite. */
   locate(x: number, y: number): Location;
   /** A copy of the current mesh; insertions can go on. */
   results(options?: MeshOptions): Mesh;
   readonly vertexCount: number;
   readonly triangleCount: number;
   readonly polylineCount: number;
-  readonly stats: Omit<Stats, 'vertices' | 'triangles' | 'constraintEdges' | 'milliseconds' | 'coreMilliseconds'>;
+  readonly stats: CoreStats;
   readonly disposed: boolean;
   /**
    * Frees the wasm memory it holds; further calls throw. Calling it twice is harmless.

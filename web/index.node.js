@@ -5,6 +5,7 @@ import createGeocdtModule from './dist/geocdt.mjs';
 import { createApi } from './api.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
+export { GeocdtError } from './errors.js';
 
 async function instantiate(options) {
   const { wasmUrl } = options;

@@ -1,96 +1,113 @@
-// Checks the caller's input before it reaches the wasm heap, so that every mistake becomes a
-// TypeError or RangeError that names the offending array and index.
+// The shape of the caller's input, checked in O(1) per array before anything is copied: the
+// values themselves are checked by the core while it reads them, and a bad one comes back as
+// a RangeError built here that names the array, the index, the axis and the value.
 
 export const MAX_COORDINATE = 1e150;
 
-function describe(value) {
+export function describe(value) {
   if (value === null) return 'null';
   if (Array.isArray(value)) return 'an Array';
   if (ArrayBuffer.isView(value)) return `a ${value.constructor.name}`;
   return typeof value === 'object' ? `a ${value.constructor?.name ?? 'object'}` : typeof value;
 }
 
-function badValue(v) {
-  if (Number.isNaN(v)) return 'NaN';
-  if (v === Infinity || v === -Infinity) return String(v);
-  return null;
+const isBigIntArray = (value) =>
+  value instanceof BigInt64Array || value instanceof BigUint64Array;
+
+// A numeric typed array (Float64Array, Float32Array, Int32Array, Uint8Array, ...), which one
+// TypedArray.set() copies into the heap.
+export function isNumericTypedArray(value) {
+  return ArrayBuffer.isView(value) && !(value instanceof DataView) && !isBigIntArray(value);
 }
 
-function rangeErrorAt(name, i, v, owner) {
-  const axis = i % 2 === 0 ? 'x' : 'y';
-  const problem = badValue(v) ?? `${v}, beyond the supported |coordinate| <= 1e150`;
-  return new RangeError(`geocdt: ${name}[${i}] (${axis} of point ${i >> 1}${owner}) is ${problem}`);
-}
-
-// Accepts a Float64Array, a Float32Array or an array of numbers holding x0, y0, x1, y1, ...
-// Returns it unchanged (no copy); throws if it is unusable.
-export function checkCoordinates(value, name, owner = '') {
-  const typed = value instanceof Float64Array || value instanceof Float32Array;
-  if (!typed && !Array.isArray(value)) {
-    throw new TypeError(
-      `geocdt: ${name} must be a Float64Array or an array of numbers (x0, y0, x1, y1, ...), got ${describe(value)}`);
+// x0, y0, x1, y1, ... in a plain array or any numeric typed array. Returns it unchanged.
+export function checkCoordinates(value, name) {
+  if (!Array.isArray(value) && !isNumericTypedArray(value)) {
+    throw new TypeError(`geocdt: ${name} must be a Float64Array or an array of numbers `
+      + `(x0, y0, x1, y1, ...), or another numeric typed array; got ${describe(value)}`);
   }
-  const n = value.length;
-  if (n % 2 !== 0) {
+  if (value.length % 2 !== 0) {
     throw new RangeError(
-      `geocdt: ${name} has an odd length (${n}): coordinates come in x, y pairs`);
-  }
-  if (typed) {
-    for (let i = 0; i < n; i++) {
-      const v = value[i];
-      // Written so that NaN fails the test too.
-      if (!(v >= -MAX_COORDINATE && v <= MAX_COORDINATE)) throw rangeErrorAt(name, i, v, owner);
-    }
-  } else {
-    for (let i = 0; i < n; i++) {
-      const v = value[i];
-      if (typeof v !== 'number') {
-        throw new TypeError(`geocdt: ${name}[${i}] must be a number, got ${describe(v)}`);
-      }
-      if (!(v >= -MAX_COORDINATE && v <= MAX_COORDINATE)) throw rangeErrorAt(name, i, v, owner);
-    }
+      `geocdt: ${name} has an odd length (${value.length}): coordinates come in x, y pairs`);
   }
   return value;
 }
 
-// { points, polylines } -> checked arrays. Both are optional.
+// The flat polylines form: { coords, offsets } in GeoArrow's layout.
+function checkFlatPolylines({ coords, offsets }) {
+  checkCoordinates(coords, 'polylines.coords');
+  const integers = offsets instanceof Uint32Array || offsets instanceof Int32Array
+    || offsets instanceof Uint16Array || offsets instanceof Uint8Array;
+  if (!integers && !Array.isArray(offsets)) {
+    throw new TypeError('geocdt: polylines.offsets must be a Uint32Array (or Int32Array, or an '
+      + `array of integers) of n + 1 vertex offsets, got ${describe(offsets)}`);
+  }
+  if (offsets.length === 0) {
+    throw new RangeError('geocdt: polylines.offsets is empty: n polylines take n + 1 offsets, '
+      + 'starting with 0');
+  }
+  return { coords, offsets, count: offsets.length - 1, points: coords.length / 2 };
+}
+
+// { points, polylines } -> { points, lines } with lines either
+// { arrays, count, points } (an array per polyline) or { coords, offsets, count, points }.
+// Both are optional.
 export function checkInput(input) {
-  if (input === null || typeof input !== 'object' || Array.isArray(input) || ArrayBuffer.isView(input)) {
+  if (input === null || typeof input !== 'object' || Array.isArray(input)
+    || ArrayBuffer.isView(input)) {
     throw new TypeError(
       `geocdt: triangulate() takes an object { points, polylines }, got ${describe(input)}`);
   }
-  const points = input.points == null ? new Float64Array(0) : checkCoordinates(input.points, 'points');
-  let polylines = [];
-  if (input.polylines != null) {
-    if (!Array.isArray(input.polylines)) {
-      throw new TypeError(
-        `geocdt: polylines must be an array of Float64Array or number[], got ${describe(input.polylines)}`);
+  const points = input.points == null ? new Float64Array(0)
+    : checkCoordinates(input.points, 'points');
+  const polylines = input.polylines;
+  let lines = { arrays: [], count: 0, points: 0 };
+  if (polylines != null && typeof polylines === 'object' && !Array.isArray(polylines)
+    && !ArrayBuffer.isView(polylines) && 'coords' in polylines) {
+    lines = checkFlatPolylines(polylines);
+  } else if (polylines != null) {
+    if (!Array.isArray(polylines)) {
+      throw new TypeError('geocdt: polylines must be an array of Float64Array or number[] (one '
+        + `per polyline), or { coords, offsets }; got ${describe(polylines)}`);
     }
-    polylines = input.polylines.map((line, i) =>
-      checkCoordinates(line, `polylines[${i}]`, ` of polyline ${i}`));
+    let total = 0;
+    for (let i = 0; i < polylines.length; i++) {
+      total += checkCoordinates(polylines[i], `polylines[${i}]`).length;
+    }
+    lines = { arrays: polylines, count: polylines.length, points: total / 2 };
   }
-  return { points, polylines };
+  return { points, lines };
 }
 
-const KEEP = { all: 0, inside: 1 };
-const FILL = { evenodd: 0, nonzero: 1 };
+const badCoordinate = (v) => !(v >= -MAX_COORDINATE && v <= MAX_COORDINATE);
 
-// Options -> the numbers the binding takes.
-export function checkOptions(options) {
-  if (options == null) return { keep: 0, fill: 0, insideFlags: false };
-  if (typeof options !== 'object') {
-    throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
+function problem(v) {
+  if (typeof v === 'number' && (Number.isNaN(v) || !Number.isFinite(v))) return String(v);
+  return `${v}, beyond the supported |coordinate| <= 1e150`;
+}
+
+// The RangeError for point `point` of `values` (x, y pairs) named `name`, whose coordinates
+// start at index `start`; owner says whose point it is (' of polyline 2'). null when neither
+// coordinate is bad (the caller then falls back to the core's message).
+export function coordinateError(values, name, start, point, owner) {
+  for (let axis = 0; axis < 2; axis++) {
+    const i = start + 2 * point + axis;
+    const v = values[i];
+    if (badCoordinate(v)) {
+      return new RangeError(`geocdt: ${name}[${i}] (${axis ? 'y' : 'x'} of point ${point}`
+        + `${owner}) is ${problem(v)}`);
+    }
   }
-  const { keep = 'all', fillRule = 'evenodd', insideFlags = false } = options;
-  if (typeof keep !== 'string' || !Object.hasOwn(KEEP, keep)) {
-    throw new TypeError(`geocdt: options.keep must be 'all' or 'inside', got ${JSON.stringify(keep)}`);
-  }
-  if (typeof fillRule !== 'string' || !Object.hasOwn(FILL, fillRule)) {
-    throw new TypeError(
-      `geocdt: options.fillRule must be 'evenodd' or 'nonzero', got ${JSON.stringify(fillRule)}`);
-  }
-  if (typeof insideFlags !== 'boolean') {
-    throw new TypeError(`geocdt: options.insideFlags must be a boolean, got ${describe(insideFlags)}`);
-  }
-  return { keep: KEEP[keep], fill: FILL[fillRule], insideFlags: insideFlags || keep === 'inside' };
+  return null;
+}
+
+// The RangeError for offsets[i], the first that breaks the flat layout.
+export function offsetError({ offsets, points }, i) {
+  const v = offsets[i];
+  let why;
+  if (i === 0 && v !== 0) why = 'the first offset must be 0';
+  else if (i > 0 && v < offsets[i - 1]) why = `below offsets[${i - 1}] = ${offsets[i - 1]}`;
+  else if (v > points) why = `past the ${points} points of polylines.coords`;
+  else why = `the last offset must be the number of points in polylines.coords (${points})`;
+  return new RangeError(`geocdt: polylines.offsets[${i}] is ${v}: ${why}`);
 }

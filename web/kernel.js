@@ -1,37 +1,81 @@
-// The only code that talks to the wasm module. Input is copied into the heap once, the core
-// runs, and each output array is copied out with one slice of a heap view: callers get plain
+// The only code that talks to the wasm module. Input is written straight into buffers the
+// binding owns, with one TypedArray.set() per caller array; the core checks the values as it
+// reads them; each output array comes back with one slice of a heap view. Callers get plain
 // typed arrays they own, and no heap view outlives the call (memory growth would detach it).
-import { outOfMemoryError, statusError } from './errors.js';
+// The names of fields, statistics, status codes, location kinds, keep, fill and phases all
+// come from the module (bindings/names.h, bindings/output.cpp): no table is kept here.
+import { GeocdtError, outOfMemoryError, statusError } from './errors.js';
+import { coordinateError, describe, isNumericTypedArray, offsetError } from './input.js';
 
-// Same order as geocdt::wasm::Field in bindings/output.h.
-const FIELD = {
-  points: 0, triangles: 1, halfedges: 2, constrained: 3, constraintEdges: 4,
-  sourceOffsets: 5, sources: 6, inside: 7, inputToVertex: 8, vertexIds: 9,
-};
-// Same order as Output::stat in bindings/output.cpp.
-const STAT_NAMES = ['inserted', 'duplicates', 'walkSteps', 'locates', 'flips', 'walkFallbacks',
-  'gridSize', 'crossings', 'polylines', 'segments'];
 const now = () => globalThis.performance?.now() ?? Date.now();
-const LOCATION_KINDS = ['empty', 'outside', 'face', 'edge', 'vertex'];
-const VERTICES_PER_KIND = [0, 2, 3, 2, 1];
+
+// An embind enum's names, indexed by value.
+function enumNames(embindEnum) {
+  const names = [];
+  for (const [name, value] of Object.entries(embindEnum)) {
+    if (name !== 'values') names[value.value] = name;
+  }
+  return names;
+}
+
+// Copies x, y pairs into the heap at element `at` of heap (a Float64Array over the memory).
+// A typed array goes in with one set(); a plain array is checked for numbers as it is copied
+// (set() would turn null into 0 and '1' into 1), which once warm costs what set() does: 4.1
+// against 4.7 ms for 2M numbers.
+function copyCoordinates(heap, at, values, name) {
+  if (isNumericTypedArray(values)) {
+    heap.set(values, at);
+    return;
+  }
+  for (let i = 0; i < values.length; i++) {
+    const v = values[i];
+    if (typeof v !== 'number') {
+      throw new TypeError(`geocdt: ${name}[${i}] must be a number, got ${describe(v)}`);
+    }
+    heap[at + i] = v;
+  }
+}
+
+function copyOffsets(heap, at, offsets) {
+  if (isNumericTypedArray(offsets)) {
+    heap.set(offsets, at);
+    return;
+  }
+  for (let i = 0; i < offsets.length; i++) {
+    const v = offsets[i];
+    if (!Number.isInteger(v) || v < 0 || v > 0xffffffff) {
+      throw new RangeError(
+        `geocdt: polylines.offsets[${i}] must be an integer from 0 to 2^32 - 1, got ${v}`);
+    }
+    heap[at + i] = v;
+  }
+}
 
 export class Kernel {
   constructor(wasm) {
     this.wasm = wasm;
     this.output = new wasm.Output();
-    this.scratch = this.alloc(5 * 8);
+    this.input = new wasm.Input();
+    this.scratch = this.alloc(6 * 8);
+    this.busy = false;
+    this.statusCodes = enumNames(wasm.StatusCode);
+    this.locationKinds = enumNames(wasm.LocationKind);
+    this.phases = enumNames(wasm.Phase);
+    this.keep = wasm.Keep;
+    this.fillRule = wasm.FillRule;
+    const types = enumNames(wasm.ElementType);
+    this.fields = {};
+    for (const name of enumNames(wasm.Field)) {
+      const id = wasm.Field[name];
+      this.fields[name] = { id, Type: globalThis[`${types[wasm.elementType(id).value]}Array`] };
+    }
   }
 
   // A byte address in the heap; pointers past 2 GB come back negative from the export.
   alloc(bytes) {
-    if (bytes >= 2 ** 32) throw outOfMemoryError(`the input alone needs ${bytes} bytes`);
     const address = this.wasm._malloc(Math.max(bytes, 8)) >>> 0;
-    if (address === 0) throw outOfMemoryError(`cannot reserve ${bytes} bytes for the input`);
+    if (address === 0) throw outOfMemoryError(`cannot reserve ${bytes} bytes`);
     return address;
-  }
-
-  free(address) {
-    this.wasm._free(address);
   }
 
   memory() {
@@ -42,91 +86,188 @@ export class Kernel {
     };
   }
 
-  // Copies coordinate arrays into one heap block: all coordinates, then one uint32 point
-  // count per array. Returns the block's address and where each part starts.
-  writeCoordinates(arrays) {
-    let doubles = 0;
-    for (const a of arrays) doubles += a.length;
-    const block = this.alloc(doubles * 8 + arrays.length * 4);
-    const f64 = this.wasm.HEAPF64;
-    const u32 = this.wasm.HEAPU32;
-    let at = block / 8;
-    const counts = block + doubles * 8;
-    for (let i = 0; i < arrays.length; i++) {
-      f64.set(arrays[i], at);
-      at += arrays[i].length;
-      u32[counts / 4 + i] = arrays[i].length / 2;
+  // A call into the core that may call back into JS (onProgress): a call made from there
+  // would find the binding's buffers in use.
+  enter() {
+    this.idle();
+    this.busy = true;
+  }
+
+  idle() {
+    if (this.busy) {
+      throw new GeocdtError('Busy', 'geocdt: called from inside an onProgress callback; '
+        + 'wait for the running call to return');
     }
-    return { block, counts };
+  }
+
+  leave() {
+    this.busy = false;
+  }
+
+  // Writes { points, lines } (from checkInput) into the binding's Input.
+  writeInput(points, lines) {
+    const input = this.input;
+    const doubles = points.length + 2 * lines.points;
+    if (!input.resize(points.length / 2, lines.points, lines.count)) {
+      const bytes = 8 * doubles + (lines.count > 0 ? 4 * (lines.count + 1) : 0);
+      throw outOfMemoryError(`the input alone needs ${bytes} bytes`);
+    }
+    const f64 = this.wasm.HEAPF64;
+    copyCoordinates(f64, input.pointsAddress() / 8, points, 'points');
+    if (lines.count === 0 && lines.points === 0) return;
+    let at = input.lineCoordsAddress() / 8;
+    const offsets = input.lineOffsetsAddress() / 4;
+    const u32 = this.wasm.HEAPU32;
+    if (lines.arrays === undefined) {
+      copyCoordinates(f64, at, lines.coords, 'polylines.coords');
+      copyOffsets(u32, offsets, lines.offsets);
+      const bad = input.badOffset();
+      if (bad >= 0) throw offsetError(lines, bad);
+      return;
+    }
+    u32[offsets] = 0;
+    for (let i = 0; i < lines.arrays.length; i++) {
+      const line = lines.arrays[i];
+      copyCoordinates(f64, at, line, `polylines[${i}]`);
+      at += line.length;
+      u32[offsets + i + 1] = u32[offsets + i] + line.length / 2;
+    }
   }
 
   // Throws the pending status of the output as an exception, after freeing its arrays.
-  check(ok) {
+  // coordinate(polyline, point) names a bad input coordinate (polyline -1: the points).
+  check(ok, coordinate) {
     if (ok) return;
     const o = this.output;
-    const error = statusError(o.code(), o.message(), o.index(), o.segment());
+    const code = this.statusCodes[o.code().value];
+    const index = o.index(), segment = o.segment();
+    // The core names the point (index) or the polyline (index) and its point (segment); the
+    // caller's own array then gives the axis and the value.
+    const precise = code === 'InvalidCoordinate'
+      && coordinate(segment < 0 ? -1 : index, segment < 0 ? index : segment);
+    const message = o.message();
     o.clear();
-    throw error;
+    if (!precise) throw statusError(code, message, index, segment);
+    precise.code = code;
+    if (index >= 0) precise.index = index;
+    if (segment >= 0) precise.segment = segment;
+    throw precise;
   }
 
-  read(field, Type) {
+  read(name) {
+    const { id, Type } = this.fields[name];
     const o = this.output;
-    const n = o.size(FIELD[field]);
+    const n = o.size(id);
     if (n === 0) return new Type(0);
-    const start = o.data(FIELD[field]) / Type.BYTES_PER_ELEMENT;
-    const heap = new Type(this.wasm.HEAPU8.buffer);
-    return heap.slice(start, start + n);
+    const start = o.data(id) / Type.BYTES_PER_ELEMENT;
+    return new Type(this.wasm.HEAPU8.buffer).slice(start, start + n);
   }
 
   // Without constraints every flag is 0: a fresh zeroed array costs no copy and, until it is
   // written, no memory.
   readConstrained() {
-    if (this.output.size(FIELD.constraintEdges) > 0) return this.read('constrained', Uint8Array);
-    return new Uint8Array(this.output.size(FIELD.constrained));
-  }
-
-  stats() {
-    const stats = {};
-    for (let i = 0; i < STAT_NAMES.length; i++) stats[STAT_NAMES[i]] = this.output.stat(i);
-    return stats;
+    const { id } = this.fields.constrained;
+    if (this.output.size(this.fields.constraintEdges.id) > 0) return this.read('constrained');
+    return new Uint8Array(this.output.size(id));
   }
 
   // Copies the output's mesh out, then frees it.
   takeMesh(withInputToVertex, withInside) {
     try {
       const mesh = {
-        points: this.read('points', Float64Array),
-        triangles: this.read('triangles', Uint32Array),
-        halfedges: this.read('halfedges', Int32Array),
+        points: this.read('points'),
+        triangles: this.read('triangles'),
+        halfedges: this.read('halfedges'),
         constrained: this.readConstrained(),
-        inputToVertex: withInputToVertex ? this.read('inputToVertex', Uint32Array) : undefined,
-        constraintEdges: this.read('constraintEdges', Uint32Array),
-        sourceOffsets: this.read('sourceOffsets', Uint32Array),
-        sources: this.read('sources', Uint32Array),
-        inside: withInside ? this.read('inside', Uint8Array) : undefined,
-        stats: this.stats(),
       };
-      if (!withInputToVertex) delete mesh.inputToVertex;
-      if (!withInside) delete mesh.inside;
+      if (withInputToVertex) mesh.inputToVertex = this.read('inputToVertex');
+      mesh.constraintEdges = this.read('constraintEdges');
+      mesh.sourceOffsets = this.read('sourceOffsets');
+      mesh.sources = this.read('sources');
+      if (withInside) mesh.inside = this.read('inside');
+      mesh.stats = this.output.stats();
       return mesh;
     } finally {
       this.output.clear();
     }
   }
 
-  // points: checked coordinates; polylines: array of checked coordinates; o: checkOptions().
-  triangulate(points, polylines, o) {
-    const { block, counts } = this.writeCoordinates([points, ...polylines]);
-    let ok;
-    const started = now();
-    try {
-      ok = this.wasm.triangulateInto(this.output, block, points.length / 2,
-        block + points.length * 8, counts + 4, polylines.length, o.keep, o.fill, o.insideFlags);
-    } finally {
-      this.free(block);
+  // options -> what the binding takes; the names come from the module's enums.
+  meshOptions(options) {
+    if (options == null) {
+      return { keep: this.keep.all, fill: this.fillRule.evenodd, insideFlags: false };
     }
-    const coreMilliseconds = now() - started;
-    this.check(ok);
+    if (typeof options !== 'object') {
+      throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
+    }
+    const { keep = 'all', fillRule = 'evenodd', insideFlags = false } = options;
+    const choice = (what, value, embindEnum) => {
+      if (typeof value === 'string' && value !== 'values' && Object.hasOwn(embindEnum, value)) {
+        return embindEnum[value];
+      }
+      const names = enumNames(embindEnum).map((n) => `'${n}'`).join(' or ');
+      throw new TypeError(`geocdt: options.${what} must be ${names}, got ${JSON.stringify(value)}`);
+    };
+    const k = choice('keep', keep, this.keep);
+    const f = choice('fillRule', fillRule, this.fillRule);
+    if (typeof insideFlags !== 'boolean') {
+      throw new TypeError(
+        `geocdt: options.insideFlags must be a boolean, got ${describe(insideFlags)}`);
+    }
+    return { keep: k, fill: f, insideFlags: insideFlags || k === this.keep.inside };
+  }
+
+  // The binding's onProgress: (phase index, fraction) -> the caller's onProgress({ phase,
+  // fraction }). An exception from the caller's function stops further reports and is thrown
+  // once the core has returned (the core itself never sees it).
+  progress(onProgress) {
+    if (onProgress == null) return { callback: undefined, rethrow() {} };
+    if (typeof onProgress !== 'function') {
+      throw new TypeError(
+        `geocdt: options.onProgress must be a function, got ${describe(onProgress)}`);
+    }
+    const phases = this.phases;
+    let failure = null;
+    return {
+      callback(phase, fraction) {
+        if (failure !== null) return;
+        try {
+          onProgress({ phase: phases[phase], fraction });
+        } catch (error) {
+          failure = { error };
+        }
+      },
+      rethrow() {
+        if (failure !== null) throw failure.error;
+      },
+    };
+  }
+
+  // checked: checkInput()'s { points, lines }; o: meshOptions(); onProgress: a function or
+  // undefined.
+  triangulate({ points, lines }, o, onProgress) {
+    const progress = this.progress(onProgress);
+    this.enter();
+    let ok;
+    let coreMilliseconds;
+    try {
+      this.writeInput(points, lines);
+      const started = now();
+      ok = this.wasm.triangulateInto(this.output, this.input, o.keep, o.fill, o.insideFlags,
+        progress.callback);
+      coreMilliseconds = now() - started;
+    } finally {
+      this.input.clear();
+      this.leave();
+    }
+    this.check(ok, (polyline, point) => polyline < 0
+      ? coordinateError(points, 'points', 0, point, '')
+      : lines.arrays === undefined
+        ? coordinateError(lines.coords, 'polylines.coords', 2 * lines.offsets[polyline], point,
+          ` of polyline ${polyline}`)
+        : coordinateError(lines.arrays[polyline], `polylines[${polyline}]`, 0, point,
+          ` of polyline ${polyline}`));
+    progress.rethrow();
     const mesh = this.takeMesh(true, o.insideFlags);
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
@@ -137,49 +278,54 @@ export class Kernel {
   }
 
   // Inserts checked coordinates into an Incremental; returns their vertex ids.
-  insert(incremental, coordinates, polyline) {
-    const { block } = this.writeCoordinates([coordinates]);
+  insert(incremental, coordinates, polyline, onProgress) {
+    const name = polyline ? 'polyline' : 'points';
+    const progress = this.progress(onProgress);
+    this.enter();
     let ok;
     try {
-      const count = coordinates.length / 2;
-      ok = polyline ? incremental.insertPolyline(this.output, block, count)
-        : incremental.insertPoints(this.output, block, count);
+      this.writeInput(coordinates, { count: 0, points: 0 });
+      ok = polyline ? incremental.insertPolyline(this.output, this.input, progress.callback)
+        : incremental.insertPoints(this.output, this.input, progress.callback);
     } finally {
-      this.free(block);
+      this.input.clear();
+      this.leave();
     }
-    this.check(ok);
+    this.check(ok, (_, point) => coordinateError(coordinates, name, 0, point, ''));
+    progress.rethrow();
     try {
-      return this.read('vertexIds', Uint32Array);
+      return this.read('vertexIds');
     } finally {
       this.output.clear();
     }
   }
 
-  mesh(incremental, o) {
+  mesh(incremental, o, onProgress) {
+    const progress = this.progress(onProgress);
+    this.enter();
+    let ok;
     const started = now();
-    const ok = incremental.mesh(this.output, o.keep, o.fill, o.insideFlags);
+    try {
+      ok = incremental.mesh(this.output, o.keep, o.fill, o.insideFlags, progress.callback);
+    } finally {
+      this.leave();
+    }
     const coreMilliseconds = now() - started;
-    this.check(ok);
+    this.check(ok, () => null);
+    progress.rethrow();
     const mesh = this.takeMesh(false, o.insideFlags);
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
   }
 
-  incrementalStats(incremental) {
-    incremental.stats(this.output);
-    const stats = this.stats();
-    this.output.clear();
-    return stats;
-  }
-
   locate(incremental, x, y) {
     incremental.locate(x, y, this.scratch);
-    const slots = this.wasm.HEAPF64.subarray(this.scratch / 8, this.scratch / 8 + 5);
-    const kind = slots[0];
+    const at = this.scratch / 8;
+    const slots = this.wasm.HEAPF64.subarray(at, at + 6);
     return {
-      kind: LOCATION_KINDS[kind],
+      kind: this.locationKinds[slots[0]],
       triangle: slots[1],
-      vertices: Array.from(slots.subarray(2, 2 + VERTICES_PER_KIND[kind])),
+      vertices: Array.from(slots.subarray(3, 3 + slots[2])),
     };
   }
 }

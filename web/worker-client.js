@@ -1,23 +1,30 @@
 // The calling side of geocdt/worker: the same calls as the main entry, answered by a worker.
-// Input coordinates are transferred to the worker and results transferred back, never copied
-// by postMessage.
-import { checkCoordinates, checkInput, checkOptions } from './input.js';
-import { geoJSONToInput, meshToGeoJSON } from './geojson.js';
+// Input arrays are transferred to the worker and results transferred back, never copied by
+// postMessage; the values are checked in the worker, by the core, as they are copied into
+// the heap.
+import { GeocdtError, reviveError } from './errors.js';
+import { checkCoordinates, checkInput, describe } from './input.js';
+import { geoJSONOutput, readGeoJSON, meshToGeoJSON } from './geojson.js';
 
-const ERROR_TYPES = { TypeError, RangeError };
-
-function reviveError(e) {
-  const error = new (ERROR_TYPES[e.name] ?? Error)(e.message);
-  for (const key of ['code', 'index', 'segment']) if (e[key] !== undefined) error[key] = e[key];
-  return error;
+// An array the worker may take: a typed array that spans its whole buffer is handed over
+// (the caller's array is then detached), another typed array is copied with slice(), and a
+// plain array goes as it is (postMessage clones it).
+function transferable(values, transfer, buffers) {
+  if (!ArrayBuffer.isView(values)) return values;
+  if (!(values.buffer instanceof ArrayBuffer)) return values;  // shared memory: posted as is
+  const whole = values.byteOffset === 0 && values.byteLength === values.buffer.byteLength;
+  const sent = transfer && whole ? values : values.slice();
+  buffers.add(sent.buffer);
+  return sent;
 }
 
-// A Float64Array the worker may take: the caller's own array when it spans a whole
-// transferable buffer (the caller's array is then detached), otherwise a copy.
-function transferable(xy, transfer) {
-  const whole = xy instanceof Float64Array && xy.byteOffset === 0
-    && xy.byteLength === xy.buffer.byteLength && xy.buffer instanceof ArrayBuffer;
-  return transfer && whole ? xy : Float64Array.from(xy);
+function takeProgress(options) {
+  const { transfer = true, onProgress, ...rest } = options ?? {};
+  if (onProgress != null && typeof onProgress !== 'function') {
+    throw new TypeError(
+      `geocdt: options.onProgress must be a function, got ${describe(onProgress)}`);
+  }
+  return { transfer, onProgress, rest };
 }
 
 export class GeocdtWorker {
@@ -25,6 +32,7 @@ export class GeocdtWorker {
   #pending = new Map();
   #nextRequest = 1;
   #nextTriangulation = 1;
+  #terminated = false;
 
   // endpoint: { post(message, transfer), busy(isBusy), terminate() }; the environment's
   // entry calls receive() and fail() with what the worker sends.
@@ -32,13 +40,23 @@ export class GeocdtWorker {
     this.#endpoint = endpoint;
   }
 
-  receive({ id, ok, value, error }) {
+  receive({ id, ok, value, error, progress }) {
     const request = this.#pending.get(id);
     if (!request) return;
+    if (progress !== undefined) {
+      if (request.failure !== undefined || !request.onProgress) return;
+      try {
+        request.onProgress(progress);
+      } catch (failure) {
+        request.failure = failure;  // thrown once the answer arrives, as the main API does
+      }
+      return;
+    }
     this.#pending.delete(id);
     if (this.#pending.size === 0) this.#endpoint.busy(false);
-    if (ok) request.resolve(value);
-    else request.reject(reviveError(error));
+    if (!ok) request.reject(reviveError(error));
+    else if (request.failure !== undefined) request.reject(request.failure);
+    else request.resolve(value);
   }
 
   fail(error) {
@@ -48,13 +66,17 @@ export class GeocdtWorker {
     for (const request of pending) request.reject(error);
   }
 
-  request(op, args = [], transfer = []) {
+  request(op, args = [], transfer = [], onProgress = undefined) {
+    if (this.#terminated) {
+      return Promise.reject(
+        new GeocdtError('WorkerTerminated', 'geocdt: the worker was terminated'));
+    }
     const id = this.#nextRequest++;
     return new Promise((resolve, reject) => {
       if (this.#pending.size === 0) this.#endpoint.busy(true);
-      this.#pending.set(id, { resolve, reject });
+      this.#pending.set(id, { resolve, reject, onProgress });
       try {
-        this.#endpoint.post({ id, op, args }, transfer);
+        this.#endpoint.post({ id, op, args, progress: !!onProgress }, transfer);
       } catch (error) {
         this.#pending.delete(id);
         if (this.#pending.size === 0) this.#endpoint.busy(false);
@@ -67,28 +89,29 @@ export class GeocdtWorker {
     return this.request('init').then(() => undefined);
   }
 
-  // options.transfer (default true): hand the caller's Float64Arrays to the worker instead
-  // of copying them; they are detached afterwards.
-  async triangulate(input, options = {}) {
-    const { transfer = true, ...rest } = options ?? {};
-    const { points, polylines } = checkInput(input);
-    checkOptions(rest);
-    const sent = {
-      points: transferable(points, transfer),
-      polylines: polylines.map((line) => transferable(line, transfer)),
-    };
-    const buffers = [sent.points.buffer, ...sent.polylines.map((l) => l.buffer)];
-    return this.request('triangulate', [sent, rest], [...new Set(buffers)]);
+  // options.transfer (default true): hand the caller's typed arrays to the worker instead of
+  // copying them; they are detached afterwards. options.onProgress({ phase, fraction }).
+  async triangulate(input, options) {
+    const { transfer, onProgress, rest } = takeProgress(options);
+    const { points, lines } = checkInput(input);
+    const buffers = new Set();
+    const sent = { points: transferable(points, transfer, buffers) };
+    if (lines.arrays !== undefined) {
+      sent.polylines = lines.arrays.map((line) => transferable(line, transfer, buffers));
+    } else {
+      sent.polylines = {
+        coords: transferable(lines.coords, transfer, buffers),
+        offsets: transferable(lines.offsets, transfer, buffers),
+      };
+    }
+    return this.request('triangulate', [sent, rest], [...buffers], onProgress);
   }
 
   // The GeoJSON is read on this thread (it cannot be transferred); the coordinates go to the
   // worker as transferred arrays, and the triangles come back as GeoJSON or as arrays.
-  async triangulateGeoJSON(geojson, options = {}) {
-    const { output = 'geojson', ...rest } = options ?? {};
-    if (output !== 'geojson' && output !== 'arrays') {
-      throw new TypeError(`geocdt: options.output must be 'geojson' or 'arrays', got ${JSON.stringify(output)}`);
-    }
-    const mesh = await this.triangulate(geoJSONToInput(geojson), { ...rest, transfer: true });
+  async triangulateGeoJSON(geojson, options) {
+    const { output, rest } = geoJSONOutput(options);
+    const mesh = await this.triangulate(readGeoJSON(geojson), { ...rest, transfer: true });
     return output === 'arrays' ? mesh : meshToGeoJSON(mesh);
   }
 
@@ -103,7 +126,8 @@ export class GeocdtWorker {
   }
 
   terminate() {
-    this.fail(new Error('geocdt: the worker was terminated'));
+    this.#terminated = true;
+    this.fail(new GeocdtError('WorkerTerminated', 'geocdt: the worker was terminated'));
     this.#endpoint.terminate();
   }
 }
@@ -120,29 +144,31 @@ export class RemoteTriangulation {
     this.#created = created;
   }
 
-  async #call(op, args = [], transfer = []) {
+  async #call(op, args = [], transfer = [], onProgress = undefined) {
     await this.#created;
-    return this.#worker.request(op, [this.#id, ...args], transfer);
+    return this.#worker.request(op, [this.#id, ...args], transfer, onProgress);
   }
 
-  #coordinates(op, xy, name, transfer) {
-    const sent = transferable(checkCoordinates(xy, name), transfer);
-    return this.#call(op, [sent], [sent.buffer]);
+  async #coordinates(op, xy, name, options) {
+    const { transfer, onProgress } = takeProgress(options);
+    const buffers = new Set();
+    const sent = transferable(checkCoordinates(xy, name), transfer, buffers);
+    return this.#call(op, [sent], [...buffers], onProgress);
   }
 
-  insertPoints(points, { transfer = true } = {}) {
-    return this.#coordinates('insertPoints', points, 'points', transfer);
+  insertPoints(points, options) {
+    return this.#coordinates('insertPoints', points, 'points', options);
   }
 
-  insertPolyline(polyline, { transfer = true } = {}) {
-    return this.#coordinates('insertPolyline', polyline, 'polyline', transfer);
+  insertPolyline(polyline, options) {
+    return this.#coordinates('insertPolyline', polyline, 'polyline', options);
   }
 
   locate(x, y) { return this.#call('locate', [x, y]); }
 
-  results(options) {
-    checkOptions(options);
-    return this.#call('results', [options]);
+  async results(options) {
+    const { onProgress, rest } = takeProgress(options);
+    return this.#call('results', [rest], [], onProgress);
   }
 
   stats() { return this.#call('stats'); }

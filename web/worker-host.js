@@ -1,5 +1,8 @@
 // Runs inside the worker: answers the client's requests (web/worker-client.js) with the same
 // API the main entries export, and transfers every result buffer back instead of copying it.
+// A request that asks for progress gets { id, progress: { phase, fraction } } messages
+// before its answer.
+import { GeocdtError, serializeError } from './errors.js';
 
 function transferList(value) {
   const buffers = [];
@@ -10,16 +13,6 @@ function transferList(value) {
   return buffers;
 }
 
-function serializeError(error) {
-  return {
-    name: error?.name ?? 'Error',
-    message: error?.message ?? String(error),
-    code: error?.code,
-    index: error?.index,
-    segment: error?.segment,
-  };
-}
-
 // api: the module namespace of index.node.js or index.browser.js.
 // post(message, transfer): sends to the client. Returns the handler for incoming messages.
 export function createHost(api, post) {
@@ -27,35 +20,57 @@ export function createHost(api, post) {
 
   function live(id) {
     const t = triangulations.get(id);
-    if (!t) throw new Error(`geocdt: no Triangulation ${id} in this worker (disposed?)`);
+    if (!t) {
+      throw new GeocdtError('Disposed',
+        `geocdt: no Triangulation ${id} in this worker (disposed?)`);
+    }
     return t;
   }
 
+  // Each takes the request's onProgress (or undefined), then its arguments.
   const ops = {
     init: () => undefined,
-    triangulate: (input, options) => api.triangulate(input, options),
+    triangulate: (onProgress, input, options) =>
+      api.triangulate(input, { ...options, onProgress }),
     memoryUsage: () => api.memoryUsage(),
-    create: (id) => { triangulations.set(id, new api.Triangulation()); },
-    insertPoints: (id, xy) => live(id).insertPoints(xy),
-    insertPolyline: (id, xy) => live(id).insertPolyline(xy),
-    locate: (id, x, y) => live(id).locate(x, y),
-    results: (id, options) => live(id).results(options),
-    stats: (id) => live(id).stats,
-    counts: (id) => {
+    create: (_, id) => { triangulations.set(id, new api.Triangulation()); },
+    insertPoints: (onProgress, id, xy) => live(id).insertPoints(xy, { onProgress }),
+    insertPolyline: (onProgress, id, xy) => live(id).insertPolyline(xy, { onProgress }),
+    locate: (_, id, x, y) => live(id).locate(x, y),
+    results: (onProgress, id, options) => live(id).results({ ...options, onProgress }),
+    stats: (_, id) => live(id).stats,
+    counts: (_, id) => {
       const t = live(id);
-      return { vertexCount: t.vertexCount, triangleCount: t.triangleCount, polylineCount: t.polylineCount };
+      return {
+        vertexCount: t.vertexCount,
+        triangleCount: t.triangleCount,
+        polylineCount: t.polylineCount,
+      };
     },
-    dispose: (id) => {
+    dispose: (_, id) => {
       triangulations.get(id)?.dispose();
       triangulations.delete(id);
     },
   };
 
-  return async function onMessage({ id, op, args }) {
+  async function load() {
     try {
-      if (!Object.hasOwn(ops, op)) throw new Error(`geocdt worker: unknown request ${op}`);
       await api.init();
-      const value = ops[op](...args);
+    } catch (error) {
+      throw new GeocdtError('NotLoaded',
+        `geocdt: could not load the WebAssembly module in the worker: ${error?.message}`,
+        { cause: error });
+    }
+  }
+
+  return async function onMessage({ id, op, args, progress }) {
+    try {
+      if (!Object.hasOwn(ops, op)) {
+        throw new GeocdtError('InternalError', `geocdt worker: unknown request ${op}`);
+      }
+      await load();
+      const onProgress = progress ? (event) => post({ id, progress: event }, []) : undefined;
+      const value = ops[op](onProgress, ...args);
       post({ id, ok: true, value }, transferList(value));
     } catch (error) {
       post({ id, ok: false, error: serializeError(error) }, []);

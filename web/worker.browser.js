@@ -2,11 +2,16 @@
 // Rollup plugins) recognise the `new Worker(new URL(...), { type: 'module' })` form and bundle
 // the worker with the wasm it loads.
 import { GeocdtWorker } from './worker-client.js';
+import { GeocdtError } from './errors.js';
 
 export { GeocdtWorker, RemoteTriangulation } from './worker-client.js';
+export { GeocdtError } from './errors.js';
 
 export function createWorker() {
-  const worker = new Worker(new URL('./worker-thread.browser.js', import.meta.url), { type: 'module' });
+  // Written in the one form bundlers recognise: the URL inline in the Worker call.
+  const worker = new Worker(new URL('./worker-thread.browser.js', import.meta.url), {
+    type: 'module',
+  });
   const client = new GeocdtWorker({
     post: (message, transfer) => worker.postMessage(message, transfer),
     busy: () => {},
@@ -15,7 +20,8 @@ export function createWorker() {
   worker.addEventListener('message', (event) => client.receive(event.data));
   worker.addEventListener('error', (event) => {
     event.preventDefault?.();
-    client.fail(new Error(`geocdt: the worker failed: ${event.message ?? 'could not load'}`));
+    client.fail(new GeocdtError('WorkerFailed',
+      `geocdt: the worker failed: ${event.message ?? 'could not load'}`));
   });
   return client;
 }

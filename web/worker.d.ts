@@ -2,13 +2,15 @@
 // worker_threads Worker (Node). Coordinates go to the worker and results come back as
 // transferred buffers, not copies.
 import type {
-  Coordinates, GeoJSONInput, GeoJSONOptions, Location, MemoryUsage, Mesh, MeshOptions, Stats,
-  TriangleFeatureCollection, TriangulateInput, TriangulateResult,
+  Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, Location, MemoryUsage, Mesh,
+  MeshOptions, ProgressOptions, TriangleFeatureCollection, TriangulateInput, TriangulateResult,
 } from './index.js';
+
+export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
 
 export interface TransferOptions {
   /**
-   * true (default): Float64Arrays that span their whole buffer are transferred to the worker
+   * true (default): typed arrays that span their whole buffer are transferred to the worker
    * and become detached (length 0) for the caller; false: they are copied.
    */
   transfer?: boolean;
@@ -17,24 +19,33 @@ export interface TransferOptions {
 export class GeocdtWorker {
   /** Loads the wasm in the worker (every call does it if needed). */
   init(): Promise<void>;
-  triangulate(input: TriangulateInput, options?: MeshOptions & TransferOptions): Promise<TriangulateResult>;
+  triangulate(
+    input: TriangulateInput, options?: MeshOptions & TransferOptions): Promise<TriangulateResult>;
   /** The GeoJSON is read on the calling thread; the triangulation runs in the worker. */
-  triangulateGeoJSON(geojson: GeoJSONInput, options?: MeshOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
-  triangulateGeoJSON(geojson: GeoJSONInput, options: MeshOptions & { output: 'arrays' }): Promise<TriangulateResult>;
-  triangulateGeoJSON(geojson: GeoJSONInput, options?: GeoJSONOptions): Promise<TriangleFeatureCollection | TriangulateResult>;
+  triangulateGeoJSON(
+    geojson: GeoJSONInput,
+    options?: MeshOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
+  triangulateGeoJSON(
+    geojson: GeoJSONInput,
+    options: MeshOptions & { output: 'arrays' }): Promise<TriangulateResult>;
+  triangulateGeoJSON(
+    geojson: GeoJSONInput,
+    options?: GeoJSONOptions): Promise<TriangleFeatureCollection | TriangulateResult>;
   memoryUsage(): Promise<MemoryUsage>;
   /** A Triangulation that lives in the worker. */
   createTriangulation(): RemoteTriangulation;
-  /** Stops the worker; pending calls reject. */
+  /** Stops the worker; pending calls reject with a GeocdtError ('WorkerTerminated'). */
   terminate(): void;
 }
 
 export class RemoteTriangulation {
-  insertPoints(points: Coordinates, options?: TransferOptions): Promise<Uint32Array>;
-  insertPolyline(polyline: Coordinates, options?: TransferOptions): Promise<Uint32Array>;
+  insertPoints(
+    points: Coordinates, options?: TransferOptions & ProgressOptions): Promise<Uint32Array>;
+  insertPolyline(
+    polyline: Coordinates, options?: TransferOptions & ProgressOptions): Promise<Uint32Array>;
   locate(x: number, y: number): Promise<Location>;
   results(options?: MeshOptions): Promise<Mesh>;
-  stats(): Promise<Omit<Stats, 'vertices' | 'triangles' | 'constraintEdges' | 'milliseconds' | 'coreMilliseconds'>>;
+  stats(): Promise<CoreStats>;
   counts(): Promise<{ vertexCount: number; triangleCount: number; polylineCount: number }>;
   dispose(): Promise<void>;
 }

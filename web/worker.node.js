@@ -2,8 +2,10 @@
 // the process alive while no request is pending.
 import { Worker } from 'node:worker_threads';
 import { GeocdtWorker } from './worker-client.js';
+import { GeocdtError } from './errors.js';
 
 export { GeocdtWorker, RemoteTriangulation } from './worker-client.js';
+export { GeocdtError } from './errors.js';
 
 // The worker inherits node's flags, except those that only make sense for an inline script.
 function workerFlags() {
@@ -17,7 +19,8 @@ function workerFlags() {
 }
 
 export function createWorker() {
-  const worker = new Worker(new URL('./worker-thread.node.js', import.meta.url), { execArgv: workerFlags() });
+  const url = new URL('./worker-thread.node.js', import.meta.url);
+  const worker = new Worker(url, { execArgv: workerFlags() });
   const client = new GeocdtWorker({
     post: (message, transfer) => worker.postMessage(message, transfer),
     busy: (isBusy) => (isBusy ? worker.ref() : worker.unref()),
@@ -25,7 +28,9 @@ export function createWorker() {
   });
   worker.unref();
   worker.on('message', (message) => client.receive(message));
-  worker.on('error', (error) => client.fail(error));
-  worker.on('exit', (code) => client.fail(new Error(`geocdt: the worker exited (code ${code})`)));
+  worker.on('error', (error) => client.fail(new GeocdtError('WorkerFailed',
+    `geocdt: the worker failed: ${error?.message ?? error}`, { cause: error })));
+  worker.on('exit', (code) => client.fail(
+    new GeocdtError('WorkerFailed', `geocdt: the worker exited (code ${code})`)));
   return client;
 }

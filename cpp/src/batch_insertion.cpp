@@ -34,7 +34,9 @@ bool Delaunay::build(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
 Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint32_t* ids) {
   if (count == 0) return Status::success();
   const std::uint32_t base = vertexCount();
+  options_.progress(Phase::Sort, 0, count);
   std::vector<std::uint32_t> order = insertionOrder(input, count, options_.order);
+  options_.progress(Phase::Sort, count, count);
   // Reserved after the sort's buffers are gone, to keep the peak low: about 2 triangles a point.
   topo.reserve(topo.tri.size() / 3 + 2 * static_cast<std::size_t>(count) + 8);
   // A large batch is stored in insertion order while it is inserted, so that the walk and
@@ -70,6 +72,7 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
     }
   } else {
     for (std::uint32_t k = 0; k < count; ++k) {
+      if ((k & 4095) == 0) options_.progress(Phase::Points, k, count);
       const std::uint32_t v = base + (large ? k : order[k]);
       const std::uint32_t r = insertVertex(v);
       if (r == kGhost) {
@@ -93,6 +96,7 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
     constraints.split(split[0], split[1], split[2]);
   }
   splits_.clear();
+  options_.progress(Phase::Points, count, count);
   return Status::success();
 }
 
@@ -221,6 +225,7 @@ Status Delaunay::insertPending(std::uint32_t base, std::uint32_t count,
     if (v >= base) ids[order[v - base]] = v;
   for (std::size_t i = 1; i < n; ++i) {
     if (i == i1 || i == i2) continue;
+    if ((i & 4095) == 0) options_.progress(Phase::Points, i, n);
     const std::uint32_t v = at(i);
     const std::uint32_t r = insertVertex(v);
     if (r == kGhost) return error_;

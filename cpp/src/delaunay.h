@@ -34,6 +34,7 @@ class Delaunay {
   Stats stats;
 
   bool built() const { return built_; }
+  const Options& options() const { return options_; }
   std::uint32_t vertexCount() const { return static_cast<std::uint32_t>(xy.size() / 2); }
 
   // Inserts count points (2 * count doubles, already validated). ids[i] receives the vertex

@@ -128,6 +128,8 @@ std::vector<std::int32_t> slotIndices(const Topology& topo) {
 }
 
 Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
+  const Progress& progress = d.options().progress;
+  progress(Phase::Export, 0, 3);
   const bool classify = options.insideFlags || options.keep == Keep::Inside;
   std::vector<std::uint8_t> inside;
   if (classify) inside = insideSlots(d, options.fill);
@@ -147,9 +149,12 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
   std::vector<std::uint8_t> kept = realSlots(m.triangles);
   if (options.keep == Keep::Inside)
     for (std::size_t t = 0; t < kept.size(); ++t) kept[t] &= inside[t];
+  progress(Phase::Export, 1, 3);
   compact(m, classify ? &inside : nullptr, std::move(kept));
   if (options.insideFlags) m.inside = std::move(inside);
+  progress(Phase::Export, 2, 3);
   addProvenance(d, m);
+  progress(Phase::Export, 3, 3);
   return m;
 }
 

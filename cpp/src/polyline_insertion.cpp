@@ -96,7 +96,8 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     state_->slotMapValid = false;
 
     SegmentInserter inserter(d);
-    std::size_t offset = 0;
+    const Progress& progress = d.options().progress;
+    std::size_t offset = 0, segmentsTried = 0;
     for (std::size_t i = 0; i < count; ++i) {
       const PolylineView& line = polylines[i];
       const std::uint32_t* lineIds = ids + offset;
@@ -105,6 +106,8 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
       const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
       ++d.stats.polylines;
       for (std::size_t k = 0; k + 1 < line.count; ++k) {
+        if ((++segmentsTried & 255) == 0)
+          progress(Phase::Constraints, offset - line.count + k, total);
         const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
         if (u == v) continue;  // a repeated point: nothing to constrain
         EdgeSource src;
@@ -122,6 +125,7 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
         if (!status.ok()) return unresolved(status, i, k);
       }
     }
+    progress(Phase::Constraints, total, total);
   } catch (const std::bad_alloc&) {
     d.clear();
     state_->slotMapValid = false;

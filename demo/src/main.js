@@ -20,8 +20,10 @@ L.control.scale().addTo(map);
 
 const style = { ...DEFAULT_STYLE };
 const view = new MeshView(map, style, showNotice);
-const worker = new MeshWorker(() => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' }));
+const worker = new MeshWorker(
+  () => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' }));
 const state = { generation: 0, pending: 0, stats: null, source: null, hasMesh: false };
+const progress = createProgressBar();
 
 // One round trip: ask the worker, draw the answer, show the numbers. A newer load makes
 // older answers stale; edits are applied in the order they were made.
@@ -30,16 +32,20 @@ async function run(source, ask, { fit = false, isEdit = false } = {}) {
   const started = performance.now();
   state.pending++;
   setStatus('working', isEdit ? 'updating…' : `triangulating ${source}…`);
+  const onProgress = ({ phase, fraction }) => {
+    if (generation === state.generation) progress.show(phase, fraction);
+  };
   let reply = null;
   let failure = null;
   try {
-    reply = await ask();
+    reply = await ask(onProgress);
   } catch (e) {
     failure = e;
   } finally {
     state.pending--;
   }
   if (generation !== state.generation) return;
+  progress.hide();
   try {
     if (failure) throw failure;
     hideMessages();
@@ -50,7 +56,12 @@ async function run(source, ask, { fit = false, isEdit = false } = {}) {
     const now = performance.now();
     state.source = source;
     state.hasMesh = true;
-    state.stats = { ...reply.stats, drawMs: now - drawStarted, totalMs: now - started, renderer: view.drawnWith };
+    state.stats = {
+      ...reply.stats,
+      drawMs: now - drawStarted,
+      totalMs: now - started,
+      renderer: view.drawnWith,
+    };
     showStats(state.stats);
     if (state.pending === 0) setStatus('ready', 'ready');
   } catch (e) {
@@ -62,30 +73,35 @@ async function run(source, ask, { fit = false, isEdit = false } = {}) {
 function loadDataset(name) {
   editing.finishLine();
   const url = new URL(`data/${name}.bin`, document.baseURI).href;
-  return run(name, () => worker.request('dataset', { url }), { fit: false });
+  return run(name, (onProgress) => worker.request('dataset', { url }, [], onProgress),
+    { fit: false });
 }
 
 async function loadFile(file) {
   if (!file) return;
   editing.finishLine();
   if (file.size > MAX_FILE_BYTES) {
-    showError(`${file.name}: too big for the demo (${format(file.size)} bytes; the limit is ${format(MAX_FILE_BYTES)}).`);
+    showError(`${file.name}: too big for the demo (${format(file.size)} bytes; `
+      + `the limit is ${format(MAX_FILE_BYTES)}).`);
     setStatus(state.hasMesh ? 'error' : 'failed', 'error');
     return;
   }
   const bytes = await file.arrayBuffer();
-  await run(file.name, () => worker.request('geojson', { bytes }, [bytes]), { fit: true });
+  await run(file.name,
+    (onProgress) => worker.request('geojson', { bytes }, [bytes], onProgress), { fit: true });
 }
 
 function fitTo([west, south, east, north]) {
   const clamp = (lat) => Math.max(-85, Math.min(85, lat));
-  map.fitBounds([[clamp(south), west], [clamp(north), east]], { padding: [20, 20], maxZoom: 16, animate: false });
+  map.fitBounds([[clamp(south), west], [clamp(north), east]],
+    { padding: [20, 20], maxZoom: 16, animate: false });
 }
 
 const editing = new MapEditing(map, {
-  onPoint: (lonLat) => state.hasMesh && run(state.source, () => worker.request('addPoint', { lonLat }), { isEdit: true }),
-  onSegment: (from, to) =>
-    state.hasMesh && run(state.source, () => worker.request('addSegment', { from, to }), { isEdit: true }),
+  onPoint: (lonLat) => state.hasMesh
+    && run(state.source, () => worker.request('addPoint', { lonLat }), { isEdit: true }),
+  onSegment: (from, to) => state.hasMesh
+    && run(state.source, () => worker.request('addSegment', { from, to }), { isEdit: true }),
   onModeChange: () => {
     $('finish-line').disabled = !editing.drawing;
   },
@@ -129,6 +145,32 @@ function restyle(change) {
 
 // --- messages and statistics -----------------------------------------------------------
 
+// The bar under the statistics while a triangulation runs: geocdt's phase and how far it is.
+// Every report is also kept in window.geocdtDemo.progress, for automated checks.
+function createProgressBar() {
+  const box = document.createElement('div');
+  box.id = 'progress';
+  box.hidden = true;
+  const bar = document.createElement('progress');
+  bar.max = 1;
+  const label = document.createElement('span');
+  box.append(bar, label);
+  $('stats').before(box);
+  const log = [];
+  return {
+    log,
+    show(phase, fraction) {
+      log.push({ phase, fraction });
+      box.hidden = false;
+      bar.value = fraction;
+      label.textContent = `${phase} ${Math.round(100 * fraction)}%`;
+    },
+    hide() {
+      box.hidden = true;
+    },
+  };
+}
+
 function setStatus(status, text) {
   document.body.dataset.status = status;
   $('stat-status').textContent = text;
@@ -168,6 +210,6 @@ function nextFrame() {
 }
 
 // For automated checks and for the curious in the console.
-window.geocdtDemo = { map, get stats() { return state.stats; } };
+window.geocdtDemo = { map, progress: progress.log, get stats() { return state.stats; } };
 
 loadDataset($('dataset').value);

@@ -23,11 +23,12 @@ export class MeshWorker {
     this._nextId = 1;
   }
 
-  request(type, payload = {}, transfer = []) {
+  // onProgress({ phase, fraction }) hears the worker's progress reports for this request.
+  request(type, payload = {}, transfer = [], onProgress = null) {
     const worker = this._ensureWorker();
     const id = this._nextId++;
     return new Promise((resolve, reject) => {
-      this._pending.set(id, { resolve, reject });
+      this._pending.set(id, { resolve, reject, onProgress });
       worker.postMessage({ id, type, ...payload }, transfer);
     });
   }
@@ -38,6 +39,10 @@ export class MeshWorker {
     worker.onmessage = ({ data }) => {
       const pending = this._pending.get(data.id);
       if (!pending) return;
+      if (data.progress) {
+        pending.onProgress?.(data.progress);
+        return;
+      }
       this._pending.delete(data.id);
       if (data.ok) pending.resolve(data);
       else if (data.kind === 'input') pending.reject(new InputRejected(data.error));
@@ -53,7 +58,8 @@ export class MeshWorker {
       e.preventDefault();
       fail(`the triangulation worker crashed: ${e.message || 'it could not start'}`);
     };
-    worker.onmessageerror = () => fail('the triangulation worker sent a message that could not be read');
+    worker.onmessageerror =
+      () => fail('the triangulation worker sent a message that could not be read');
     this._worker = worker;
     return worker;
   }

@@ -16,11 +16,15 @@ let current = null;
 self.onmessage = async ({ data: request }) => {
   try {
     await loadWasm();
-    const reply = await handle(request);
-    self.postMessage({ id: request.id, ok: true, ...reply }, reply.mesh ? transferablesOf(reply.mesh) : []);
+    // geocdt reports at most about ten times a second: each report goes straight to the page.
+    const onProgress = (progress) => self.postMessage({ id: request.id, progress });
+    const reply = await handle(request, onProgress);
+    self.postMessage({ id: request.id, ok: true, ...reply },
+      reply.mesh ? transferablesOf(reply.mesh) : []);
   } catch (e) {
     // geocdt rejects bad coordinates with a TypeError or RangeError that names them.
-    const checked = (e instanceof TypeError || e instanceof RangeError) && /^geocdt:/.test(e.message);
+    const checked =
+      (e instanceof TypeError || e instanceof RangeError) && /^geocdt:/.test(e.message);
     const userFacing = e && (e.name === 'InputError' || checked);
     self.postMessage({
       id: request.id,
@@ -35,18 +39,18 @@ async function loadWasm() {
   try {
     await init();
   } catch (e) {
-    throw new Error(`could not load geocdt's WebAssembly module (${e.message})`);
+    throw new Error(`could not load geocdt's WebAssembly module (${e.message})`, { cause: e });
   }
 }
 
-async function handle(request) {
+async function handle(request, onProgress) {
   switch (request.type) {
     case 'dataset':
-      return loadDataset(request.url);
+      return loadDataset(request.url, onProgress);
     case 'geojson': {
       const started = performance.now();
       const input = prepareGeoJSON(new TextDecoder().decode(request.bytes));
-      return loadInput(input, performance.now() - started);
+      return loadInput(input, performance.now() - started, onProgress);
     }
     case 'addPoint':
       return addPoint(request.lonLat);
@@ -57,14 +61,14 @@ async function handle(request) {
   }
 }
 
-async function loadDataset(url) {
+async function loadDataset(url, onProgress) {
   const started = performance.now();
   const response = await fetch(url);
   if (!response.ok) throw new Error(`could not load ${url}: HTTP ${response.status}`);
   const layers = decodeDataset(await response.arrayBuffer());
   const input = { points: new Float64Array(0), polylines: [] };
   for (const layer of layers) for (const line of layer.lines) input.polylines.push(line);
-  return loadInput(projectInput(input), performance.now() - started);
+  return loadInput(projectInput(input), performance.now() - started, onProgress);
 }
 
 function prepareGeoJSON(text) {
@@ -94,9 +98,10 @@ function projectInput({ points, polylines }) {
   };
 }
 
-function loadInput(input, loadMs = 0) {
+function loadInput(input, loadMs, onProgress) {
   const started = performance.now();
-  const result = triangulate({ points: input.points, polylines: input.polylines }, MESH_OPTIONS);
+  const result = triangulate({ points: input.points, polylines: input.polylines },
+    { ...MESH_OPTIONS, onProgress });
   const triangulateMs = performance.now() - started;
   current?.incremental?.dispose();
   current = { input, incremental: null };
@@ -136,9 +141,11 @@ function addSegment(from, to) {
 function reply(result, triangulateMs, loadMs, bounds) {
   const started = performance.now();
   const { input } = current;
-  const inputPoints =
-    input.points.length / 2 + input.polylines.reduce((n, l) => n + l.length / 2, 0) + input.addedPoints + 2 * input.addedSegments;
-  const constraints = input.polylines.reduce((n, l) => n + l.length / 2 - 1, 0) + input.addedSegments;
+  const inputPoints = input.points.length / 2
+    + input.polylines.reduce((n, l) => n + l.length / 2, 0)
+    + input.addedPoints + 2 * input.addedSegments;
+  const constraints =
+    input.polylines.reduce((n, l) => n + l.length / 2 - 1, 0) + input.addedSegments;
   const mesh = meshBuffers(result);
   const stats = {
     inputPoints,

@@ -7,6 +7,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { init, meshToGeoJSON, triangulateGeoJSON } from 'geocdt';
+import { ProgressDisplay } from '../../web/progress-display.js';
 import { uniform } from './support/inputs.js';
 
 const cli = fileURLToPath(new URL('../../web/cli.js', import.meta.url));
@@ -16,7 +17,8 @@ const dir = mkdtempSync(join(tmpdir(), 'geocdt-cli-'));
 before(() => init());
 
 function run(args, input) {
-  return spawnSync(process.execPath, [cli, ...args], { encoding: 'utf8', input, maxBuffer: 1 << 30 });
+  return spawnSync(process.execPath, [cli, ...args],
+    { encoding: 'utf8', input, maxBuffer: 1 << 30 });
 }
 
 function multiPointFile(n) {
@@ -24,7 +26,8 @@ function multiPointFile(n) {
   const coordinates = [];
   for (let i = 0; i < xy.length; i += 2) coordinates.push([xy[i], xy[i + 1]]);
   const path = join(dir, `points-${n}.geojson`);
-  writeFileSync(path, JSON.stringify({ type: 'Feature', properties: {}, geometry: { type: 'MultiPoint', coordinates } }));
+  const geometry = { type: 'MultiPoint', coordinates };
+  writeFileSync(path, JSON.stringify({ type: 'Feature', properties: {}, geometry }));
   return path;
 }
 
@@ -35,7 +38,8 @@ test('writes the same FeatureCollection as the API', () => {
   assert.equal(p.status, 0, p.stderr);
   assert.equal(p.stderr, '', 'small inputs print nothing');
   const written = JSON.parse(readFileSync(out, 'utf8'));
-  const expected = meshToGeoJSON(triangulateGeoJSON(JSON.parse(readFileSync(input, 'utf8')), { output: 'arrays' }));
+  const arrays = triangulateGeoJSON(JSON.parse(readFileSync(input, 'utf8')), { output: 'arrays' });
+  const expected = meshToGeoJSON(arrays);
   assert.deepEqual(written, expected);
 });
 
@@ -43,7 +47,8 @@ test('reads stdin and writes stdout', () => {
   const geojson = readFileSync(multiPointFile(50), 'utf8');
   const p = run(['-'], geojson);
   assert.equal(p.status, 0, p.stderr);
-  assert.equal(JSON.parse(p.stdout).features.length, triangulateGeoJSON(JSON.parse(geojson)).features.length);
+  assert.equal(JSON.parse(p.stdout).features.length,
+    triangulateGeoJSON(JSON.parse(geojson)).features.length);
 });
 
 test('--stats and progress for a big input go to stderr', () => {
@@ -53,6 +58,10 @@ test('--stats and progress for a big input go to stderr', () => {
   assert.match(p.stderr, /geocdt: read 250,000 points/);
   assert.match(p.stderr, /geocdt: triangulated: [\d,]+ triangles in \d+ ms/);
   assert.match(p.stderr, /geocdt: writing 100%/);
+  // Not a terminal: plain lines, one per phase and quarter, never a bar.
+  assert.match(p.stderr, /^geocdt: triangulating: points \d+%$/m);
+  assert.match(p.stderr, /^geocdt: triangulating: export 100%$/m);
+  assert.doesNotMatch(p.stderr, /\r|\[#/);
   assert.match(p.stderr, /inserted\s+250,000/);
   assert.ok(JSON.parse(readFileSync(out, 'utf8')).features.length > 490_000);
 });
@@ -89,6 +98,34 @@ test('usage errors exit 2, bad input exits 1, both with a message', () => {
 
 test('--help and --version', () => {
   assert.match(run(['--help']).stdout, /Usage: geocdt/);
-  const version = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8')).version;
+  const pkg = new URL('../../package.json', import.meta.url);
+  const version = JSON.parse(readFileSync(pkg, 'utf8')).version;
   assert.equal(run(['--version']).stdout.trim(), version);
+});
+
+test('on a terminal, progress is one bar redrawn in place', () => {
+  const written = [];
+  const display = new ProgressDisplay({ write: (s) => written.push(s) }, true);
+  display.update('triangulating: points', 0);
+  display.update('triangulating: points', 0.004);  // the same bar: not drawn again
+  display.update('triangulating: points', 0.5);
+  display.update('writing', 1);
+  display.line('done in 1.00 s');
+  assert.equal(written.length, 5, JSON.stringify(written));
+  assert.ok(written.slice(0, 3).every((s) => s.startsWith('\r') && s.endsWith('\x1b[K')));
+  assert.match(written[1], /triangulating: points +\[#{15}-{15}\] 50%/);
+  assert.match(written[2], /writing +\[#{30}\] 100%/);
+  assert.equal(written[3], '\r\x1b[K', 'the bar is cleared before a message');
+  assert.equal(written[4], 'geocdt: done in 1.00 s\n');
+});
+
+test('elsewhere, a line when a step starts and at each quarter', () => {
+  const written = [];
+  const display = new ProgressDisplay({ write: (s) => written.push(s) }, false);
+  for (const f of [0, 0.1, 0.26, 0.3, 0.74, 0.75, 1]) display.update('writing', f);
+  display.update('done', 1);
+  // 0.3 is in the quarter 0.26 entered; 0.74 enters the third, 0.75 the fourth.
+  assert.deepEqual(written, ['geocdt: writing 0%\n', 'geocdt: writing 26%\n',
+    'geocdt: writing 74%\n', 'geocdt: writing 75%\n', 'geocdt: writing 100%\n',
+    'geocdt: done 100%\n']);
 });

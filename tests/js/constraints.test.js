@@ -34,7 +34,9 @@ test('two crossing segments meet at a new vertex', () => {
   assert.equal(r.stats.crossings, 1);
   assert.equal(r.constraintEdges.length, 4);
   let found = false;
-  for (let v = 0; v < r.points.length / 2; v++) found ||= r.points[2 * v] === 1 && r.points[2 * v + 1] === 1;
+  for (let v = 0; v < r.points.length / 2; v++) {
+    found ||= r.points[2 * v] === 1 && r.points[2 * v + 1] === 1;
+  }
   assert.ok(found, 'the crossing (1, 1) is a vertex');
   assert.deepEqual(Array.from(r.inputToVertex.subarray(4)).every((v) => v < 9), true);
 });
@@ -58,7 +60,8 @@ test('collinear overlapping chains, backtracking, repeated points, zero-length s
   ];
   const r = check({ points: [0, 10, 20, -10], polylines });
   // The overlap of [0,10] with [5,20] names both polylines.
-  const bothSources = r.constraintEdges.some((e, i) => r.sourceOffsets[i + 1] - r.sourceOffsets[i] >= 2);
+  const bothSources =
+    r.constraintEdges.some((e, i) => r.sourceOffsets[i + 1] - r.sourceOffsets[i] >= 2);
   assert.ok(bothSources, 'an overlapping piece lists every polyline it came from');
 });
 
@@ -67,7 +70,8 @@ test('a T-junction: a vertex lying on a segment splits it', () => {
 });
 
 test('rings: keep inside drops the hole and the outside (even-odd)', () => {
-  const polylines = [square(0, 0, 10, 10), square(3, 3, 6, 6), square(4, 4, 5, 5)];  // island in a lake
+  // An island in a lake.
+  const polylines = [square(0, 0, 10, 10), square(3, 3, 6, 6), square(4, 4, 5, 5)];
   const input = { points: [-5, -5, 15, 15, 20, 0], polylines };
   const all = check(input);
   const kept = check(input, { keep: 'inside' });
@@ -93,7 +97,8 @@ test('nonzero fill counts overlapping rings once, even-odd cancels them', () => 
 
 test('hundreds of random crossing segments', () => {
   const rnd = random(99);
-  const polylines = Array.from({ length: 400 }, () => [rnd() * 1e3, rnd() * 1e3, rnd() * 1e3, rnd() * 1e3]);
+  const polylines =
+    Array.from({ length: 400 }, () => [rnd() * 1e3, rnd() * 1e3, rnd() * 1e3, rnd() * 1e3]);
   const r = check({ points: uniform(5_000, 8), polylines });
   assert.ok(r.stats.crossings > 5_000, `crossings: ${r.stats.crossings}`);
 });
@@ -116,7 +121,10 @@ test('insertPolyline on a Triangulation, then results with inside flags', () => 
 });
 
 test('constraint calls leave the heap at its baseline', () => {
-  const input = { points: uniform(50, 1), polylines: [[0, 0, 1000, 1000], square(100, 100, 900, 900)] };
+  const input = {
+    points: uniform(50, 1),
+    polylines: [[0, 0, 1000, 1000], square(100, 100, 900, 900)],
+  };
   triangulate(input);
   const baseline = memoryUsage().allocatedBytes;
   for (let i = 0; i < 2_000; i++) triangulate(input, { keep: i % 2 ? 'inside' : 'all' });
@@ -128,14 +136,18 @@ test('real data: Natural Earth 110m country rings, shared borders overlapping', 
   const { readFileSync } = await import('node:fs');
   const { feature } = await import('topojson-client');
   const require = createRequire(import.meta.url);
-  const topology = JSON.parse(readFileSync(require.resolve('world-atlas/countries-110m.json'), 'utf8'));
+  const topology =
+    JSON.parse(readFileSync(require.resolve('world-atlas/countries-110m.json'), 'utf8'));
   const polylines = [];
   for (const f of feature(topology, topology.objects.countries).features) {
     const parts = f.geometry.type === 'Polygon' ? [f.geometry.coordinates] : f.geometry.coordinates;
-    for (const rings of parts) for (const ring of rings) polylines.push(Float64Array.from(ring.flat()));
+    for (const rings of parts) {
+      for (const ring of rings) polylines.push(Float64Array.from(ring.flat()));
+    }
   }
   const r = check({ polylines });
-  const shared = r.constraintEdges.filter((e, i) => r.sourceOffsets[i + 1] - r.sourceOffsets[i] >= 2).length;
+  const shared = r.constraintEdges
+    .filter((e, i) => r.sourceOffsets[i + 1] - r.sourceOffsets[i] >= 2).length;
   assert.ok(shared > 1_000, `borders shared by two countries: ${shared}`);
   const kept = check({ polylines }, { keep: 'inside' });
   assert.equal(kept.triangles.length / 3, r.inside.reduce((s, f) => s + f, 0));

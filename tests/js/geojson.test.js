@@ -7,7 +7,8 @@ import { checkMesh } from './support/invariants.js';
 
 before(() => init());
 
-const small = JSON.parse(readFileSync(new URL('./fixtures/small.geojson', import.meta.url), 'utf8'));
+const small =
+  JSON.parse(readFileSync(new URL('./fixtures/small.geojson', import.meta.url), 'utf8'));
 
 test('geometries become points and polylines', () => {
   const input = geoJSONToInput(small);
@@ -23,27 +24,38 @@ test('every geometry type, a bare geometry and a Feature', () => {
     type: 'GeometryCollection',
     geometries: [
       { type: 'MultiLineString', coordinates: [[[0, 0], [1, 1]], [[2, 2], [3, 3], [4, 2]]] },
-      { type: 'MultiPolygon', coordinates: [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[5, 5], [6, 5], [6, 6], [5, 5]]]] },
+      {
+        type: 'MultiPolygon',
+        coordinates: [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[5, 5], [6, 5], [6, 6], [5, 5]]]],
+      },
     ],
   };
   const input = geoJSONToInput(multi);
   assert.equal(input.polylines.length, 4);
-  assert.equal(geoJSONToInput({ type: 'Feature', geometry: { type: 'Point', coordinates: [3, 4] } }).points[1], 4);
+  const feature = { type: 'Feature', geometry: { type: 'Point', coordinates: [3, 4] } };
+  assert.equal(geoJSONToInput(feature).points[1], 4);
 });
 
 test('an unclosed ring is closed', () => {
-  const { polylines } = geoJSONToInput({ type: 'Polygon', coordinates: [[[0, 0], [4, 0], [4, 4]]] });
+  const { polylines } =
+    geoJSONToInput({ type: 'Polygon', coordinates: [[[0, 0], [4, 0], [4, 4]]] });
   assert.deepEqual(Array.from(polylines[0]), [0, 0, 4, 0, 4, 4, 0, 0]);
 });
 
 test('bad GeoJSON names the place', () => {
-  const at = (geometry) => () => geoJSONToInput({ type: 'FeatureCollection', features: [{ type: 'Feature', geometry }] });
-  assert.throws(at({ type: 'Point', coordinates: [1] }), { name: 'TypeError', message: /features\[0\].geometry.coordinates must be a position/ });
-  assert.throws(at({ type: 'LineString', coordinates: [[0, 0], [1, 'a']] }), { name: 'TypeError', message: /coordinates\[1\]\[1\] must be a number/ });
-  assert.throws(at({ type: 'Polygon', coordinates: [[[0, 0], [NaN, 1], [1, 1], [0, 0]]] }), { name: 'RangeError', message: /coordinates\[0\]\[1\]\[0\] is NaN/ });
-  assert.throws(at({ type: 'Circle', coordinates: [] }), { name: 'TypeError', message: /"Circle" is not a GeoJSON geometry type/ });
+  const at = (geometry) => () =>
+    geoJSONToInput({ type: 'FeatureCollection', features: [{ type: 'Feature', geometry }] });
+  assert.throws(at({ type: 'Point', coordinates: [1] }),
+    { name: 'TypeError', message: /features\[0\].geometry.coordinates must be a position/ });
+  assert.throws(at({ type: 'LineString', coordinates: [[0, 0], [1, 'a']] }),
+    { name: 'TypeError', message: /coordinates\[1\]\[1\] must be a number/ });
+  assert.throws(at({ type: 'Polygon', coordinates: [[[0, 0], [NaN, 1], [1, 1], [0, 0]]] }),
+    { name: 'RangeError', message: /coordinates\[0\]\[1\]\[0\] is NaN/ });
+  assert.throws(at({ type: 'Circle', coordinates: [] }),
+    { name: 'TypeError', message: /"Circle" is not a GeoJSON geometry type/ });
   assert.throws(() => geoJSONToInput('{}'), TypeError);
-  assert.throws(() => triangulateGeoJSON(small, { output: 'svg' }), { name: 'TypeError', message: /options.output/ });
+  assert.throws(() => triangulateGeoJSON(small, { output: 'svg' }),
+    { name: 'TypeError', message: /options.output/ });
 });
 
 test('meshToGeoJSON writes one counter-clockwise triangle per feature', () => {

@@ -18,7 +18,8 @@ test('10,000 calls leave the heap at its baseline', () => {
         triangles += triangulate({ points }, { insideFlags: i % 2 === 0 }).triangles.length;
         break;
       case 2:
-        assert.throws(() => triangulate({ points: [...points.subarray(0, 6), NaN, 0] }), RangeError);
+        assert.throws(() => triangulate({ points: [...points.subarray(0, 6), NaN, 0] }),
+          RangeError);
         break;
       case 3: {
         const t = new Triangulation();
@@ -41,7 +42,7 @@ test('10,000 calls leave the heap at its baseline', () => {
   assert.equal(memoryUsage().allocatedBytes, baseline, 'allocated bytes back to the baseline');
 });
 
-test('a garbage-collected Triangulation is freed by the FinalizationRegistry', async (t) => {
+test('a garbage-collected Triangulation is freed by the FinalizationRegistry', async () => {
   const { setFlagsFromString } = await import('node:v8');
   const { runInNewContext } = await import('node:vm');
   setFlagsFromString('--expose-gc');
@@ -50,7 +51,8 @@ test('a garbage-collected Triangulation is freed by the FinalizationRegistry', a
   (() => {
     for (let i = 0; i < 20; i++) new Triangulation().insertPoints(uniform(1_000, i + 1));
   })();
-  assert.ok(memoryUsage().allocatedBytes > baseline + 20 * 1_000 * 16, 'the triangulations hold memory');
+  assert.ok(memoryUsage().allocatedBytes > baseline + 20 * 1_000 * 16,
+    'the triangulations hold memory');
   for (let round = 0; round < 50 && memoryUsage().allocatedBytes !== baseline; round++) {
     gc();
     await new Promise((resolve) => setTimeout(resolve, 10));

@@ -6,6 +6,9 @@ import { init, triangulate, Triangulation } from 'geocdt';
 import { checkMesh } from './support/invariants.js';
 import { lattice, uniform } from './support/inputs.js';
 
+const runModule = (script) => execFileSync(process.execPath,
+  ['--input-type=module', '-e', script], { encoding: 'utf8' });
+
 before(() => init());
 
 // Triangles as sets of coordinate triples, independent of vertex numbering.
@@ -22,8 +25,9 @@ function triangleSet(r) {
 }
 
 test('before init() the API says what to do', () => {
-  const script = "import { triangulate } from 'geocdt'; try { triangulate({}); } catch (e) { console.log(e.message); }";
-  const out = execFileSync(process.execPath, ['--input-type=module', '-e', script], { encoding: 'utf8' });
+  const script = "import { triangulate } from 'geocdt'; "
+    + 'try { triangulate({}); } catch (e) { console.log(e.message); }';
+  const out = runModule(script);
   assert.match(out, /`await init\(\)` first/);
 });
 
@@ -36,7 +40,8 @@ test('inserting in batches gives the one-shot triangulation', () => {
     assert.equal(batch.length, 1_000);
     ids.push(...batch);
     const r = t.results();
-    checkMesh({ ...r, inputToVertex: Uint32Array.from(ids) }, { points: xy.subarray(0, start + 2_000) });
+    checkMesh({ ...r, inputToVertex: Uint32Array.from(ids) },
+      { points: xy.subarray(0, start + 2_000) });
   }
   const whole = t.results();
   assert.equal(t.vertexCount, 6_000);
@@ -74,7 +79,8 @@ test('locate() finds faces, edges, vertices and the outside', () => {
   for (let tri = 0; tri < r.triangles.length / 3; tri++) {
     const corner = (k) => r.triangles[3 * tri + k];
     const cx = (r.points[2 * corner(0)] + r.points[2 * corner(1)] + r.points[2 * corner(2)]) / 3;
-    const cy = (r.points[2 * corner(0) + 1] + r.points[2 * corner(1) + 1] + r.points[2 * corner(2) + 1]) / 3;
+    const cy = (r.points[2 * corner(0) + 1] + r.points[2 * corner(1) + 1]
+      + r.points[2 * corner(2) + 1]) / 3;
     const hit = t.locate(cx, cy);
     assert.equal(hit.kind, 'face');
     assert.equal(hit.triangle, tri);
@@ -129,6 +135,6 @@ test('a failed init() rejects and can be retried; wasmBinary is accepted', () =>
     await init({ wasmBinary: wasm });
     out.push(triangulate({ points: [0, 0, 1, 0, 0, 1] }).triangles.length);
     console.log(out.join(' '));`;
-  const out = execFileSync(process.execPath, ['--input-type=module', '-e', script], { encoding: 'utf8' });
+  const out = runModule(script);
   assert.equal(out.trim(), 'ENOENT 3');
 });

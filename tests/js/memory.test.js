@@ -1,9 +1,10 @@
-// Memory exhaustion: wasm32 stops at 4 GB. The call throws a RangeError, frees what it took,
+// Memory exhaustion: wasm32 stops at 4 GB. The call throws a GeocdtError with code
+// 'OutOfMemory', frees what it took,
 // and the module goes on working. (Its own file: node --test runs it in its own process, so
 // the grown heap does not weigh on the other tests.)
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
-import { init, triangulate, Triangulation, memoryUsage } from 'geocdt';
+import { init, triangulate, Triangulation, memoryUsage, GeocdtError } from 'geocdt';
 
 before(() => init());
 
@@ -14,12 +15,14 @@ function hugeInput() {
   return xy;
 }
 
-test('running out of wasm memory throws a RangeError and the module stays usable', () => {
+test('out of wasm memory: a GeocdtError (OutOfMemory), and the module stays usable', () => {
   triangulate({ points: [0, 0, 1, 0, 0, 1] });
   const baseline = memoryUsage().allocatedBytes;
   const xy = hugeInput();
   assert.throws(() => triangulate({ points: xy }), (error) => {
-    assert.ok(error instanceof RangeError, `${error.name}: ${error.message}`);
+    assert.ok(error instanceof GeocdtError, `${error.name}: ${error.message}`);
+    assert.equal(error.name, 'GeocdtError');
+    assert.equal(error.code, 'OutOfMemory');
     assert.match(error.message, /out of memory/);
     return true;
   });
@@ -27,7 +30,7 @@ test('running out of wasm memory throws a RangeError and the module stays usable
 
   const t = new Triangulation();
   t.insertPoints([0, 0, 1, 0, 0, 1]);
-  assert.throws(() => t.insertPoints(xy), /out of memory/);
+  assert.throws(() => t.insertPoints(xy), { name: 'GeocdtError', code: 'OutOfMemory' });
   t.insertPoints([0, 0, 4, 0, 0, 4, 1, 1]);
   assert.equal(t.results().triangles.length / 3, 3);
   t.dispose();
@@ -42,7 +45,8 @@ test('an input larger than the 4 GB address space is refused before any copy', (
   const line = new Float64Array(1_000_000).fill(1);
   const polylines = new Array(600).fill(line);  // 4.8 GB of coordinates
   assert.throws(() => triangulate({ polylines }), (error) => {
-    assert.ok(error instanceof RangeError, `${error.name}: ${error.message}`);
+    assert.ok(error instanceof GeocdtError, `${error.name}: ${error.message}`);
+    assert.equal(error.code, 'OutOfMemory');
     assert.match(error.message, /out of memory: the input alone needs 4800002404 bytes/);
     return true;
   });

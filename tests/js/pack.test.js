@@ -3,36 +3,44 @@
 import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { copyFileSync, existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import {
+  copyFileSync, existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync,
+} from 'node:fs';
 import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
 import { extname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { checkProgressEvents } from './support/progress.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const here = fileURLToPath(new URL('./pack/', import.meta.url));
 const dir = mkdtempSync(join(tmpdir(), 'geocdt-pack-'));
 after(() => rmSync(dir, { recursive: true, force: true }));
 
-const npm = (args, cwd) => execFileSync('npm', [...args, '--no-audit', '--no-fund', '--loglevel=error'],
+const npm = (args, cwd) => execFileSync('npm',
+  [...args, '--no-audit', '--no-fund', '--loglevel=error'],
   { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
 
 let installed = false;
 
 test('npm pack ships the wasm and the sources, nothing else', () => {
   assert.ok(existsSync(join(root, 'web/dist/geocdt.wasm')), 'build the wasm first: npm run build');
-  const [{ filename, files }] = JSON.parse(npm(['pack', '--json', '--pack-destination', dir], root));
+  const [{ filename, files }] =
+    JSON.parse(npm(['pack', '--json', '--pack-destination', dir], root));
   const paths = files.map((f) => f.path);
-  for (const needed of ['package.json', 'web/dist/geocdt.wasm', 'web/dist/geocdt.mjs', 'web/index.node.js',
-    'web/index.browser.js', 'web/index.d.ts', 'web/worker.d.ts', 'web/cli.js']) {
+  for (const needed of ['package.json', 'web/dist/geocdt.wasm', 'web/dist/geocdt.mjs',
+    'web/index.node.js', 'web/index.browser.js', 'web/index.d.ts', 'web/worker.d.ts',
+    'web/cli.js']) {
     assert.ok(paths.includes(needed), `${needed} is in the tarball`);
   }
   assert.ok(paths.includes('LICENSE'), 'the licence text is in the tarball');
-  assert.ok(paths.every((p) => p === 'package.json' || /^(web\/|README|LICENSE)/.test(p)), `unexpected files: ${paths}`);
+  assert.ok(paths.every((p) => p === 'package.json' || /^(web\/|README|LICENSE)/.test(p)),
+    `unexpected files: ${paths}`);
 
   const app = join(dir, 'app');
   execFileSync('mkdir', ['-p', app]);
-  writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', private: true, type: 'module' }));
+  writeFileSync(join(app, 'package.json'),
+    JSON.stringify({ name: 'app', private: true, type: 'module' }));
   npm(['install', join(dir, filename)], app);
   installed = true;
   // MIT asks for the licence text to travel with every copy.
@@ -44,17 +52,24 @@ test('the installed package runs in Node, worker and CLI included', () => {
   assert.ok(installed);
   const app = join(dir, 'app');
   copyFileSync(join(here, 'node-check.js'), join(app, 'node-check.js'));
-  const out = JSON.parse(execFileSync(process.execPath, ['node-check.js'], { cwd: app, encoding: 'utf8' }));
+  const out = JSON.parse(
+    execFileSync(process.execPath, ['node-check.js'], { cwd: app, encoding: 'utf8' }));
   assert.deepEqual(out, { triangles: 4, features: 1, workerTriangles: 4 });
   const bin = join(app, 'node_modules/.bin/geocdt');
   assert.match(execFileSync(bin, ['--help'], { encoding: 'utf8' }), /Usage: geocdt/);
 });
 
-const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.wasm': 'application/wasm' };
+const MIME = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.mjs': 'text/javascript',
+  '.wasm': 'application/wasm',
+};
 
 function serve(folder) {
   const server = createServer((req, res) => {
-    const path = join(folder, new URL(req.url, 'http://localhost').pathname.replace(/\/$/, '/index.html'));
+    const pathname = new URL(req.url, 'http://localhost').pathname;
+    const path = join(folder, pathname.replace(/\/$/, '/index.html'));
     if (!path.startsWith(folder) || !existsSync(path)) {
       res.writeHead(404).end();
       return;
@@ -70,7 +85,8 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
   const app = join(dir, 'app');
   for (const f of ['index.html', 'main.js']) copyFileSync(join(here, f), join(app, f));
   const { build } = await import('vite');
-  await build({ root: app, logLevel: 'error', build: { outDir: join(app, 'dist'), target: 'es2022' } });
+  await build(
+    { root: app, logLevel: 'error', build: { outDir: join(app, 'dist'), target: 'es2022' } });
   const assets = readdirSync(join(app, 'dist/assets'));
   assert.ok(assets.some((f) => f.endsWith('.wasm')), `the wasm is emitted as an asset: ${assets}`);
 
@@ -85,7 +101,9 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
     const errors = [];
     page.on('pageerror', (e) => errors.push(e.message));
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
-    await page.waitForFunction(() => document.getElementById('result').textContent !== 'running', null, { timeout: 30_000 });
+    await page.waitForFunction(
+      () => document.getElementById('result').textContent !== 'running', null,
+      { timeout: 30_000 });
     const text = await page.textContent('#result');
     assert.deepEqual(errors, []);
     const result = JSON.parse(text.startsWith('{') ? text : JSON.stringify({ error: text }));
@@ -94,6 +112,11 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
     assert.equal(result.workerTriangles, result.triangles);
     assert.equal(result.transferred, true);
     assert.equal(result.located, 'face');
+    // onProgress in the page and through the module Web Worker.
+    checkProgressEvents(result.syncProgress);
+    checkProgressEvents(result.workerProgress);
+    assert.deepEqual(result.syncProgress.at(-1), { phase: 'export', fraction: 1 });
+    assert.deepEqual(result.workerProgress.at(-1), { phase: 'export', fraction: 1 });
   } finally {
     await browser.close();
     server.close();

@@ -3,16 +3,9 @@
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { init, triangulate, Triangulation, memoryUsage } from 'geocdt';
+import { throwsWith } from './support/throws.js';
 
 before(() => init());
-
-function throwsWith(fn, Type, pattern) {
-  assert.throws(fn, (error) => {
-    assert.ok(error instanceof Type, `expected ${Type.name}, got ${error?.name}: ${error?.message}`);
-    assert.match(error.message, pattern);
-    return true;
-  });
-}
 
 function stillWorks() {
   const r = triangulate({ points: [0, 0, 1, 0, 0, 1] });
@@ -20,28 +13,43 @@ function stillWorks() {
 }
 
 test('wrong types', () => {
-  throwsWith(() => triangulate(), TypeError, /takes an object \{ points, polylines \}, got undefined/);
+  throwsWith(() => triangulate(), TypeError,
+    /takes an object \{ points, polylines \}, got undefined/);
   throwsWith(() => triangulate([0, 0, 1, 1]), TypeError, /takes an object/);
-  throwsWith(() => triangulate({ points: 'abc' }), TypeError, /points must be a Float64Array or an array of numbers.*got string/);
-  throwsWith(() => triangulate({ points: new Int32Array(4) }), TypeError, /got a Int32Array/);
-  throwsWith(() => triangulate({ points: [0, 0, '1', 2] }), TypeError, /points\[2\] must be a number, got string/);
-  throwsWith(() => triangulate({ points: [0, 0, 1, null] }), TypeError, /points\[3\] must be a number, got null/);
-  throwsWith(() => triangulate({ polylines: [0, 1, 2, 3] }), TypeError, /polylines\[0\] must be a Float64Array/);
-  throwsWith(() => triangulate({ polylines: new Float64Array(4) }), TypeError, /polylines must be an array of Float64Array/);
-  throwsWith(() => triangulate({ polylines: [[0, 0, 1, 1], [0, 0, 1, {}]] }), TypeError, /polylines\[1\]\[3\] must be a number, got a Object/);
+  throwsWith(() => triangulate({ points: 'abc' }), TypeError,
+    /points must be a Float64Array or an array of numbers.*got string/);
+  throwsWith(() => triangulate({ points: new BigInt64Array(4) }), TypeError,
+    /got a BigInt64Array/);
+  throwsWith(() => triangulate({ points: new DataView(new ArrayBuffer(16)) }), TypeError,
+    /got a DataView/);
+  throwsWith(() => triangulate({ points: [0, 0, '1', 2] }), TypeError,
+    /points\[2\] must be a number, got string/);
+  throwsWith(() => triangulate({ points: [0, 0, 1, null] }), TypeError,
+    /points\[3\] must be a number, got null/);
+  throwsWith(() => triangulate({ polylines: [0, 1, 2, 3] }), TypeError,
+    /polylines\[0\] must be a Float64Array/);
+  throwsWith(() => triangulate({ polylines: new Float64Array(4) }), TypeError,
+    /polylines must be an array of Float64Array/);
+  throwsWith(() => triangulate({ polylines: [[0, 0, 1, 1], [0, 0, 1, {}]] }), TypeError,
+    /polylines\[1\]\[3\] must be a number, got a Object/);
   stillWorks();
 });
 
 test('odd lengths', () => {
-  throwsWith(() => triangulate({ points: [0, 0, 1] }), RangeError, /points has an odd length \(3\)/);
-  throwsWith(() => triangulate({ polylines: [[0, 0, 1, 1], new Float64Array(5)] }), RangeError, /polylines\[1\] has an odd length \(5\)/);
+  throwsWith(() => triangulate({ points: [0, 0, 1] }), RangeError,
+    /points has an odd length \(3\)/);
+  throwsWith(() => triangulate({ polylines: [[0, 0, 1, 1], new Float64Array(5)] }), RangeError,
+    /polylines\[1\] has an odd length \(5\)/);
   stillWorks();
 });
 
 test('NaN and infinities name the offending index', () => {
-  throwsWith(() => triangulate({ points: [0, 0, 1, NaN] }), RangeError, /points\[3\] \(y of point 1\) is NaN/);
-  throwsWith(() => triangulate({ points: new Float64Array([0, 0, Infinity, 1]) }), RangeError, /points\[2\] \(x of point 1\) is Infinity/);
-  throwsWith(() => triangulate({ points: [-Infinity, 0] }), RangeError, /points\[0\] \(x of point 0\) is -Infinity/);
+  throwsWith(() => triangulate({ points: [0, 0, 1, NaN] }), RangeError,
+    /points\[3\] \(y of point 1\) is NaN/);
+  throwsWith(() => triangulate({ points: new Float64Array([0, 0, Infinity, 1]) }), RangeError,
+    /points\[2\] \(x of point 1\) is Infinity/);
+  throwsWith(() => triangulate({ points: [-Infinity, 0] }), RangeError,
+    /points\[0\] \(x of point 0\) is -Infinity/);
   throwsWith(() => triangulate({ polylines: [[0, 0, 1, 1, 2, 2], [0, 0, 5, NaN]] }), RangeError,
     /polylines\[1\]\[3\] \(y of point 1 of polyline 1\) is NaN/);
   stillWorks();
@@ -49,17 +57,24 @@ test('NaN and infinities name the offending index', () => {
 
 test('|coordinate| > 1e150', () => {
   triangulate({ points: [1e150, -1e150, 0, 0, 1, 1e150] });  // the limit itself is fine
-  throwsWith(() => triangulate({ points: [0, 0, 2e150, 0] }), RangeError, /points\[2\] \(x of point 1\) is 2e\+150, beyond the supported \|coordinate\| <= 1e150/);
-  throwsWith(() => triangulate({ points: new Float32Array([0, 0, 0, 0]), polylines: [[0, -1e300]] }), RangeError, /polylines\[0\]\[1\]/);
+  throwsWith(() => triangulate({ points: [0, 0, 2e150, 0] }), RangeError,
+    /points\[2\] \(x of point 1\) is 2e\+150, beyond the supported \|coordinate\| <= 1e150/);
+  throwsWith(
+    () => triangulate({ points: new Float32Array([0, 0, 0, 0]), polylines: [[0, -1e300]] }),
+    RangeError,
+    /polylines\[0\]\[1\]/);
   stillWorks();
 });
 
 test('bad options', () => {
   const ok = { points: [0, 0, 1, 0, 0, 1] };
-  throwsWith(() => triangulate(ok, { keep: 'outside' }), TypeError, /options.keep must be 'all' or 'inside', got "outside"/);
+  throwsWith(() => triangulate(ok, { keep: 'outside' }), TypeError,
+    /options.keep must be 'all' or 'inside', got "outside"/);
   throwsWith(() => triangulate(ok, { keep: 'toString' }), TypeError, /options.keep/);
-  throwsWith(() => triangulate(ok, { fillRule: 'winding' }), TypeError, /options.fillRule must be 'evenodd' or 'nonzero'/);
-  throwsWith(() => triangulate(ok, { insideFlags: 1 }), TypeError, /options.insideFlags must be a boolean/);
+  throwsWith(() => triangulate(ok, { fillRule: 'winding' }), TypeError,
+    /options.fillRule must be 'evenodd' or 'nonzero'/);
+  throwsWith(() => triangulate(ok, { insideFlags: 1 }), TypeError,
+    /options.insideFlags must be a boolean/);
   throwsWith(() => triangulate(ok, 'inside'), TypeError, /options must be an object/);
   stillWorks();
 });
@@ -67,7 +82,8 @@ test('bad options', () => {
 test('the incremental class checks its input too, and keeps its state on bad input', () => {
   const t = new Triangulation();
   t.insertPoints([0, 0, 1, 0, 0, 1]);
-  throwsWith(() => t.insertPoints([0, 0, NaN, 1]), RangeError, /points\[2\] \(x of point 1\) is NaN/);
+  throwsWith(() => t.insertPoints([0, 0, NaN, 1]), RangeError,
+    /points\[2\] \(x of point 1\) is NaN/);
   throwsWith(() => t.insertPolyline([0, 0, 1]), RangeError, /polyline has an odd length/);
   throwsWith(() => t.locate('1', 2), TypeError, /locate\(x, y\) takes two numbers/);
   throwsWith(() => t.results({ keep: 1 }), TypeError, /options.keep/);

@@ -5,7 +5,7 @@ import { createWorker } from 'geocdt/worker';
 import { init, triangulate, triangulateGeoJSON } from 'geocdt';
 import { createHost } from '../../web/worker-host.js';
 import { checkMesh } from './support/invariants.js';
-import { uniform } from './support/inputs.js';
+import { flatPolylines, uniform } from './support/inputs.js';
 
 const worker = createWorker();
 after(() => worker.terminate());
@@ -54,9 +54,12 @@ test('the host transfers every result buffer back', async () => {
 });
 
 test('errors keep their type and message across the worker', async () => {
-  await assert.rejects(worker.triangulate({ points: [0, 0, 1] }), { name: 'RangeError', message: /odd length/ });
-  await assert.rejects(worker.triangulate({ points: [0, 0, 1, NaN] }), { name: 'RangeError', message: /points\[3\]/ });
-  await assert.rejects(worker.triangulate({ points: [0, 0] }, { keep: 'most' }), { name: 'TypeError' });
+  await assert.rejects(worker.triangulate({ points: [0, 0, 1] }),
+    { name: 'RangeError', message: /odd length/ });
+  await assert.rejects(worker.triangulate({ points: [0, 0, 1, NaN] }),
+    { name: 'RangeError', message: /points\[3\]/ });
+  await assert.rejects(worker.triangulate({ points: [0, 0] }, { keep: 'most' }),
+    { name: 'TypeError' });
   const t = worker.createTriangulation();
   await t.dispose();
   await assert.rejects(t.insertPoints([0, 0]), { message: /no Triangulation 1 in this worker/ });
@@ -91,8 +94,37 @@ test('memoryUsage and GeoJSON through the worker', async () => {
 
 test('an idle worker does not keep node running', async () => {
   const { spawnSync } = await import('node:child_process');
-  const script = "import { createWorker } from 'geocdt/worker'; const w = createWorker(); const r = await w.triangulate({ points: [0, 0, 1, 0, 0, 1] }); console.log(r.triangles.length);";
-  const p = spawnSync(process.execPath, ['--input-type=module', '-e', script], { encoding: 'utf8', timeout: 20_000 });
+  const script = "import { createWorker } from 'geocdt/worker'; const w = createWorker(); "
+    + 'const r = await w.triangulate({ points: [0, 0, 1, 0, 0, 1] }); '
+    + 'console.log(r.triangles.length);';
+  const p = spawnSync(process.execPath, ['--input-type=module', '-e', script],
+    { encoding: 'utf8', timeout: 20_000 });
   assert.equal(p.status, 0, p.stderr);
   assert.equal(p.stdout.trim(), '3');
+});
+
+test('the worker takes every input form, and transfers any typed array', async () => {
+  const xy = Int16Array.from(uniform(500, 37), (v) => Math.round(v));
+  const lines = [[0, 0, 1000, 1000], [0, 1000, 1000, 0, 500, 0]];
+  const flat = flatPolylines(lines);
+  const here = triangulate({ points: xy, polylines: lines });
+  const sent = { points: xy.slice(), polylines: { coords: Float32Array.from(flat.coords),
+    offsets: Int32Array.from(flat.offsets) } };
+  const { coords, offsets } = sent.polylines;
+  const there = await worker.triangulate(sent);
+  for (const key of ['points', 'triangles', 'halfedges', 'constrained', 'inputToVertex',
+    'sources']) {
+    assert.deepEqual(there[key], here[key], key);
+  }
+  assert.equal(coords.byteLength, 0, 'the flat coordinates were transferred');
+  assert.equal(offsets.byteLength, 0, 'the offsets were transferred');
+  const mixed = await worker.triangulate({ points: Array.from(xy), polylines: lines });
+  assert.deepEqual(mixed.triangles, here.triangles);
+  await assert.rejects(worker.triangulate({ points: [0, 0, 1, 'x'] }),
+    { name: 'TypeError', message: /points\[3\] must be a number, got string/ });
+  const bad = { polylines: { coords: [0, 0, NaN, 1], offsets: [0, 2] } };
+  await assert.rejects(worker.triangulate(bad), {
+    name: 'RangeError',
+    message: /polylines\.coords\[2\] \(x of point 1 of polyline 0\) is NaN/,
+  });
 });

@@ -30,6 +30,26 @@ enum class LocateStart : std::uint8_t {
   LastTriangle,  // the triangle of the previous insertion
 };
 
+// What a long call is busy with, for progress reports.
+enum class Phase : std::uint8_t {
+  Sort,         // ordering a batch of points along the Hilbert curve
+  Points,       // inserting them
+  Constraints,  // inserting constraint segments
+  Export,       // building the caller's arrays
+};
+
+// An optional progress report: report(context, phase, done, total), called from outer loops
+// only, at cheap checkpoints (every 4096 points, every 256 segments, each step of an export).
+// A plain function pointer, so that an absent report costs one test per checkpoint.
+struct Progress {
+  void (*report)(void* context, Phase phase, std::size_t done, std::size_t total) = nullptr;
+  void* context = nullptr;
+
+  void operator()(Phase phase, std::size_t done, std::size_t total) const {
+    if (report != nullptr) report(context, phase, done, total);
+  }
+};
+
 struct Options {
   InsertionOrder order = InsertionOrder::Hilbert;
   LocateStart start = LocateStart::LastTriangle;
@@ -37,6 +57,7 @@ struct Options {
   // 1M uniform points: 8 keeps walks at 4.2-4.5 steps (2 gives 5.3, 16 gives 6) with a cell
   // per 4-8 points, about 1 byte per point.
   double gridDensity = 8.0;
+  Progress progress;
 };
 
 enum class FillRule : std::uint8_t { EvenOdd, NonZero };

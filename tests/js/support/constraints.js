@@ -34,7 +34,8 @@ function onSegment([px, py, qx, qy], x, y, relative = 1e-9) {
   const len2 = dx * dx + dy * dy;
   const t = ((x - px) * dx + (y - py) * dy) / len2;
   const distance = Math.abs((x - px) * dy - (y - py) * dx) / Math.sqrt(len2);
-  const tol = relative * (Math.abs(px) + Math.abs(py) + Math.abs(qx) + Math.abs(qy) + Math.sqrt(len2));
+  const tol =
+    relative * (Math.abs(px) + Math.abs(py) + Math.abs(qx) + Math.abs(qy) + Math.sqrt(len2));
   const along = tol / Math.sqrt(len2);
   return { t, on: distance <= tol && t >= -along && t <= 1 + along, along };
 }
@@ -80,7 +81,8 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
           const hit = onSegment(s, x(w), y(w));
           if (hit.on && hit.t > t + hit.along * 0.5 && hit.t < bestT) { best = w; bestT = hit.t; }
         }
-        assert.ok(best >= 0, `polyline ${j} segment ${k / 2} is not covered by constrained edges (stuck at vertex ${at})`);
+        assert.ok(best >= 0, `polyline ${j} segment ${k / 2} is not covered by constrained `
+          + `edges (stuck at vertex ${at})`);
         at = best;
         t = bestT;
       }
@@ -92,7 +94,8 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
   // containing it, so none lies off every input segment and overlaps name every polyline.
   const { constraintEdges, sourceOffsets, sources } = r;
   assert.equal(constraintEdges.length, edges.length, 'one provenance entry per constrained edge');
-  assert.equal(sourceOffsets.length, constraintEdges.length + 1, 'sourceOffsets has one more entry');
+  assert.equal(sourceOffsets.length, constraintEdges.length + 1,
+    'sourceOffsets has one more entry');
   assert.equal(sourceOffsets[sourceOffsets.length - 1], sources.length);
   const segments = polylines.map(segmentsOf);
   const boxes = polylines.map(boxOf);
@@ -108,11 +111,14 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     const may = [], must = [];
     segments.forEach((list, j) => {
       const [minX, minY, maxX, maxY] = boxes[j];
-      if (Math.min(ax, bx) < minX || Math.max(ax, bx) > maxX || Math.min(ay, by) < minY || Math.max(ay, by) > maxY) return;
+      if (Math.min(ax, bx) < minX || Math.max(ax, bx) > maxX
+        || Math.min(ay, by) < minY || Math.max(ay, by) > maxY) return;
       const on = (relative) => list.some((s) => {
         const pad = 1e-9 * (Math.abs(s[0]) + Math.abs(s[1]) + Math.abs(s[2]) + Math.abs(s[3]) + 1);
-        const outside = Math.max(ax, bx) < Math.min(s[0], s[2]) - pad || Math.min(ax, bx) > Math.max(s[0], s[2]) + pad
-          || Math.max(ay, by) < Math.min(s[1], s[3]) - pad || Math.min(ay, by) > Math.max(s[1], s[3]) + pad;
+        const outside = Math.max(ax, bx) < Math.min(s[0], s[2]) - pad
+          || Math.min(ax, bx) > Math.max(s[0], s[2]) + pad
+          || Math.max(ay, by) < Math.min(s[1], s[3]) - pad
+          || Math.min(ay, by) > Math.max(s[1], s[3]) + pad;
         return !outside && onSegment(s, ax, ay, relative).on && onSegment(s, bx, by, relative).on;
       });
       if (on(1e-9)) may.push(j);
@@ -121,8 +127,12 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     const named = Array.from(sources.subarray(sourceOffsets[i], sourceOffsets[i + 1]));
     const where = `edge ${e} (${ax},${ay})-(${bx},${by})`;
     assert.ok(may.length > 0, `constrained ${where} lies on no input segment`);
-    for (const j of named) assert.ok(may.includes(j), `${where} names polyline ${j} but lies on none of its segments`);
-    for (const j of must) assert.ok(named.includes(j), `${where} lies on polyline ${j} but names only ${named}`);
+    for (const j of named) {
+      assert.ok(may.includes(j), `${where} names polyline ${j} but lies on none of its segments`);
+    }
+    for (const j of must) {
+      assert.ok(named.includes(j), `${where} lies on polyline ${j} but names only ${named}`);
+    }
   });
 }
 
@@ -146,7 +156,8 @@ export function insideRings(rings, px, py, fillRule = 'evenodd') {
 export function checkInsideFlags(r, input, fillRule = 'evenodd') {
   const { points, triangles, inside } = r;
   assert.equal(inside.length, triangles.length / 3, 'one inside flag per triangle');
-  const rings = (input.polylines ?? []).filter(isRing).map((l) => ({ box: boxOf(l), segments: segmentsOf(l) }));
+  const rings = (input.polylines ?? []).filter(isRing)
+    .map((l) => ({ box: boxOf(l), segments: segmentsOf(l) }));
   for (let t = 0; t < inside.length; t++) {
     let cx = 0, cy = 0;
     for (let k = 0; k < 3; k++) {

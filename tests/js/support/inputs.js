@@ -53,3 +53,21 @@ export function circle(n, r = 1) {
 export function scaled(xy, factor, offset = 0) {
   return xy.map((v) => v * factor + offset);
 }
+
+// An array of polylines (x, y arrays) -> the flat form { coords, offsets }, GeoArrow's layout.
+export function flatPolylines(polylines) {
+  const offsets = new Uint32Array(polylines.length + 1);
+  polylines.forEach((line, i) => { offsets[i + 1] = offsets[i] + line.length / 2; });
+  const coords = new Float64Array(2 * offsets[polylines.length]);
+  polylines.forEach((line, i) => coords.set(line, 2 * offsets[i]));
+  return { coords, offsets };
+}
+
+// The flat form -> one Float64Array per polyline.
+export function polylineArrays({ coords, offsets }) {
+  const lines = [];
+  for (let i = 0; i + 1 < offsets.length; i++) {
+    lines.push(Float64Array.from(coords.slice(2 * offsets[i], 2 * offsets[i + 1])));
+  }
+  return lines;
+}

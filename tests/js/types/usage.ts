@@ -1,32 +1,60 @@
 // Compiled with tsc --noEmit by types.test.js: the declarations must accept real use and
 // reject wrong use (the @ts-expect-error lines fail the build if they stop being errors).
-import { init, triangulate, triangulateGeoJSON, Triangulation, memoryUsage, type TriangulateResult } from 'geocdt';
+import {
+  init, triangulate, triangulateGeoJSON, geoJSONToInput, Triangulation, memoryUsage, GeocdtError,
+  type TriangulateResult, type ProgressEvent, type GeocdtErrorCode,
+} from 'geocdt';
 import { createWorker } from 'geocdt/worker';
 
 async function main(): Promise<void> {
   await init();
   await init({ wasmUrl: 'geocdt.wasm' });
-  const r: TriangulateResult = triangulate({ points: new Float64Array(6), polylines: [[0, 0, 1, 1]] }, { keep: 'inside' });
+  const r: TriangulateResult = triangulate(
+    { points: new Float64Array(6), polylines: [[0, 0, 1, 1]] }, { keep: 'inside' });
   const t: Uint32Array = r.triangles;
   const h: Int32Array = r.halfedges;
   const inside: Uint8Array | undefined = r.inside;
   const ms: number = r.stats.milliseconds;
 
+  // Any numeric array, and the flat polylines form.
+  triangulate({ points: new Int32Array(6), polylines: [new Uint16Array(4), [0, 0, 1, 1]] });
+  const flat = triangulate({
+    points: new Float32Array(6),
+    polylines: { coords: new Int16Array(8), offsets: new Uint32Array([0, 2, 4]) },
+  }, { onProgress: (e: ProgressEvent) => void [e.phase, e.fraction] });
+  const phases: ProgressEvent['phase'][] = ['sort', 'points', 'constraints', 'export'];
+
   const fc = triangulateGeoJSON({ type: 'FeatureCollection', features: [] });
   const firstRing: [number, number][] = fc.features[0].geometry.coordinates[0];
   const arrays = triangulateGeoJSON({ type: 'Point', coordinates: [0, 0] }, { output: 'arrays' });
   const ids: Uint32Array = arrays.inputToVertex;
+  const perRing: Float64Array[] = geoJSONToInput({ type: 'Point', coordinates: [0, 0] }).polylines;
+  const offsets: Uint32Array =
+    geoJSONToInput({ type: 'Point', coordinates: [0, 0] }, { flat: true }).polylines.offsets;
 
   const tri = new Triangulation();
-  const v: Uint32Array = tri.insertPoints([0, 0, 1, 0, 0, 1]);
+  const v: Uint32Array = tri.insertPoints([0, 0, 1, 0, 0, 1], { onProgress: () => {} });
   const where = tri.locate(0.2, 0.2);
   const kind: 'empty' | 'outside' | 'face' | 'edge' | 'vertex' = where.kind;
+  const flips: number = tri.stats.flips;
   tri.dispose();
   const heap: number = memoryUsage().heapBytes;
 
+  try {
+    triangulate({});
+  } catch (e) {
+    if (e instanceof GeocdtError) {
+      const code: GeocdtErrorCode = e.code;
+      const index: number | undefined = e.index;
+      void [code, index];
+    }
+  }
+
   const worker = createWorker();
-  const remote = await worker.triangulate({ points: [0, 0, 1, 0, 0, 1] }, { transfer: false });
+  const remote = await worker.triangulate({ points: [0, 0, 1, 0, 0, 1] },
+    { transfer: false, onProgress: ({ fraction }) => void fraction });
   const rt = worker.createTriangulation();
+  await rt.insertPoints(new Int32Array(6), { onProgress: () => {} });
   const located = await rt.locate(0, 0);
   worker.terminate();
 
@@ -34,10 +62,17 @@ async function main(): Promise<void> {
   triangulate({ points: [] }, { keep: 'outside' });
   // @ts-expect-error points are numbers
   triangulate({ points: ['0', '1'] });
+  // @ts-expect-error BigInt arrays are not coordinates
+  triangulate({ points: new BigInt64Array(2) });
+  // @ts-expect-error offsets are integers
+  triangulate({ polylines: { coords: [0, 0], offsets: new Float64Array(2) } });
   // @ts-expect-error results() of a mesh has no inputToVertex
   new Triangulation().results().inputToVertex;
+  // @ts-expect-error no such phase
+  const phase: ProgressEvent['phase'] = 'walk';
 
-  void [t, h, inside, ms, firstRing, ids, v, kind, heap, remote, located];
+  void [t, h, inside, ms, flat, phases, firstRing, ids, perRing, offsets, v, kind, flips, heap,
+    remote, located, phase];
 }
 
 main();

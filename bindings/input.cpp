@@ -1,0 +1,52 @@
+#include "input.h"
+
+#include <new>
+#include <stdexcept>
+
+namespace geocdt::wasm {
+
+bool Input::resize(double pointCount, double linePointCount, double lineCount) {
+  clear();
+  // wasm32's whole address space, in bytes: anything larger cannot be allocated anyway, and
+  // the doubles could not be converted to size_t.
+  constexpr double kAddressSpace = 4294967296.0;
+  if (16 * (pointCount + linePointCount) + 4 * lineCount >= kAddressSpace) return false;
+  try {
+    points.resize(2 * static_cast<std::size_t>(pointCount));
+    lineCoords.resize(2 * static_cast<std::size_t>(linePointCount));
+    lineOffsets.resize(static_cast<std::size_t>(lineCount) + 1);
+  } catch (const std::bad_alloc&) {
+    clear();
+    return false;
+  } catch (const std::length_error&) {
+    clear();
+    return false;
+  }
+  return true;
+}
+
+double Input::badOffset() const {
+  if (lineOffsets.empty()) return -1;
+  if (lineOffsets[0] != 0) return 0;
+  const std::size_t end = linePointCount();
+  for (std::size_t i = 1; i < lineOffsets.size(); ++i)
+    if (lineOffsets[i] < lineOffsets[i - 1] || lineOffsets[i] > end) return static_cast<double>(i);
+  if (lineOffsets.back() != end) return static_cast<double>(lineOffsets.size() - 1);
+  return -1;
+}
+
+std::vector<PolylineView> Input::polylines() const {
+  std::vector<PolylineView> views(lineCount());
+  for (std::size_t i = 0; i < views.size(); ++i)
+    views[i] = {lineCoords.data() + 2 * static_cast<std::size_t>(lineOffsets[i]),
+                static_cast<std::size_t>(lineOffsets[i + 1] - lineOffsets[i])};
+  return views;
+}
+
+void Input::clear() {
+  std::vector<double>().swap(points);
+  std::vector<double>().swap(lineCoords);
+  std::vector<std::uint32_t>().swap(lineOffsets);
+}
+
+}  // namespace geocdt::wasm

@@ -1,0 +1,49 @@
+#pragma once
+// A call's input, written by JS straight into buffers that the binding owns: JS sizes them
+// with resize(), then copies each caller array in with one TypedArray.set() at their
+// addresses. No other copy is made on the way to the core. The coordinates are kept as
+// std::vector<double> so that the core can adopt them by move once it takes them that way.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "geocdt/triangulation.h"
+
+namespace geocdt::wasm {
+
+class Input {
+ public:
+  // x, y of the points (of the incremental calls: of this call's points or polyline).
+  std::vector<double> points;
+  // The polylines in GeoArrow's layout: polyline i has the points lineOffsets[i] ..
+  // lineOffsets[i + 1] of lineCoords (x, y interleaved); lineOffsets has lineCount + 1 entries.
+  std::vector<double> lineCoords;
+  std::vector<std::uint32_t> lineOffsets;
+
+  // Sizes the three arrays for JS to fill (the numbers arrive as doubles: JS may ask for more
+  // than size_t holds). false when memory runs out; everything is freed then.
+  bool resize(double pointCount, double linePointCount, double lineCount);
+  std::uintptr_t pointsAddress() const { return address(points); }
+  std::uintptr_t lineCoordsAddress() const { return address(lineCoords); }
+  std::uintptr_t lineOffsetsAddress() const { return address(lineOffsets); }
+
+  // The first i where lineOffsets breaks the layout, or -1: lineOffsets[0] is 0, no offset is
+  // below the one before it, and the last one is the number of points in lineCoords.
+  double badOffset() const;
+
+  std::size_t pointCount() const { return points.size() / 2; }
+  std::size_t linePointCount() const { return lineCoords.size() / 2; }
+  std::size_t lineCount() const { return lineOffsets.empty() ? 0 : lineOffsets.size() - 1; }
+  // One view per polyline into lineCoords (once badOffset() is -1).
+  std::vector<PolylineView> polylines() const;
+
+  void clear();  // frees the buffers
+
+ private:
+  template <typename T>
+  static std::uintptr_t address(const std::vector<T>& v) {
+    return reinterpret_cast<std::uintptr_t>(v.data());
+  }
+};
+
+}  // namespace geocdt::wasm

@@ -1,0 +1,59 @@
+#include "progress.h"
+
+#include <emscripten/emscripten.h>
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+namespace geocdt::wasm {
+
+namespace {
+constexpr double kIntervalMs = 100;  // at most about ten reports a second
+}
+
+void ProgressRelay::start(emscripten::val callback, std::size_t points) {
+  active_ = callback.typeOf().as<std::string>() == "function";
+  callback_ = active_ ? std::move(callback) : emscripten::val::undefined();
+  points_ = points;
+  batchStart_ = 0;
+  phase_ = -1;
+  fraction_ = 0;
+  unsent_ = false;
+  sentAny_ = false;
+}
+
+void ProgressRelay::finish() {
+  if (active_ && unsent_) send();
+  active_ = false;
+  callback_ = emscripten::val::undefined();
+}
+
+void ProgressRelay::report(void* relay, Phase phase, std::size_t done, std::size_t total) {
+  auto& self = *static_cast<ProgressRelay*>(relay);
+  if (!self.active_) return;
+  double fraction = total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
+  // The sort and the insertion of points run once per batch: their fractions count the points
+  // of the whole call.
+  if ((phase == Phase::Sort || phase == Phase::Points) && self.points_ > 0)
+    fraction = static_cast<double>(self.batchStart_ + done) / static_cast<double>(self.points_);
+  self.update(phase, std::min(fraction, 1.0));
+}
+
+void ProgressRelay::update(Phase phase, double fraction) {
+  const int p = static_cast<int>(phase);
+  if (p < phase_ || (p == phase_ && fraction <= fraction_)) return;
+  phase_ = p;
+  fraction_ = fraction;
+  unsent_ = true;
+  if (!sentAny_ || emscripten_get_now() - sentAt_ >= kIntervalMs) send();
+}
+
+void ProgressRelay::send() {
+  sentAt_ = emscripten_get_now();
+  sentAny_ = true;
+  unsent_ = false;
+  callback_(phase_, fraction_);
+}
+
+}  // namespace geocdt::wasm

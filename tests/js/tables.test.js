@@ -1,0 +1,110 @@
+// The tables C++ and JS share have one source, the module (bindings/names.h and
+// bindings/output.cpp register them): this test fails when the types, the docs, the tests'
+// own lists or the JS constants drift from what the module says.
+import { test, before } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import createGeocdtModule from '../../web/dist/geocdt.mjs';
+import { init, triangulate, Triangulation } from 'geocdt';
+import { MAX_COORDINATE } from '../../web/input.js';
+import { PHASES } from './support/progress.js';
+
+const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
+// The declarations without their comments, which may hold any character.
+const types = read('../../web/index.d.ts').replace(/\/\*[\s\S]*?\*\//g, '')
+  .replace(/\/\/.*$/gm, '');
+const typesText = read('../../web/index.d.ts');
+const api = read('../../web/API.md');
+
+let wasm;
+before(async () => {
+  await init();
+  wasm = await createGeocdtModule(
+    { wasmBinary: readFileSync(new URL('../../web/dist/geocdt.wasm', import.meta.url)) });
+});
+
+// An embind enum's names by value; the values must run 0, 1, 2, ... without a gap.
+function names(embindEnum) {
+  const entries = Object.entries(embindEnum).filter(([name]) => name !== 'values');
+  const byValue = [];
+  for (const [name, v] of entries) byValue[v.value] = name;
+  assert.equal(byValue.length, entries.length, 'values numbered 0, 1, 2, ...');
+  assert.ok(!byValue.includes(undefined), 'no gap in the values');
+  return byValue;
+}
+
+// The string literals of `export type Name = 'a' | 'b' ...;` in web/index.d.ts.
+function union(name) {
+  const match = types.match(new RegExp(`export type ${name} =([^;]*);`));
+  assert.ok(match, `web/index.d.ts declares type ${name}`);
+  return [...match[1].matchAll(/'(\w+)'/g)].map((m) => m[1]);
+}
+
+// The members of `export interface Name { ... }` in web/index.d.ts.
+function members(name) {
+  const match = types.match(new RegExp(`export interface ${name}\\b[^{]*\\{([^}]*)\\}`));
+  assert.ok(match, `web/index.d.ts declares interface ${name}`);
+  return [...match[1].matchAll(/^\s*(\w+)\??:/gm)].map((m) => m[1]);
+}
+
+const sorted = (list) => [...list].sort();
+
+test('status codes: every failure the core reports is a documented error code', () => {
+  const codes = names(wasm.StatusCode);
+  assert.equal(codes[0], 'Ok');
+  const documented = union('GeocdtErrorCode');
+  for (const code of codes.slice(1)) {
+    const inputMistake = code === 'InvalidArgument' || code === 'InvalidCoordinate';
+    if (!inputMistake) assert.ok(documented.includes(code), `${code} in GeocdtErrorCode`);
+    assert.ok(api.includes(`'${code}'`), `web/API.md names ${code}`);
+  }
+  for (const code of documented) assert.ok(api.includes(`'${code}'`), `web/API.md names ${code}`);
+});
+
+test('location kinds, keep, fill rules and phases', () => {
+  // 'invalid' (a NaN or infinite coordinate) never reaches JS: locate() throws a RangeError.
+  const kinds = names(wasm.LocationKind);
+  assert.ok(kinds.includes('invalid'));
+  assert.deepEqual(sorted(kinds.filter((k) => k !== 'invalid')), sorted(union('LocationKind')));
+  assert.deepEqual(sorted(names(wasm.Keep)), sorted(union('Keep')));
+  assert.deepEqual(sorted(names(wasm.FillRule)), sorted(union('FillRule')));
+  assert.deepEqual(names(wasm.Phase), union('ProgressPhase'));
+  assert.deepEqual(names(wasm.Phase), PHASES);
+  for (const phase of PHASES) assert.ok(api.includes(`'${phase}'`), `web/API.md names ${phase}`);
+  const t = new Triangulation();
+  assert.equal(t.locate(0, 0).kind, names(wasm.LocationKind)[0]);
+  t.dispose();
+});
+
+test('output fields: the module\'s arrays are the result\'s, typed and documented', () => {
+  const fields = names(wasm.Field);
+  const elementTypes = names(wasm.ElementType);
+  const r = triangulate({ points: [0, 0, 1, 0, 0, 1], polylines: [[0, 0, 1, 1]] },
+    { insideFlags: true });
+  const documented = [...members('Mesh'), ...members('TriangulateResult')];
+  for (const field of fields) {
+    if (field === 'vertexIds') continue;  // the incremental insertions' return value
+    const Type = globalThis[`${elementTypes[wasm.elementType(wasm.Field[field]).value]}Array`];
+    assert.ok(r[field] instanceof Type, `${field} is a ${Type.name}`);
+    assert.ok(documented.includes(field), `web/index.d.ts documents ${field}`);
+    assert.ok(api.includes(`| \`${field}\` | ${Type.name} |`), `web/API.md's table has ${field}`);
+  }
+  assert.deepEqual(sorted(Object.keys(r).filter((k) => k !== 'stats')),
+    sorted(fields.filter((f) => f !== 'vertexIds')));
+});
+
+test('statistics: the module\'s counters are the documented ones', () => {
+  const core = Object.keys(new wasm.Output().stats());
+  assert.deepEqual(sorted(core), sorted(members('CoreStats')));
+  const t = new Triangulation();
+  assert.deepEqual(sorted(Object.keys(t.stats)), sorted(core));
+  t.dispose();
+  const all = Object.keys(triangulate({ points: [0, 0, 1, 0, 0, 1] }).stats);
+  assert.deepEqual(sorted(all), sorted([...core, ...members('Stats')]));
+  for (const stat of all) assert.ok(api.includes(`| \`${stat}\` |`), `web/API.md lists ${stat}`);
+});
+
+test('the coordinate bound', () => {
+  assert.equal(MAX_COORDINATE, wasm.maxCoordinate);
+  assert.ok(api.includes('1e150') && typesText.includes('1e150'));
+});
