@@ -9,7 +9,9 @@ const LINE_CHUNK = 1024;
 
 function chunks(count, size, make) {
   const out = [];
-  for (let first = 0; first < count; first += size) out.push(make(first, Math.min(size, count - first)));
+  for (let first = 0; first < count; first += size) {
+    out.push(make(first, Math.min(size, count - first)));
+  }
   return out;
 }
 
@@ -25,7 +27,9 @@ export const CanvasMeshLayer = L.LayerGroup.extend({
     this._mesh = mesh;
     const p = mesh.points;
     this._latLngs = new Array(p.length / 2);
-    for (let i = 0; i < p.length; i += 2) this._latLngs[i / 2] = L.CRS.EPSG3857.unproject(L.point(p[i], p[i + 1]));
+    for (let i = 0; i < p.length; i += 2) {
+      this._latLngs[i / 2] = L.CRS.EPSG3857.unproject(L.point(p[i], p[i + 1]));
+    }
     return this.setStyle(this._style);
   },
 
@@ -45,12 +49,14 @@ export const CanvasMeshLayer = L.LayerGroup.extend({
     };
     const fills = [
       [s.show !== 'outside', s.insideFill, 0, m.insideTriangles],
-      [s.show !== 'inside', s.outsideFill, m.insideTriangles, m.triangles.length / 3 - m.insideTriangles],
+      [s.show !== 'inside', s.outsideFill, m.insideTriangles,
+        m.triangles.length / 3 - m.insideTriangles],
     ];
     for (const [visible, colour, first, count] of fills) {
       if (!visible || !s.fill || count === 0) continue;
       const options = {
-        renderer, stroke: false, fillColor: cssColour(colour), fillOpacity: 1, interactive: false, smoothFactor: 0,
+        renderer, stroke: false, fillColor: cssColour(colour), fillOpacity: 1, interactive: false,
+        smoothFactor: 0,
       };
       for (const rings of chunks(count, FILL_CHUNK, (f, n) => triangleRings(first + f, n))) {
         this.addLayer(L.polygon(rings, options));
@@ -63,13 +69,20 @@ export const CanvasMeshLayer = L.LayerGroup.extend({
     for (const [visible, pairs, counts, colour, weight] of lines) {
       const [first, count] = GROUP_RANGES[s.show](counts);
       if (!visible || count === 0) continue;
-      const options = { renderer, color: cssColour(colour), opacity: 1, weight, interactive: false, smoothFactor: 0 };
+      const options = {
+        renderer, color: cssColour(colour), opacity: 1, weight, interactive: false, smoothFactor: 0,
+      };
       const segments = (f, n) => {
         const part = new Array(n);
-        for (let k = 0; k < n; k++) part[k] = [ll[pairs[2 * (first + f + k)]], ll[pairs[2 * (first + f + k) + 1]]];
+        for (let k = 0; k < n; k++) {
+          const at = 2 * (first + f + k);
+          part[k] = [ll[pairs[at]], ll[pairs[at + 1]]];
+        }
         return part;
       };
-      for (const part of chunks(count, LINE_CHUNK, segments)) this.addLayer(L.polyline(part, options));
+      for (const part of chunks(count, LINE_CHUNK, segments)) {
+        this.addLayer(L.polyline(part, options));
+      }
     }
     return this;
   },

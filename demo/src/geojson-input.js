@@ -34,7 +34,9 @@ export function readGeoJSON(json) {
 function addObject(obj, out, where) {
   switch (obj.type) {
     case 'FeatureCollection':
-      if (!Array.isArray(obj.features)) throw new InputError(`${where}: "features" must be an array`);
+      if (!Array.isArray(obj.features)) {
+        throw new InputError(`${where}: "features" must be an array`);
+      }
       obj.features.forEach((f, i) => addObject(f, out, `feature ${i}`));
       return;
     case 'Feature':
@@ -45,7 +47,9 @@ function addObject(obj, out, where) {
       addObject(obj.geometry, out, where);
       return;
     case 'GeometryCollection':
-      if (!Array.isArray(obj.geometries)) throw new InputError(`${where}: "geometries" must be an array`);
+      if (!Array.isArray(obj.geometries)) {
+        throw new InputError(`${where}: "geometries" must be an array`);
+      }
       obj.geometries.forEach((g) => addObject(g, out, where));
       return;
     default:
@@ -56,7 +60,9 @@ function addObject(obj, out, where) {
 function addGeometry(g, out, where) {
   const c = g.coordinates;
   const need = (depth) => {
-    if (!isNested(c, depth)) throw new InputError(`${where}: ${g.type} "coordinates" are malformed`);
+    if (!isNested(c, depth)) {
+      throw new InputError(`${where}: ${g.type} "coordinates" are malformed`);
+    }
   };
   switch (g.type) {
     case 'Point':
@@ -97,14 +103,17 @@ function isNested(c, depth) {
 
 function position(p, out, where) {
   const [lon, lat] = p;
-  if (typeof lon !== 'number' || typeof lat !== 'number' || !Number.isFinite(lon) || !Number.isFinite(lat)) {
+  const numbers = typeof lon === 'number' && typeof lat === 'number';
+  if (!numbers || !Number.isFinite(lon) || !Number.isFinite(lat)) {
     throw new InputError(`${where}: a position is not two finite numbers: ${JSON.stringify(p)}`);
   }
   if (Math.abs(lat) > 90 || Math.abs(lon) > 540) {
-    throw new InputError(`${where}: [${lon}, ${lat}] is not lon/lat in degrees (is the file projected?)`);
+    throw new InputError(
+      `${where}: [${lon}, ${lat}] is not lon/lat in degrees (is the file projected?)`);
   }
   if (++out.pointCount > MAX_INPUT_POINTS) {
-    throw new InputError(`too big for the demo: more than ${MAX_INPUT_POINTS.toLocaleString('en')} points`);
+    throw new InputError(
+      `too big for the demo: more than ${MAX_INPUT_POINTS.toLocaleString('en')} points`);
   }
   return [lon, lat];
 }
@@ -117,7 +126,9 @@ function flatten(positions, out, where) {
 
 // Lines are constraints only: a closed one is cut in two so it is not taken for a ring.
 function addLine(positions, out, where) {
-  if (positions.length < 2) throw new InputError(`${where}: a LineString needs at least 2 positions`);
+  if (positions.length < 2) {
+    throw new InputError(`${where}: a LineString needs at least 2 positions`);
+  }
   const xy = flatten(positions, out, where);
   const n = positions.length;
   if (n > 2 && xy[0] === xy[2 * n - 2] && xy[1] === xy[2 * n - 1]) {
@@ -129,7 +140,9 @@ function addLine(positions, out, where) {
 }
 
 function addRing(positions, out, where) {
-  if (positions.length < 3) throw new InputError(`${where}: a polygon ring needs at least 3 positions`);
+  if (positions.length < 3) {
+    throw new InputError(`${where}: a polygon ring needs at least 3 positions`);
+  }
   let xy = flatten(positions, out, where);
   const n = positions.length;
   if (xy[0] !== xy[2 * n - 2] || xy[1] !== xy[2 * n - 1]) {

@@ -34,7 +34,8 @@ function getContext(canvas, antialias) {
   const attributes = { antialias, premultipliedAlpha: true, alpha: true };
   const gl = canvas.getContext('webgl2', attributes) || canvas.getContext('webgl', attributes);
   // WebGL 1 needs an extension for meshes of more than 65,536 vertices.
-  if (gl && !(gl instanceof WebGL2RenderingContext) && !gl.getExtension('OES_element_index_uint')) return null;
+  const webgl2 = gl instanceof WebGL2RenderingContext;
+  if (gl && !webgl2 && !gl.getExtension('OES_element_index_uint')) return null;
   return gl;
 }
 
@@ -45,7 +46,7 @@ export function webglKind() {
   const gl = getContext(document.createElement('canvas'), true);
   if (!gl) return null;
   const info = gl.getExtension('WEBGL_debug_renderer_info');
-  const renderer = info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
+  const renderer = gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
   gl.getExtension('WEBGL_lose_context')?.loseContext();
   return SOFTWARE_RENDERERS.test(renderer) ? 'WebGL (software)' : 'WebGL';
 }
@@ -141,7 +142,8 @@ export const GlMeshLayer = L.Layer.extend({
     const canvas = this._canvas;
     const topLeft = size.multiplyBy(-PADDING).round();
     L.DomUtil.setPosition(canvas, map.containerPointToLayerPoint(topLeft));
-    if (canvas.width !== Math.round(padded.x * ratio) || canvas.height !== Math.round(padded.y * ratio)) {
+    const pixelWidth = Math.round(padded.x * ratio), pixelHeight = Math.round(padded.y * ratio);
+    if (canvas.width !== pixelWidth || canvas.height !== pixelHeight) {
       canvas.width = Math.round(padded.x * ratio);
       canvas.height = Math.round(padded.y * ratio);
       canvas.style.width = `${padded.x}px`;
@@ -191,7 +193,8 @@ export const GlMeshLayer = L.Layer.extend({
     const cy = Math.fround(centre.y);
     gl.uniform2f(uniforms.centreHigh, cx, cy);
     gl.uniform2f(uniforms.centreLow, centre.x - cx, centre.y - cy);
-    gl.uniform2f(uniforms.metresToClip, (2 * metresToPixels) / width, (2 * metresToPixels) / height);
+    const toClip = 2 * metresToPixels;
+    gl.uniform2f(uniforms.metresToClip, toClip / width, toClip / height);
 
     gl.bindBuffer(gl.ARRAY_BUFFER, this._buffers.positions);
     gl.enableVertexAttribArray(attributes.high);
@@ -203,7 +206,8 @@ export const GlMeshLayer = L.Layer.extend({
     const s = this._style;
     const fills = [
       [s.show !== 'outside', s.insideFill, 0, m.insideTriangles],
-      [s.show !== 'inside', s.outsideFill, m.insideTriangles, m.triangles.length / 3 - m.insideTriangles],
+      [s.show !== 'inside', s.outsideFill, m.insideTriangles,
+        m.triangles.length / 3 - m.insideTriangles],
     ];
     gl.uniform2f(uniforms.shift, 0, 0);
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this._buffers.triangles);
@@ -221,7 +225,8 @@ export const GlMeshLayer = L.Layer.extend({
     const [px, py] = [2 / width, 2 / height];
     const lines = [
       [s.edges && fade > 0, this._buffers.edges, m.edgeCounts, edgeColour, [[0, 0]]],
-      [s.constraints, this._buffers.constraints, m.constraintCounts, s.constraintColour, [[0, 0], [px, 0], [0, py]]],
+      [s.constraints, this._buffers.constraints, m.constraintCounts, s.constraintColour,
+        [[0, 0], [px, 0], [0, py]]],
     ];
     for (const [visible, buffer, counts, colour, shifts] of lines) {
       if (!visible) continue;
@@ -246,15 +251,22 @@ function buildProgram(gl) {
     const shader = gl.createShader(type);
     gl.shaderSource(shader, source);
     gl.compileShader(shader);
-    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(shader));
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
+      throw new Error(gl.getShaderInfoLog(shader));
+    }
     return shader;
   };
   const program = gl.createProgram();
   gl.attachShader(program, compile(gl.VERTEX_SHADER, VERTEX_SHADER));
   gl.attachShader(program, compile(gl.FRAGMENT_SHADER, FRAGMENT_SHADER));
   gl.linkProgram(program);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(program));
-  const attributes = { high: gl.getAttribLocation(program, 'high'), low: gl.getAttribLocation(program, 'low') };
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+    throw new Error(gl.getProgramInfoLog(program));
+  }
+  const attributes = {
+    high: gl.getAttribLocation(program, 'high'),
+    low: gl.getAttribLocation(program, 'low'),
+  };
   const uniforms = {};
   for (const name of ['centreHigh', 'centreLow', 'metresToClip', 'shift', 'colour']) {
     uniforms[name] = gl.getUniformLocation(program, name);

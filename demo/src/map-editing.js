@@ -49,7 +49,8 @@ export class MapEditing {
       this._onPoint(lonLat);
     } else if (this._mode === 'line') {
       if (!this._line) {
-        this._line = L.polyline([latlng], { color: '#d7301f', weight: 2, dashArray: '4 4', interactive: false });
+        this._line = L.polyline([latlng],
+          { color: '#d7301f', weight: 2, dashArray: '4 4', interactive: false });
         this._line.addTo(this._map);
         this._onModeChange();
         return;

@@ -28,7 +28,8 @@ export function meshBuffers({ points, triangles, halfedges, constrained, inside 
     const b = twin < 0 ? a : isInside((twin / 3) | 0);
     return a && b ? 0 : !a && !b ? 2 : 1;
   };
-  const isConstrained = (e) => constrained[e] === 1 || (halfedges[e] >= 0 && constrained[halfedges[e]] === 1);
+  const isConstrained = (e) =>
+    constrained[e] === 1 || (halfedges[e] >= 0 && constrained[halfedges[e]] === 1);
   const edgeCounts = [0, 0, 0];
   const constraintCounts = [0, 0, 0];
   for (let e = 0; e < halfedges.length; e++) {
@@ -36,7 +37,8 @@ export function meshBuffers({ points, triangles, halfedges, constrained, inside 
     (isConstrained(e) ? constraintCounts : edgeCounts)[groupOf(e)]++;
   }
   const edges = new Uint32Array(2 * (edgeCounts[0] + edgeCounts[1] + edgeCounts[2]));
-  const constraints = new Uint32Array(2 * (constraintCounts[0] + constraintCounts[1] + constraintCounts[2]));
+  const constraintTotal = constraintCounts[0] + constraintCounts[1] + constraintCounts[2];
+  const constraints = new Uint32Array(2 * constraintTotal);
   const edgeAt = [0, edgeCounts[0], edgeCounts[0] + edgeCounts[1]];
   const constraintAt = [0, constraintCounts[0], constraintCounts[0] + constraintCounts[1]];
   for (let e = 0; e < halfedges.length; e++) {
@@ -59,7 +61,8 @@ export function meshBuffers({ points, triangles, halfedges, constrained, inside 
     minY = Math.min(minY, points[i + 1]);
     maxY = Math.max(maxY, points[i + 1]);
   }
-  const typicalEdge = triangleCount ? Math.sqrt((2 * (maxX - minX) * (maxY - minY)) / triangleCount) : 0;
+  const typicalEdge =
+    triangleCount ? Math.sqrt((2 * (maxX - minX) * (maxY - minY)) / triangleCount) : 0;
 
   const positions = new Float32Array(2 * points.length);
   for (let i = 0; i < points.length; i += 2) {
@@ -85,5 +88,6 @@ export function meshBuffers({ points, triangles, halfedges, constrained, inside 
 }
 
 export function transferablesOf(mesh) {
-  return [mesh.points, mesh.positions, mesh.triangles, mesh.edges, mesh.constraints].map((a) => a.buffer);
+  const arrays = [mesh.points, mesh.positions, mesh.triangles, mesh.edges, mesh.constraints];
+  return arrays.map((a) => a.buffer);
 }

@@ -33,7 +33,8 @@ export class MeshView {
 
   _redraw() {
     const triangles = this._mesh.triangles.length / 3;
-    const wantGl = this._renderer === 'webgl' || (this._renderer === 'auto' && triangles > CANVAS_TRIANGLE_LIMIT);
+    const wantGl = this._renderer === 'webgl' ||
+      (this._renderer === 'auto' && triangles > CANVAS_TRIANGLE_LIMIT);
     if (wantGl && this._webgl === undefined) this._webgl = webglKind();
     const kind = wantGl && this._webgl ? GlMeshLayer : CanvasMeshLayer;
     if (this._layer instanceof kind) {
@@ -48,7 +49,9 @@ export class MeshView {
       this.drawnWith = this._webgl;
       return;
     }
-    if (wantGl) this._onNotice('This browser has no usable WebGL: drawing with the slower canvas renderer.');
+    if (wantGl) {
+      this._onNotice('This browser has no usable WebGL: drawing with the slower canvas renderer.');
+    }
     this._layer = new CanvasMeshLayer(this._mesh, this._style, this._map).addTo(this._map);
     this.drawnWith = 'Leaflet canvas';
   }
