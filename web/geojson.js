@@ -49,29 +49,43 @@ function coordinate(v, path, i, axis) {
   return v;
 }
 
-// Positions: x, y pairs and a height each (NaN when the position has none).
+// Positions: x, y pairs, and a height each once one of them has had one (NaN for the others):
+// inputs without heights never pay for them.
 class Positions {
   constructor() {
     this.xy = new Growable(Float64Array);
-    this.z = new Growable(Float64Array);
+    this.z = null;
   }
 
   get count() { return this.xy.length / 2; }
-}
 
-// Reads position i of the array at path into `into` (Positions); says in reader.hasZ when it
-// has a height.
-function position(p, path, i, into, reader) {
-  if (!Array.isArray(p) || p.length < 2) {
-    throw new TypeError(
-      `geocdt: ${where(path, i)} must be a position [x, y], got ${JSON.stringify(p)}`);
+  // Appends position i of the array at path.
+  add(p, path, i) {
+    if (!Array.isArray(p) || p.length < 2) {
+      throw new TypeError(
+        `geocdt: ${where(path, i)} must be a position [x, y], got ${JSON.stringify(p)}`);
+    }
+    this.xy.push(coordinate(p[0], path, i, 0), coordinate(p[1], path, i, 1));
+    if (p.length > 2) {
+      if (this.z === null) {
+        this.z = new Growable(Float64Array, this.xy.data.length / 2);
+        this.z.data.fill(NaN);
+        this.z.length = this.count - 1;
+      }
+      this.z.add(coordinate(p[2], path, i, 2));
+    } else if (this.z !== null) {
+      this.z.add(NaN);
+    }
   }
-  into.xy.push(coordinate(p[0], path, i, 0), coordinate(p[1], path, i, 1));
-  if (p.length > 2) {
-    into.z.add(coordinate(p[2], path, i, 2));
-    reader.hasZ = true;
-  } else {
-    into.z.add(NaN);
+
+  // Repeats position k (a ring's first, to close it).
+  repeat(k) {
+    this.xy.push(this.xy.data[2 * k], this.xy.data[2 * k + 1]);
+    this.z?.add(this.z.data[k]);
+  }
+
+  heights() {
+    return this.z === null ? new Float64Array(this.count).fill(NaN) : this.z.take();
   }
 }
 
@@ -83,22 +97,19 @@ function list(value, path) {
 }
 
 // Appends one polyline to lines ({ positions, offsets }).
-function line(positions, path, closeRing, lines, reader) {
-  const { xy, z } = lines.positions;
+function line(positions, path, closeRing, lines) {
+  const to = lines.positions;
   list(positions, path);
-  const start = xy.length;
-  xy.reserve(2 * positions.length + 2);
-  for (let i = 0; i < positions.length; i++) {
-    position(positions[i], path, i, lines.positions, reader);
-  }
-  const n = xy.length - start;
-  const d = xy.data;
+  const start = to.xy.length;
+  to.xy.reserve(2 * positions.length + 2);
+  for (let i = 0; i < positions.length; i++) to.add(positions[i], path, i);
+  const n = to.xy.length - start;
+  const d = to.xy.data;
   // GeoJSON rings repeat their first position at the end; close the ones that forgot.
   if (closeRing && n >= 4 && (d[start] !== d[start + n - 2] || d[start + 1] !== d[start + n - 1])) {
-    xy.push(d[start], d[start + 1]);
-    z.add(z.data[start / 2]);
+    to.repeat(start / 2);
   }
-  lines.offsets.add(xy.length / 2);
+  lines.offsets.add(to.count);
 }
 
 function geometry(g, path, reader) {
@@ -111,23 +122,23 @@ function geometry(g, path, reader) {
   const { points, rings, lines } = reader;
   switch (g.type) {
     case 'Point':
-      position(c, at, -1, points, reader);
+      points.add(c, at, -1);
       break;
     case 'MultiPoint':
-      list(c, at).forEach((p, i) => position(p, at, i, points, reader));
+      list(c, at).forEach((p, i) => points.add(p, at, i));
       break;
     case 'LineString':
-      line(c, at, false, lines, reader);
+      line(c, at, false, lines);
       break;
     case 'MultiLineString':
-      list(c, at).forEach((l, i) => line(l, `${at}[${i}]`, false, lines, reader));
+      list(c, at).forEach((l, i) => line(l, `${at}[${i}]`, false, lines));
       break;
     case 'Polygon':
-      list(c, at).forEach((r, i) => line(r, `${at}[${i}]`, true, rings, reader));
+      list(c, at).forEach((r, i) => line(r, `${at}[${i}]`, true, rings));
       break;
     case 'MultiPolygon':
       list(c, at).forEach((poly, i) => list(poly, `${at}[${i}]`)
-        .forEach((r, j) => line(r, `${at}[${i}][${j}]`, true, rings, reader)));
+        .forEach((r, j) => line(r, `${at}[${i}][${j}]`, true, rings)));
       break;
     case 'GeometryCollection':
       list(g.geometries, `${path}.geometries`).forEach((child, i) =>
@@ -172,7 +183,6 @@ export function readGeoJSON(geojson) {
   }
   const reader = {
     points: new Positions(), rings: polylines(), lines: polylines(), polygons: [0], features: [],
-    hasZ: false,
   };
   if (geojson.type === 'FeatureCollection') {
     list(geojson.features, 'features').forEach((f, i) => {
@@ -207,11 +217,14 @@ export function readGeoJSON(geojson) {
     input.polygons = Uint32Array.from(reader.polygons);
     input.regionFeatures = reader.features;
   }
-  if (reader.hasZ) {
-    const polylineZ = concat(rings.positions.z, lines.positions.z);
-    input.z = new Float64Array(points.z.length + polylineZ.length);
-    input.z.set(points.z.data.subarray(0, points.z.length));
-    input.z.set(polylineZ, points.z.length);
+  const all = [points, rings.positions, lines.positions];
+  if (all.some((p) => p.z !== null)) {
+    input.z = new Float64Array(all.reduce((n, p) => n + p.count, 0));
+    let at = 0;
+    for (const p of all) {
+      input.z.set(p.heights(), at);
+      at += p.count;
+    }
   }
   return input;
 }

@@ -79,7 +79,8 @@ std::vector<std::int32_t> faceStates(const Delaunay& d,
       const std::int32_t t = stack.back();
       stack.pop_back();
       for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e) {
-        const std::int32_t next = topo.adj[e] / 3;
+        // Unsigned: every slot has its twins, and division by 3 is cheaper so.
+        const std::int32_t next = static_cast<std::int32_t>(std::uint32_t(topo.adj[e]) / 3u);
         if (state[next] >= 0) continue;
         if (topo.fixed[e]) {
           exits.push_back(e);
@@ -90,8 +91,13 @@ std::vector<std::int32_t> faceStates(const Delaunay& d,
       }
     }
   };
+  // The ghost triangles form one ring around the hull, joined by edges to the ghost vertex,
+  // which are never constrained: one flood from any of them covers them all.
   for (std::int32_t t = 0; t < topo.slotCount(); ++t)
-    if (state[t] < 0 && topo.isGhost(t)) flood(t, 0);
+    if (topo.isGhost(t)) {
+      flood(t, 0);
+      break;
+    }
   for (std::size_t i = 0; i < exits.size(); ++i) {
     const std::int32_t e = exits[i], next = topo.adj[e] / 3;
     if (state[next] < 0) flood(next, crossEdge(d, polylinePolygons, states, state[e / 3], e));
@@ -99,48 +105,61 @@ std::vector<std::int32_t> faceStates(const Delaunay& d,
   return state;
 }
 
-// The label of each face state: its smallest polygon by (area, triangles, id).
+// The label of each face state: its smallest polygon by (area, triangles, id). Only polygons
+// that share a face with another are compared, so only the triangles of the faces they lie
+// in are measured: none at all when no polygons overlap.
 std::vector<std::int32_t> stateLabels(const Delaunay& d, const std::vector<std::int32_t>& state,
                                       const FaceStates& states) {
+  std::vector<std::int32_t> label(states.size(), -1);
+  std::vector<std::int32_t> compared;
+  for (std::int32_t s = 1; s < states.size(); ++s) {
+    label[s] = states[s].front().first;
+    if (states[s].size() > 1)
+      for (const auto& w : states[s]) compared.push_back(w.first);
+  }
+  if (compared.empty()) return label;
+  std::sort(compared.begin(), compared.end());
+  compared.erase(std::unique(compared.begin(), compared.end()), compared.end());
+  const auto index = [&](std::int32_t polygon) {
+    const auto at = std::lower_bound(compared.begin(), compared.end(), polygon);
+    return at != compared.end() && *at == polygon ? at - compared.begin() : -1;
+  };
+  std::vector<std::uint8_t> measured(states.size(), 0);
+  for (std::int32_t s = 1; s < states.size(); ++s)
+    for (const auto& w : states[s]) measured[s] |= index(w.first) >= 0;
+
   const Topology& topo = d.topo;
   const double* p = d.xy.data();
   std::vector<double> stateArea(states.size(), 0.0);
   std::vector<std::uint64_t> stateTriangles(states.size(), 0);
   for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
-    if (state[t] == 0 || topo.isGhost(t)) continue;
+    if (!measured[state[t]] || topo.isGhost(t)) continue;
     const std::uint32_t a = topo.tri[3 * t], b = topo.tri[3 * t + 1], c = topo.tri[3 * t + 2];
     const double cross = (p[2 * b] - p[2 * a]) * (p[2 * c + 1] - p[2 * a + 1]) -
                          (p[2 * b + 1] - p[2 * a + 1]) * (p[2 * c] - p[2 * a]);
     stateArea[state[t]] += std::fabs(cross) / 2;
     ++stateTriangles[state[t]];
   }
-  std::vector<std::int32_t> polygons;
-  for (std::int32_t s = 1; s < states.size(); ++s)
-    for (const auto& w : states[s]) polygons.push_back(w.first);
-  std::sort(polygons.begin(), polygons.end());
-  polygons.erase(std::unique(polygons.begin(), polygons.end()), polygons.end());
-  const auto index = [&](std::int32_t polygon) {
-    return std::lower_bound(polygons.begin(), polygons.end(), polygon) - polygons.begin();
-  };
   // Summed state by state in one order for all polygons: a polygon nested in another is in
   // a subset of its states, and rounding is monotonic, so its sum can never come out larger.
-  std::vector<double> area(polygons.size(), 0.0);
-  std::vector<std::uint64_t> triangles(polygons.size(), 0);
+  std::vector<double> area(compared.size(), 0.0);
+  std::vector<std::uint64_t> triangles(compared.size(), 0);
   for (std::int32_t s = 1; s < states.size(); ++s)
-    for (const auto& w : states[s]) {
-      area[index(w.first)] += stateArea[s];
-      triangles[index(w.first)] += stateTriangles[s];
-    }
-  std::vector<std::int32_t> label(states.size(), -1);
+    for (const auto& w : states[s])
+      if (const auto i = index(w.first); i >= 0) {
+        area[i] += stateArea[s];
+        triangles[i] += stateTriangles[s];
+      }
   for (std::int32_t s = 1; s < states.size(); ++s) {
-    std::size_t best = polygons.size();
+    if (states[s].size() < 2) continue;
+    std::ptrdiff_t best = -1;
     for (const auto& w : states[s]) {
-      const std::size_t i = index(w.first);
-      if (best == polygons.size() || std::tie(area[i], triangles[i], polygons[i]) <
-                                         std::tie(area[best], triangles[best], polygons[best]))
+      const auto i = index(w.first);
+      if (best < 0 || std::tie(area[i], triangles[i], compared[i]) <
+                          std::tie(area[best], triangles[best], compared[best]))
         best = i;
     }
-    label[s] = polygons[best];
+    label[s] = compared[best];
   }
   return label;
 }
