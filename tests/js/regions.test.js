@@ -86,6 +86,10 @@ test('input.polygons: the innermost of nested polygons, -1 outside, in both poly
   const nonzero = triangulate({ points: frame, polylines, polygons: [0, 1, 2, 3] },
     { fillRule: 'nonzero' });
   expectLabels(nonzero, nested);
+  // Without features, meshToGeoJSON numbers the triangles and puts the region in properties.
+  for (const [t, f] of meshToGeoJSON(r).features.entries()) {
+    assert.deepEqual([f.id, f.properties], [t, { region: r.regions[t] }]);
+  }
 });
 
 test('a polygon with a hole, an island in the hole, polylines of no polygon', () => {
