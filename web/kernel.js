@@ -198,7 +198,7 @@ export class Kernel {
     return new Uint8Array(this.output.size(id));
   }
 
-  // Copies the output's mesh out, then frees it. with: which optional arrays it has.
+  // Copies the output's mesh out, then frees it; the flags say which optional arrays to take.
   takeMesh({ inputToVertex, inside, regions, z }) {
     try {
       const mesh = {
