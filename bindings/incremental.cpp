@@ -48,18 +48,19 @@ bool Incremental::insert(Output& out, Input& input, bool polyline, emscripten::v
   return ok;
 }
 
-bool Incremental::mesh(Output& out, Keep keep, FillRule fill, bool insideFlags,
+bool Incremental::mesh(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
                        emscripten::val onProgress) {
   out.clear();
   relay_.start(std::move(onProgress), 0);
   const bool ok = guarded(
       out,
       [&] {
-        out.mesh = triangulation_.mesh(meshOptions(keep, fill, insideFlags));
+        out.mesh = triangulation_.mesh(meshOptions(keep, fill, insideFlags, input));
         out.stats = triangulation_.stats();
         return Status::success();
       },
       "out of memory while copying the triangulation out; it is unchanged");
+  input.clear();
   relay_.finish();
   return ok;
 }

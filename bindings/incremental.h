@@ -21,7 +21,9 @@ class Incremental {
   // undefined.
   bool insertPoints(Output& out, Input& input, emscripten::val onProgress);
   bool insertPolyline(Output& out, Input& input, emscripten::val onProgress);
-  bool mesh(Output& out, Keep keep, FillRule fill, bool insideFlags, emscripten::val onProgress);
+  // input holds the polygons of region labels, if any (freed afterwards).
+  bool mesh(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
+            emscripten::val onProgress);
   emscripten::val stats() const { return statsObject(triangulation_.stats()); }
 
   // Writes kind, triangle, the number of vertices that name the place, and those vertex ids

@@ -5,16 +5,21 @@
 
 namespace geocdt::wasm {
 
-bool Input::resize(double pointCount, double linePointCount, double lineCount) {
+bool Input::resize(double pointCount, double linePointCount, double lineCount, double polygonCount,
+                   double zCount) {
   clear();
   // wasm32's whole address space, in bytes: anything larger cannot be allocated anyway, and
   // the doubles could not be converted to size_t.
   constexpr double kAddressSpace = 4294967296.0;
-  if (16 * (pointCount + linePointCount) + 4 * lineCount >= kAddressSpace) return false;
+  if (16 * (pointCount + linePointCount) + 4 * (lineCount + polygonCount) + 8 * zCount >=
+      kAddressSpace)
+    return false;
   try {
     points.resize(2 * static_cast<std::size_t>(pointCount));
     lineCoords.resize(2 * static_cast<std::size_t>(linePointCount));
     lineOffsets.resize(static_cast<std::size_t>(lineCount) + 1);
+    if (polygonCount >= 0) polygonOffsets.resize(static_cast<std::size_t>(polygonCount) + 1);
+    z.resize(static_cast<std::size_t>(zCount));
   } catch (const std::bad_alloc&) {
     clear();
     return false;
@@ -35,6 +40,22 @@ double Input::badOffset() const {
   return -1;
 }
 
+double Input::badPolygonOffset(double polylineCount) const {
+  for (std::size_t i = 0; i < polygonOffsets.size(); ++i)
+    if ((i > 0 && polygonOffsets[i] < polygonOffsets[i - 1]) || polygonOffsets[i] > polylineCount)
+      return static_cast<double>(i);
+  return -1;
+}
+
+std::vector<std::int32_t> Input::polylinePolygons() const {
+  if (polygonOffsets.empty()) return {};
+  std::vector<std::int32_t> polygonOf(polygonOffsets.back(), -1);
+  for (std::size_t j = 0; j + 1 < polygonOffsets.size(); ++j)
+    for (std::uint32_t p = polygonOffsets[j]; p < polygonOffsets[j + 1]; ++p)
+      polygonOf[p] = static_cast<std::int32_t>(j);
+  return polygonOf;
+}
+
 std::vector<PolylineView> Input::polylines() const {
   std::vector<PolylineView> views(lineCount());
   for (std::size_t i = 0; i < views.size(); ++i)
@@ -44,6 +65,12 @@ std::vector<PolylineView> Input::polylines() const {
 }
 
 void Input::clear() {
+  clearCoordinates();
+  std::vector<std::uint32_t>().swap(polygonOffsets);
+  std::vector<double>().swap(z);
+}
+
+void Input::clearCoordinates() {
   std::vector<double>().swap(points);
   std::vector<double>().swap(lineCoords);
   std::vector<std::uint32_t>().swap(lineOffsets);

@@ -19,17 +19,32 @@ class Input {
   // lineOffsets[i + 1] of lineCoords (x, y interleaved); lineOffsets has lineCount + 1 entries.
   std::vector<double> lineCoords;
   std::vector<std::uint32_t> lineOffsets;
+  // Polygons, for region labels: polygon j has the polylines polygonOffsets[j] ..
+  // polygonOffsets[j + 1] - 1. Empty when the call has none (not even an empty list).
+  std::vector<std::uint32_t> polygonOffsets;
+  // A height per input point (the points, then the polylines' points), or empty.
+  std::vector<double> z;
 
-  // Sizes the three arrays for JS to fill (the numbers arrive as doubles: JS may ask for more
-  // than size_t holds). false when memory runs out; everything is freed then.
-  bool resize(double pointCount, double linePointCount, double lineCount);
+  // Sizes the arrays for JS to fill (the numbers arrive as doubles: JS may ask for more than
+  // size_t holds); polygonCount -1: no polygons. false when memory runs out; everything is
+  // freed then.
+  bool resize(double pointCount, double linePointCount, double lineCount, double polygonCount,
+              double zCount);
   std::uintptr_t pointsAddress() const { return address(points); }
   std::uintptr_t lineCoordsAddress() const { return address(lineCoords); }
   std::uintptr_t lineOffsetsAddress() const { return address(lineOffsets); }
+  std::uintptr_t polygonOffsetsAddress() const { return address(polygonOffsets); }
+  std::uintptr_t zAddress() const { return address(z); }
 
   // The first i where lineOffsets breaks the layout, or -1: lineOffsets[0] is 0, no offset is
   // below the one before it, and the last one is the number of points in lineCoords.
   double badOffset() const;
+  // The first i where polygonOffsets breaks its layout, or -1: no offset below the one before
+  // it, none past polylineCount.
+  double badPolygonOffset(double polylineCount) const;
+  bool hasPolygons() const { return !polygonOffsets.empty(); }
+  // The polygon of each polyline up to the last that has one, -1 for the others.
+  std::vector<std::int32_t> polylinePolygons() const;
 
   std::size_t pointCount() const { return points.size() / 2; }
   std::size_t linePointCount() const { return lineCoords.size() / 2; }
@@ -37,7 +52,8 @@ class Input {
   // One view per polyline into lineCoords (once badOffset() is -1).
   std::vector<PolylineView> polylines() const;
 
-  void clear();  // frees the buffers
+  void clear();             // frees the buffers
+  void clearCoordinates();  // frees the points and polylines, keeps polygons and heights
 
  private:
   template <typename T>

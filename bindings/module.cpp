@@ -63,7 +63,10 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("pointsAddress", &Input::pointsAddress)
       .function("lineCoordsAddress", &Input::lineCoordsAddress)
       .function("lineOffsetsAddress", &Input::lineOffsetsAddress)
+      .function("polygonOffsetsAddress", &Input::polygonOffsetsAddress)
+      .function("zAddress", &Input::zAddress)
       .function("badOffset", &Input::badOffset)
+      .function("badPolygonOffset", &Input::badPolygonOffset)
       .function("clear", &Input::clear);
 
   class_<Incremental>("Incremental")

@@ -4,15 +4,19 @@
 #include <vector>
 
 #include "guard.h"
+#include "heights.h"
 #include "progress.h"
 
 namespace geocdt::wasm {
 
-MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags) {
+MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, const Input& input) {
   MeshOptions options;
   options.keep = keep;
   options.fill = fill;
   options.insideFlags = insideFlags;
+  options.regions = input.hasPolygons();
+  options.polylinePolygons = input.polylinePolygons();
+  options.vertexSegments = !input.z.empty();
   return options;
 }
 
@@ -27,6 +31,8 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
   const bool ok = guarded(
       out,
       [&] {
+        const MeshOptions exportOptions = meshOptions(keep, fill, insideFlags, input);
+        const std::vector<double> z = std::move(input.z);
         // Points first, then all polylines at once (one spatially sorted batch of their
         // points, then their segments), as geocdt::triangulate() does; done here through the
         // class so that the statistics can be read before release() clears them.
@@ -45,7 +51,11 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
           return status;
         }
         out.stats = triangulation.stats();
-        out.mesh = triangulation.release(meshOptions(keep, fill, insideFlags));
+        out.mesh = triangulation.release(exportOptions);
+        if (!z.empty()) {
+          out.z = vertexHeights(out.mesh, out.inputToVertex, z, points);
+          std::vector<std::uint32_t>().swap(out.mesh.vertexSegments);
+        }
         return status;
       },
       "out of memory: the triangulation needs more than the 4 GB a WebAssembly module can "

@@ -53,6 +53,8 @@ const char* jsName(Field field) {
     case Field::SourceOffsets: return "sourceOffsets";
     case Field::Sources: return "sources";
     case Field::Inside: return "inside";
+    case Field::Regions: return "regions";
+    case Field::Z: return "z";
     case Field::InputToVertex: return "inputToVertex";
     case Field::VertexIds: return "vertexIds";
   }
@@ -71,8 +73,10 @@ const char* jsName(ElementType type) {
 
 ElementType elementType(Field field) {
   switch (field) {
-    case Field::Points: return ElementType::Float64;
-    case Field::Halfedges: return ElementType::Int32;
+    case Field::Points:
+    case Field::Z: return ElementType::Float64;
+    case Field::Halfedges:
+    case Field::Regions: return ElementType::Int32;
     case Field::Constrained:
     case Field::Inside: return ElementType::Uint8;
     case Field::Triangles:
@@ -95,6 +99,8 @@ std::uintptr_t Output::data(Field field) const {
     case Field::SourceOffsets: return address(mesh.sourceOffsets);
     case Field::Sources: return address(mesh.sources);
     case Field::Inside: return address(mesh.inside);
+    case Field::Regions: return address(mesh.regions);
+    case Field::Z: return address(z);
     case Field::InputToVertex: return address(inputToVertex);
     case Field::VertexIds: return address(vertexIds);
   }
@@ -111,6 +117,8 @@ std::size_t Output::size(Field field) const {
     case Field::SourceOffsets: return mesh.sourceOffsets.size();
     case Field::Sources: return mesh.sources.size();
     case Field::Inside: return mesh.inside.size();
+    case Field::Regions: return mesh.regions.size();
+    case Field::Z: return z.size();
     case Field::InputToVertex: return inputToVertex.size();
     case Field::VertexIds: return vertexIds.size();
   }
@@ -137,6 +145,9 @@ void Output::clear() {
   release(mesh.sourceOffsets);
   release(mesh.sources);
   release(mesh.inside);
+  release(mesh.regions);
+  release(mesh.vertexSegments);
+  release(z);
   release(inputToVertex);
   release(vertexIds);
   status = Status::success();

@@ -25,6 +25,8 @@ enum class Field : int {
   SourceOffsets,
   Sources,
   Inside,
+  Regions,
+  Z,
   InputToVertex,
   VertexIds,
 };
@@ -39,6 +41,7 @@ ElementType elementType(Field field);
 class Output {
  public:
   Mesh mesh;
+  std::vector<double> z;  // a height per vertex, when the input had heights
   std::vector<std::uint32_t> inputToVertex;
   std::vector<std::uint32_t> vertexIds;  // of the last incremental insertion
   Status status;

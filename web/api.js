@@ -2,8 +2,8 @@
 // instantiates the wasm module in its environment.
 import { Kernel } from './kernel.js';
 import { GeocdtError } from './errors.js';
-import { checkCoordinates, checkInput, describe } from './input.js';
-import { geoJSONOutput, readGeoJSON, meshToGeoJSON } from './geojson.js';
+import { checkCoordinates, checkInput, checkOffsets, describe } from './input.js';
+import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
 
@@ -55,8 +55,8 @@ export function createApi(instantiate) {
 
   function triangulateGeoJSON(geojson, options) {
     const { output, rest } = geoJSONOutput(options);
-    const mesh = triangulate(readGeoJSON(geojson), rest);
-    return output === 'arrays' ? mesh : meshToGeoJSON(mesh);
+    const input = readGeoJSON(geojson);
+    return geoJSONResult(triangulate(input, rest), input, output, rest);
   }
 
   // What the wasm heap holds: its size, the bytes allocated now, and the allocator's peak.
@@ -112,11 +112,14 @@ export function createApi(instantiate) {
     }
 
     // A copy of the current mesh; the triangulation stays as it is for more insertions.
+    // options.polygons: offsets into the polylines inserted so far, for region labels.
     results(options) {
       const started = now();
       const live = this.#live();
       const o = this.#kernel.meshOptions(options);
-      return finish(this.#kernel.mesh(live, o, options?.onProgress), started);
+      const polygons = options?.polygons == null ? undefined
+        : checkOffsets(options.polygons, 'options.polygons', 'polygons', 'polyline');
+      return finish(this.#kernel.mesh(live, o, options?.onProgress, polygons), started);
     }
 
     get vertexCount() { return this.#live().vertexCount(); }

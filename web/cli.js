@@ -4,20 +4,23 @@ import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
 import { geoJSONToInput, init, triangulate } from './index.node.js';
+import { geoJSONResult, triangleFields } from './geojson.js';
 import { ProgressDisplay } from './progress-display.js';
 
 const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
 
 Triangulates a GeoJSON file: Point/MultiPoint become vertices, LineString/MultiLineString
 become constrained edges, Polygon/MultiPolygon rings become constrained edges that bound
-the inside. Writes a FeatureCollection with one Polygon per triangle (to stdout without -o).
+the inside. Writes a FeatureCollection with one Polygon per triangle (to stdout without -o):
+each triangle has the id and properties of the feature whose polygon holds it (the innermost
+where polygons nest), or properties null outside every polygon; positions keep their z.
 Coordinates are triangulated in the plane as given (lon/lat or projected).
 
 Options:
   -o, --output <file>        where to write the triangles (default: stdout)
   --keep <all|inside>        keep every triangle, or only those inside the rings (default: all)
   --fill-rule <evenodd|nonzero>  how rings decide inside (default: evenodd)
-  --inside-flags             add properties.inside to every triangle
+  --inside-flags             add inside to every triangle's properties
   --stats                    print statistics to stderr
   --quiet                    no progress (a bar on a terminal, lines otherwise)
   -h, --help                 show this help
@@ -70,11 +73,23 @@ async function readInput(path) {
 
 const n = (x) => x.toLocaleString('en-US');
 
-// Writes the FeatureCollection feature by feature: a big mesh never becomes one string.
+// Writes the FeatureCollection feature by feature, as meshToGeoJSON() builds it: a big mesh
+// never becomes one string, and each region's properties are written to text once.
 async function writeGeoJSON(mesh, stream, progress) {
-  const { points, triangles, inside } = mesh;
+  const { points, triangles, z } = mesh;
   const count = triangles.length / 3;
-  const at = (v) => `[${points[2 * v]},${points[2 * v + 1]}]`;
+  const fields = triangleFields(mesh);
+  // fields.position(v) as text, without an array per vertex.
+  const at = z === undefined ? (v) => `[${points[2 * v]},${points[2 * v + 1]}]`
+    : (v) => (Number.isNaN(z[v]) ? `[${points[2 * v]},${points[2 * v + 1]}]`
+      : `[${points[2 * v]},${points[2 * v + 1]},${z[v]}]`);
+  const texts = new Map();  // key -> the properties as text
+  const properties = (t) => {
+    const key = fields.key(t);
+    let text = texts.get(key);
+    if (text === undefined) texts.set(key, text = JSON.stringify(fields.properties(t)));
+    return text;
+  };
   const write = async (text) => {
     if (!stream.write(text)) await once(stream, 'drain');
   };
@@ -85,9 +100,10 @@ async function writeGeoJSON(mesh, stream, progress) {
     const parts = [];
     for (let t = start; t < end; t++) {
       const a = at(triangles[3 * t]);
-      const properties = inside ? `{"inside":${inside[t] === 1}}` : '{}';
+      const id = fields.id(t);
       const ring = `[[${a},${at(triangles[3 * t + 1])},${at(triangles[3 * t + 2])},${a}]]`;
-      parts.push(`{"type":"Feature","id":${t},"properties":${properties},`
+      parts.push(`{"type":"Feature",${id === undefined ? '' : `"id":${JSON.stringify(id)},`}`
+        + `"properties":${properties(t)},`
         + `"geometry":{"type":"Polygon","coordinates":${ring}}}`);
     }
     await write((start === 0 ? '\n' : ',\n') + parts.join(',\n'));
@@ -136,6 +152,8 @@ async function main(argv) {
     insideFlags: args.insideFlags,
     onProgress: show && (({ phase, fraction }) => show(`triangulating: ${phase}`, fraction)),
   });
+  geoJSONResult(mesh, input, 'arrays', {});  // the features of the regions
+  if (!args.insideFlags) delete mesh.inside;  // --keep inside alone adds no property
   const ms = mesh.stats.milliseconds.toFixed(0);
   say(`triangulated: ${n(mesh.triangles.length / 3)} triangles in ${ms} ms`);
 

@@ -22,6 +22,11 @@ class Growable {
     this.data[this.length++] = y;
   }
 
+  add(v) {
+    this.reserve(1);
+    this.data[this.length++] = v;
+  }
+
   take() {
     return this.data.slice(0, this.length);
   }
@@ -37,20 +42,51 @@ function coordinate(v, path, i, axis) {
     throw new TypeError(
       `geocdt: ${where(path, i, axis)} must be a number, got ${JSON.stringify(v)}`);
   }
-  if (!(v >= -MAX_COORDINATE && v <= MAX_COORDINATE)) {
+  if (axis < 2 && !(v >= -MAX_COORDINATE && v <= MAX_COORDINATE)) {
     throw new RangeError(`geocdt: ${where(path, i, axis)} is ${v}: coordinates must be finite `
       + 'with |value| <= 1e150');
   }
   return v;
 }
 
-// Reads position i of the array at path into `into`.
-function position(p, path, i, into) {
-  if (!Array.isArray(p) || p.length < 2) {
-    throw new TypeError(
-      `geocdt: ${where(path, i)} must be a position [x, y], got ${JSON.stringify(p)}`);
+// Positions: x, y pairs, and a height each once one of them has had one (NaN for the others):
+// inputs without heights never pay for them.
+class Positions {
+  constructor() {
+    this.xy = new Growable(Float64Array);
+    this.z = null;
   }
-  into.push(coordinate(p[0], path, i, 0), coordinate(p[1], path, i, 1));
+
+  get count() { return this.xy.length / 2; }
+
+  // Appends position i of the array at path.
+  add(p, path, i) {
+    if (!Array.isArray(p) || p.length < 2) {
+      throw new TypeError(
+        `geocdt: ${where(path, i)} must be a position [x, y], got ${JSON.stringify(p)}`);
+    }
+    this.xy.push(coordinate(p[0], path, i, 0), coordinate(p[1], path, i, 1));
+    if (p.length > 2) {
+      if (this.z === null) {
+        this.z = new Growable(Float64Array, this.xy.data.length / 2);
+        this.z.data.fill(NaN);
+        this.z.length = this.count - 1;
+      }
+      this.z.add(coordinate(p[2], path, i, 2));
+    } else if (this.z !== null) {
+      this.z.add(NaN);
+    }
+  }
+
+  // Repeats position k (a ring's first, to close it).
+  repeat(k) {
+    this.xy.push(this.xy.data[2 * k], this.xy.data[2 * k + 1]);
+    this.z?.add(this.z.data[k]);
+  }
+
+  heights() {
+    return this.z === null ? new Float64Array(this.count).fill(NaN) : this.z.take();
+  }
 }
 
 function list(value, path) {
@@ -60,36 +96,36 @@ function list(value, path) {
   return value;
 }
 
-// Appends one polyline to the flat lines ({ coords, offsets }).
+// Appends one polyline to lines ({ positions, offsets }).
 function line(positions, path, closeRing, lines) {
-  const { coords, offsets } = lines;
+  const to = lines.positions;
   list(positions, path);
-  const start = coords.length;
-  coords.reserve(2 * positions.length + 2);
-  for (let i = 0; i < positions.length; i++) position(positions[i], path, i, coords);
-  const n = coords.length - start;
-  const d = coords.data;
+  const start = to.xy.length;
+  to.xy.reserve(2 * positions.length + 2);
+  for (let i = 0; i < positions.length; i++) to.add(positions[i], path, i);
+  const n = to.xy.length - start;
+  const d = to.xy.data;
   // GeoJSON rings repeat their first position at the end; close the ones that forgot.
   if (closeRing && n >= 4 && (d[start] !== d[start + n - 2] || d[start + 1] !== d[start + n - 1])) {
-    coords.push(d[start], d[start + 1]);
+    to.repeat(start / 2);
   }
-  offsets.reserve(1);
-  offsets.data[offsets.length++] = coords.length / 2;
+  lines.offsets.add(to.count);
 }
 
-function geometry(g, path, points, lines) {
+function geometry(g, path, reader) {
   if (g === null) return;  // a Feature without geometry
   if (typeof g !== 'object') {
     throw new TypeError(`geocdt: ${path} must be a GeoJSON geometry, got ${JSON.stringify(g)}`);
   }
   const c = g.coordinates;
   const at = `${path}.coordinates`;
+  const { points, rings, lines } = reader;
   switch (g.type) {
     case 'Point':
-      position(c, at, -1, points);
+      points.add(c, at, -1);
       break;
     case 'MultiPoint':
-      list(c, at).forEach((p, i) => position(p, at, i, points));
+      list(c, at).forEach((p, i) => points.add(p, at, i));
       break;
     case 'LineString':
       line(c, at, false, lines);
@@ -98,15 +134,15 @@ function geometry(g, path, points, lines) {
       list(c, at).forEach((l, i) => line(l, `${at}[${i}]`, false, lines));
       break;
     case 'Polygon':
-      list(c, at).forEach((r, i) => line(r, `${at}[${i}]`, true, lines));
+      list(c, at).forEach((r, i) => line(r, `${at}[${i}]`, true, rings));
       break;
     case 'MultiPolygon':
-      list(c, at).forEach((poly, i) =>
-        list(poly, `${at}[${i}]`).forEach((r, j) => line(r, `${at}[${i}][${j}]`, true, lines)));
+      list(c, at).forEach((poly, i) => list(poly, `${at}[${i}]`)
+        .forEach((r, j) => line(r, `${at}[${i}][${j}]`, true, rings)));
       break;
     case 'GeometryCollection':
       list(g.geometries, `${path}.geometries`).forEach((child, i) =>
-        geometry(child, `${path}.geometries[${i}]`, points, lines));
+        geometry(child, `${path}.geometries[${i}]`, reader));
       break;
     default:
       throw new TypeError(
@@ -114,34 +150,83 @@ function geometry(g, path, points, lines) {
   }
 }
 
-// A FeatureCollection, Feature or geometry -> { points, polylines: { coords, offsets } }, the
-// flat input of triangulate(): no array per ring. Point and MultiPoint become points;
-// LineString and MultiLineString become constraints; every Polygon and MultiPolygon ring
-// becomes a closed constraint that bounds the inside.
+const polylines = () => {
+  const offsets = new Growable(Uint32Array);
+  offsets.add(0);
+  return { positions: new Positions(), offsets };
+};
+
+// Reads one feature's geometry (feature: null for a bare geometry); its rings make one
+// polygon, the region of that feature.
+function feature(g, path, f, reader) {
+  const before = reader.rings.offsets.length;
+  geometry(g, path, reader);
+  if (reader.rings.offsets.length === before) return;
+  reader.polygons.push(reader.rings.offsets.length - 1);
+  reader.features.push(f);
+}
+
+// A FeatureCollection, Feature or geometry -> the input of triangulate(), flat (no array per
+// ring), and the features of its regions:
+// - Point and MultiPoint become points; LineString and MultiLineString, constraints; every
+//   Polygon and MultiPolygon ring, a closed constraint that bounds the inside.
+// - polylines ({ coords, offsets }) hold the rings first, feature by feature, then the lines.
+// - polygons: one per feature with rings (all of its Polygons and MultiPolygons, in
+//   GeometryCollections too), given as offsets into the polylines; regionFeatures[j] is the
+//   feature of polygon j (null for a bare geometry); both are there when polygons are.
+// - z: a height per input point when some position has a third coordinate (NaN where one
+//   has none).
 export function readGeoJSON(geojson) {
   if (geojson === null || typeof geojson !== 'object') {
     const got = geojson === null ? 'null' : typeof geojson;
     throw new TypeError(`geocdt: expected a GeoJSON object, got ${got}`);
   }
-  const points = new Growable(Float64Array);
-  const lines = { coords: new Growable(Float64Array), offsets: new Growable(Uint32Array) };
-  lines.offsets.data[lines.offsets.length++] = 0;
+  const reader = {
+    points: new Positions(), rings: polylines(), lines: polylines(), polygons: [0], features: [],
+  };
   if (geojson.type === 'FeatureCollection') {
     list(geojson.features, 'features').forEach((f, i) => {
       if (f === null || typeof f !== 'object' || f.type !== 'Feature') {
         throw new TypeError(`geocdt: features[${i}] is not a GeoJSON Feature`);
       }
-      geometry(f.geometry, `features[${i}].geometry`, points, lines);
+      feature(f.geometry, `features[${i}].geometry`, f, reader);
     });
   } else if (geojson.type === 'Feature') {
-    geometry(geojson.geometry, 'geometry', points, lines);
+    feature(geojson.geometry, 'geometry', geojson, reader);
   } else {
-    geometry(geojson, 'geometry', points, lines);
+    feature(geojson, 'geometry', null, reader);
   }
-  return {
-    points: points.take(),
-    polylines: { coords: lines.coords.take(), offsets: lines.offsets.take() },
+  const { points, rings, lines } = reader;
+  const ringCount = rings.offsets.length - 1, ringPoints = rings.positions.count;
+  const offsets = new Uint32Array(ringCount + lines.offsets.length);
+  offsets.set(rings.offsets.data.subarray(0, ringCount + 1));
+  for (let i = 1; i < lines.offsets.length; i++) {
+    offsets[ringCount + i] = ringPoints + lines.offsets.data[i];
+  }
+  const concat = (a, b) => {
+    const out = new Float64Array(a.length + b.length);
+    out.set(a.data.subarray(0, a.length));
+    out.set(b.data.subarray(0, b.length), a.length);
+    return out;
   };
+  const input = {
+    points: points.xy.take(),
+    polylines: { coords: concat(rings.positions.xy, lines.positions.xy), offsets },
+  };
+  if (reader.features.length > 0) {
+    input.polygons = Uint32Array.from(reader.polygons);
+    input.regionFeatures = reader.features;
+  }
+  const all = [points, rings.positions, lines.positions];
+  if (all.some((p) => p.z !== null)) {
+    input.z = new Float64Array(all.reduce((n, p) => n + p.count, 0));
+    let at = 0;
+    for (const p of all) {
+      input.z.set(p.heights(), at);
+      at += p.count;
+    }
+  }
+  return input;
 }
 
 // The same, with { flat: false } (the default) as one Float64Array per polyline.
@@ -153,7 +238,7 @@ export function geoJSONToInput(geojson, { flat = false } = {}) {
   for (let i = 0; i < polylines.length; i++) {
     polylines[i] = coords.slice(2 * offsets[i], 2 * offsets[i + 1]);
   }
-  return { points: input.points, polylines };
+  return { ...input, polylines };
 }
 
 // The output option of triangulateGeoJSON(), shared with the worker client.
@@ -166,25 +251,76 @@ export function geoJSONOutput(options) {
   return { output, rest };
 }
 
-// A mesh from triangulate() -> a FeatureCollection with one counter-clockwise Polygon per
-// triangle. Each feature's id is its triangle index; properties.inside is set when the mesh
-// has inside flags.
-export function meshToGeoJSON(mesh) {
-  const { points, triangles, inside } = mesh;
-  const n = triangles.length / 3;
-  const features = new Array(n);
-  const at = (v) => [points[2 * v], points[2 * v + 1]];
-  for (let t = 0; t < n; t++) {
-    const a = at(triangles[3 * t]);
-    features[t] = {
-      type: 'Feature',
-      id: t,
-      properties: inside ? { inside: inside[t] === 1 } : {},
-      geometry: {
-        type: 'Polygon',
-        coordinates: [[a, at(triangles[3 * t + 1]), at(triangles[3 * t + 2]), [a[0], a[1]]]],
+// What the GeoJSON output says of each triangle, shared by meshToGeoJSON() and the CLI:
+// id(t) (undefined: none), properties(t), key(t) (equal keys, equal properties) and
+// position(v), [x, y] or [x, y, z].
+// - With mesh.regionFeatures (triangulateGeoJSON()): the id and properties of the feature of
+//   the triangle's region (the same properties object for all its triangles), none and null
+//   outside every polygon; with inside flags, a copy of the properties with `inside` added.
+// - Without: id is the triangle index; properties hold `inside` and `region` when the mesh
+//   has them.
+export function triangleFields(mesh) {
+  const { points, inside, regions, regionFeatures, z } = mesh;
+  const regionOf = (t) => (regions === undefined ? -1 : regions[t]);
+  const key = (t) => 2 * (regionOf(t) + 1) + (inside?.[t] ?? 0);
+  const position = z === undefined
+    ? (v) => [points[2 * v], points[2 * v + 1]]
+    : (v) => (Number.isNaN(z[v]) ? [points[2 * v], points[2 * v + 1]]
+      : [points[2 * v], points[2 * v + 1], z[v]]);
+  if (regionFeatures === undefined) {
+    return {
+      id: (t) => t,
+      properties(t) {
+        const p = {};
+        if (inside) p.inside = inside[t] === 1;
+        if (regions) p.region = regions[t];
+        return p;
       },
+      key,
+      position,
     };
   }
+  const source = (t) => (regionOf(t) < 0 ? null : regionFeatures[regionOf(t)]);
+  return {
+    id: (t) => source(t)?.id ?? undefined,
+    properties(t) {
+      const p = source(t)?.properties ?? null;
+      return inside ? { ...p, inside: inside[t] === 1 } : p;
+    },
+    key,
+    position,
+  };
+}
+
+// A mesh from triangulate() or triangulateGeoJSON() -> a FeatureCollection with one
+// counter-clockwise Polygon per triangle, its id and properties as triangleFields() says.
+export function meshToGeoJSON(mesh) {
+  const { triangles } = mesh;
+  const n = triangles.length / 3;
+  const fields = triangleFields(mesh);
+  const features = new Array(n);
+  for (let t = 0; t < n; t++) {
+    const a = fields.position(triangles[3 * t]);
+    const feature = { type: 'Feature' };
+    const id = fields.id(t);
+    if (id !== undefined) feature.id = id;
+    feature.properties = fields.properties(t);
+    feature.geometry = {
+      type: 'Polygon',
+      coordinates: [[a, fields.position(triangles[3 * t + 1]),
+        fields.position(triangles[3 * t + 2]), [...a]]],
+    };
+    features[t] = feature;
+  }
   return { type: 'FeatureCollection', features };
+}
+
+// What triangulateGeoJSON() returns, from triangulate()'s mesh of readGeoJSON()'s input:
+// with the features of the regions (none when the GeoJSON has no polygon); as GeoJSON, with
+// `inside` only when options.insideFlags asked for it (keep: 'inside' alone adds nothing).
+export function geoJSONResult(mesh, input, output, options) {
+  mesh.regionFeatures = input.regionFeatures ?? [];
+  if (output === 'arrays') return mesh;
+  if (options.insideFlags !== true) delete mesh.inside;
+  return meshToGeoJSON(mesh);
 }

@@ -10,6 +10,9 @@ export type Coordinates =
   | Uint8ClampedArray
   | readonly number[];
 
+/** Offsets (n + 1 for n things) in any integer array. */
+export type Offsets = Uint32Array | Int32Array | Uint16Array | Uint8Array | readonly number[];
+
 /**
  * Polylines as one flat buffer, in GeoArrow's layout: polyline i has the points
  * offsets[i] .. offsets[i + 1] - 1, whose x, y are coords[2 * offsets[i]] ..
@@ -18,7 +21,7 @@ export type Coordinates =
  */
 export interface FlatPolylines {
   coords: Coordinates;
-  offsets: Uint32Array | Int32Array | Uint16Array | Uint8Array | readonly number[];
+  offsets: Offsets;
 }
 
 export interface TriangulateInput {
@@ -30,6 +33,18 @@ export interface TriangulateInput {
    * end (the GeoJSON convention) and bounds the inside.
    */
   polylines?: readonly Coordinates[] | FlatPolylines;
+  /**
+   * Polygons, for region labels (the result's `regions`): polygon j has the polylines
+   * polygons[j] .. polygons[j + 1] - 1 (either form of polylines). n + 1 offsets for n
+   * polygons, never decreasing, at most the number of polylines; polylines outside every
+   * polygon still constrain but bound no region.
+   */
+  polygons?: Offsets;
+  /**
+   * A height per input point (the points, then the polylines' points; NaN: none), carried to
+   * the result's `z`.
+   */
+  z?: Coordinates;
 }
 
 /** What a long call is doing: sorting points, inserting them, constraints, the arrays out. */
@@ -125,12 +140,29 @@ export interface Mesh {
   sources: Uint32Array;
   /** 1 for each triangle inside the rings; present with insideFlags or keep: 'inside'. */
   inside?: Uint8Array;
+  /**
+   * For each triangle, the polygon whose inside holds it, or -1; present when polygons are
+   * given. Where several hold it (nested or overlapping), the smallest by area (then by
+   * triangle count, then the lower index): where polygons nest, the innermost.
+   */
+  regions?: Int32Array;
   stats: Stats;
 }
 
 export interface TriangulateResult extends Mesh {
   /** For each input point (points first, then each polyline's points in order), its vertex id. */
   inputToVertex: Uint32Array;
+  /**
+   * The height of each vertex, when the input has z: the first height (not NaN) of the input
+   * points it came from, or, where constraints cross, interpolated along one of them; NaN
+   * where there is none.
+   */
+  z?: Float64Array;
+}
+
+export interface ResultsOptions extends MeshOptions {
+  /** Polygons as offsets into the polylines inserted so far, for `regions`. */
+  polygons?: Offsets;
 }
 
 export interface InitOptions {
@@ -190,13 +222,25 @@ export interface GeoJSONOptions extends MeshOptions {
   output?: GeoJSONOutput;
 }
 
+/** A GeoJSON position: x, y and, when the input had one, z. */
+export type Position = [number, number] | [number, number, number];
+
 export interface TriangleFeature {
   type: 'Feature';
-  /** The triangle's index in the mesh. */
-  id: number;
-  /** `inside` is present when the mesh has inside flags. */
-  properties: { inside?: boolean };
-  geometry: { type: 'Polygon'; coordinates: [[number, number][]] };
+  /**
+   * triangulateGeoJSON(): the id of the feature whose polygon holds the triangle, absent when
+   * it has none or no polygon holds the triangle. meshToGeoJSON() of a mesh without
+   * regionFeatures: the triangle's index.
+   */
+  id?: string | number;
+  /**
+   * triangulateGeoJSON(): that feature's properties (the same object for all its triangles),
+   * null outside every polygon; with insideFlags: true, a copy with `inside` added.
+   * meshToGeoJSON() of a mesh without regionFeatures: `inside` and `region` when the mesh has
+   * them.
+   */
+  properties: { [key: string]: unknown } | null;
+  geometry: { type: 'Polygon'; coordinates: [Position[]] };
 }
 
 export interface TriangleFeatureCollection {
@@ -207,17 +251,47 @@ export interface TriangleFeatureCollection {
 /** Any GeoJSON object: FeatureCollection, Feature or geometry. */
 export type GeoJSONInput = { type: string; [key: string]: unknown };
 
+/** A GeoJSON Feature of the input. */
+export type GeoJSONFeature = {
+  type: 'Feature';
+  id?: string | number;
+  properties?: { [key: string]: unknown } | null;
+  [key: string]: unknown;
+};
+
+/** triangulateGeoJSON() with output: 'arrays'. */
+export interface GeoJSONResult extends TriangulateResult {
+  /**
+   * The input feature of each region (regions[t] indexes it; null for a bare geometry); one
+   * region per feature with Polygon or MultiPolygon rings, in the order of the features.
+   */
+  regionFeatures: (GeoJSONFeature | null)[];
+}
+
 /**
  * Triangulates GeoJSON: Point and MultiPoint give points, LineString and MultiLineString give
- * constraints, Polygon and MultiPolygon rings give constraints that bound the inside.
- * Coordinates are used as given (lon/lat or projected) and triangulated in the plane.
+ * constraints, Polygon and MultiPolygon rings give constraints that bound the inside; each
+ * feature with rings is a region, whose id and properties its triangles carry, and positions
+ * keep their z. Coordinates are used as given (lon/lat or projected) and triangulated in the
+ * plane.
  */
 export function triangulateGeoJSON(
   geojson: GeoJSONInput, options?: MeshOptions & { output?: 'geojson' }): TriangleFeatureCollection;
 export function triangulateGeoJSON(
-  geojson: GeoJSONInput, options: MeshOptions & { output: 'arrays' }): TriangulateResult;
+  geojson: GeoJSONInput, options: MeshOptions & { output: 'arrays' }): GeoJSONResult;
 export function triangulateGeoJSON(
-  geojson: GeoJSONInput, options?: GeoJSONOptions): TriangleFeatureCollection | TriangulateResult;
+  geojson: GeoJSONInput, options?: GeoJSONOptions): TriangleFeatureCollection | GeoJSONResult;
+
+/** What geoJSONToInput() returns besides the polylines. */
+export interface GeoJSONInputParts {
+  points: Float64Array;
+  /** One polygon per feature with rings; the rings come first among the polylines. */
+  polygons?: Uint32Array;
+  /** The feature of each polygon (null for a bare geometry). */
+  regionFeatures?: (GeoJSONFeature | null)[];
+  /** A height per input point, when some position has a third coordinate (NaN: none). */
+  z?: Float64Array;
+}
 
 /**
  * GeoJSON -> the input of triangulate(); rings are closed if they are not. With flat: true
@@ -226,14 +300,19 @@ export function triangulateGeoJSON(
 export function geoJSONToInput(
   geojson: GeoJSONInput,
   options?: { flat?: false },
-): { points: Float64Array; polylines: Float64Array[] };
+): GeoJSONInputParts & { polylines: Float64Array[] };
 export function geoJSONToInput(
   geojson: GeoJSONInput,
   options: { flat: true },
-): { points: Float64Array; polylines: { coords: Float64Array; offsets: Uint32Array } };
+): GeoJSONInputParts & { polylines: { coords: Float64Array; offsets: Uint32Array } };
 
-/** A mesh -> a FeatureCollection with one counter-clockwise Polygon per triangle. */
-export function meshToGeoJSON(mesh: Mesh): TriangleFeatureCollection;
+/**
+ * A mesh -> a FeatureCollection with one counter-clockwise Polygon per triangle (its id and
+ * properties: see TriangleFeature); positions get the mesh's z where it is not NaN.
+ */
+export function meshToGeoJSON(
+  mesh: Mesh & { regionFeatures?: (GeoJSONFeature | null)[]; z?: Float64Array },
+): TriangleFeatureCollection;
 
 export interface MemoryUsage {
   /** Size of the wasm memory (it grows, never shrinks). */
@@ -270,7 +349,7 @@ export class Triangulation {
   /** @throws RangeError when x or y is NaN or infinite. */
   locate(x: number, y: number): Location;
   /** A copy of the current mesh; insertions can go on. */
-  results(options?: MeshOptions): Mesh;
+  results(options?: ResultsOptions): Mesh;
   readonly vertexCount: number;
   readonly triangleCount: number;
   readonly polylineCount: number;

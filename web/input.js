@@ -33,25 +33,44 @@ export function checkCoordinates(value, name) {
   return value;
 }
 
-// The flat polylines form: { coords, offsets } in GeoArrow's layout.
-function checkFlatPolylines({ coords, offsets }) {
-  checkCoordinates(coords, 'polylines.coords');
+// Offsets: a Uint32Array, Int32Array, Uint16Array, Uint8Array or array of integers, with
+// n + 1 entries for n `things`, each an offset into their `parts` (vertex, polyline).
+export function checkOffsets(offsets, name, things, parts) {
   const integers = offsets instanceof Uint32Array || offsets instanceof Int32Array
     || offsets instanceof Uint16Array || offsets instanceof Uint8Array;
   if (!integers && !Array.isArray(offsets)) {
-    throw new TypeError('geocdt: polylines.offsets must be a Uint32Array (or Int32Array, or an '
-      + `array of integers) of n + 1 vertex offsets, got ${describe(offsets)}`);
+    throw new TypeError(`geocdt: ${name} must be a Uint32Array (or Int32Array, or an array of `
+      + `integers) of n + 1 ${parts} offsets, got ${describe(offsets)}`);
   }
   if (offsets.length === 0) {
-    throw new RangeError('geocdt: polylines.offsets is empty: n polylines take n + 1 offsets, '
-      + 'starting with 0');
+    throw new RangeError(`geocdt: ${name} is empty: n ${things} take n + 1 offsets`);
   }
+  return offsets;
+}
+
+// The flat polylines form: { coords, offsets } in GeoArrow's layout.
+function checkFlatPolylines({ coords, offsets }) {
+  checkCoordinates(coords, 'polylines.coords');
+  checkOffsets(offsets, 'polylines.offsets', 'polylines', 'vertex');
   return { coords, offsets, count: offsets.length - 1, points: coords.length / 2 };
 }
 
-// { points, polylines } -> { points, lines } with lines either
+// A height per input point, in any numeric array (NaN: none).
+function checkHeights(z, points) {
+  if (!Array.isArray(z) && !isNumericTypedArray(z)) {
+    throw new TypeError('geocdt: z must be a Float64Array or an array of numbers (one height per '
+      + `input point), or another numeric typed array; got ${describe(z)}`);
+  }
+  if (z.length !== points) {
+    throw new RangeError(`geocdt: z has ${z.length} heights for ${points} input points (the `
+      + 'points, then the polylines\' points)');
+  }
+  return z;
+}
+
+// { points, polylines, polygons, z } -> { points, lines, polygons, z } with lines either
 // { arrays, count, points } (an array per polyline) or { coords, offsets, count, points }.
-// Both are optional.
+// All are optional; polygons and z stay undefined when not given.
 export function checkInput(input) {
   if (input === null || typeof input !== 'object' || Array.isArray(input)
     || ArrayBuffer.isView(input)) {
@@ -76,7 +95,10 @@ export function checkInput(input) {
     }
     lines = { arrays: polylines, count: polylines.length, points: total / 2 };
   }
-  return { points, lines };
+  const polygons = input.polygons == null ? undefined
+    : checkOffsets(input.polygons, 'polygons', 'polygons', 'polyline');
+  const z = input.z == null ? undefined : checkHeights(input.z, points.length / 2 + lines.points);
+  return { points, lines, polygons, z };
 }
 
 const badCoordinate = (v) => !(v >= -MAX_COORDINATE && v <= MAX_COORDINATE);
@@ -99,6 +121,15 @@ export function coordinateError(values, name, start, point, owner) {
     }
   }
   return null;
+}
+
+// The RangeError for polygons[i], the first that breaks their layout; name: where they were
+// given ('polygons', 'options.polygons').
+export function polygonOffsetError(polygons, i, polylines, name) {
+  const v = polygons[i];
+  const why = i > 0 && v < polygons[i - 1] ? `below ${name}[${i - 1}] = ${polygons[i - 1]}`
+    : `past the ${polylines} polylines`;
+  return new RangeError(`geocdt: ${name}[${i}] is ${v}: ${why}`);
 }
 
 // The RangeError for offsets[i], the first that breaks the flat layout.

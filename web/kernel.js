@@ -5,7 +5,9 @@
 // The names of fields, statistics, status codes, location kinds, keep, fill and phases all
 // come from the module (bindings/names.h, bindings/output.cpp): no table is kept here.
 import { GeocdtError, outOfMemoryError, statusError } from './errors.js';
-import { coordinateError, describe, isNumericTypedArray, offsetError } from './input.js';
+import {
+  coordinateError, describe, isNumericTypedArray, offsetError, polygonOffsetError,
+} from './input.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
 
@@ -36,7 +38,7 @@ function copyCoordinates(heap, at, values, name) {
   }
 }
 
-function copyOffsets(heap, at, offsets) {
+function copyOffsets(heap, at, offsets, name) {
   if (isNumericTypedArray(offsets)) {
     heap.set(offsets, at);
     return;
@@ -45,9 +47,23 @@ function copyOffsets(heap, at, offsets) {
     const v = offsets[i];
     if (!Number.isInteger(v) || v < 0 || v > 0xffffffff) {
       throw new RangeError(
-        `geocdt: polylines.offsets[${i}] must be an integer from 0 to 2^32 - 1, got ${v}`);
+        `geocdt: ${name}[${i}] must be an integer from 0 to 2^32 - 1, got ${v}`);
     }
     heap[at + i] = v;
+  }
+}
+
+// Heights: any number, NaN included (no height).
+function copyHeights(heap, at, z) {
+  if (isNumericTypedArray(z)) {
+    heap.set(z, at);
+    return;
+  }
+  for (let i = 0; i < z.length; i++) {
+    if (typeof z[i] !== 'number') {
+      throw new TypeError(`geocdt: z[${i}] must be a number, got ${describe(z[i])}`);
+    }
+    heap[at + i] = z[i];
   }
 }
 
@@ -104,23 +120,34 @@ export class Kernel {
     this.busy = false;
   }
 
-  // Writes { points, lines } (from checkInput) into the binding's Input.
-  writeInput(points, lines) {
+  // Writes { points, lines, polygons, z } (from checkInput) into the binding's Input.
+  // polylineCount: what the polygons may index (this call's polylines, or a Triangulation's);
+  // polygonsName: where the polygons were given, for errors.
+  writeInput({ points, lines, polygons, z }, polylineCount = lines.count,
+    polygonsName = 'polygons') {
     const input = this.input;
-    const doubles = points.length + 2 * lines.points;
-    if (!input.resize(points.length / 2, lines.points, lines.count)) {
-      const bytes = 8 * doubles + (lines.count > 0 ? 4 * (lines.count + 1) : 0);
+    const polygonCount = polygons === undefined ? -1 : polygons.length - 1;
+    const zCount = z === undefined ? 0 : z.length;
+    if (!input.resize(points.length / 2, lines.points, lines.count, polygonCount, zCount)) {
+      const bytes = 8 * (points.length + 2 * lines.points + zCount)
+        + 4 * (lines.count + 1 + polygonCount + 1);
       throw outOfMemoryError(`the input alone needs ${bytes} bytes`);
     }
     const f64 = this.wasm.HEAPF64;
+    const u32 = this.wasm.HEAPU32;
     copyCoordinates(f64, input.pointsAddress() / 8, points, 'points');
+    if (polygons !== undefined) {
+      copyOffsets(u32, input.polygonOffsetsAddress() / 4, polygons, polygonsName);
+      const bad = input.badPolygonOffset(polylineCount);
+      if (bad >= 0) throw polygonOffsetError(polygons, bad, polylineCount, polygonsName);
+    }
+    if (z !== undefined) copyHeights(f64, input.zAddress() / 8, z);
     if (lines.count === 0 && lines.points === 0) return;
     let at = input.lineCoordsAddress() / 8;
     const offsets = input.lineOffsetsAddress() / 4;
-    const u32 = this.wasm.HEAPU32;
     if (lines.arrays === undefined) {
       copyCoordinates(f64, at, lines.coords, 'polylines.coords');
-      copyOffsets(u32, offsets, lines.offsets);
+      copyOffsets(u32, offsets, lines.offsets, 'polylines.offsets');
       const bad = input.badOffset();
       if (bad >= 0) throw offsetError(lines, bad);
       return;
@@ -171,8 +198,8 @@ export class Kernel {
     return new Uint8Array(this.output.size(id));
   }
 
-  // Copies the output's mesh out, then frees it.
-  takeMesh(withInputToVertex, withInside) {
+  // Copies the output's mesh out, then frees it; the flags say which optional arrays to take.
+  takeMesh({ inputToVertex, inside, regions, z }) {
     try {
       const mesh = {
         points: this.read('points'),
@@ -180,11 +207,13 @@ export class Kernel {
         halfedges: this.read('halfedges'),
         constrained: this.readConstrained(),
       };
-      if (withInputToVertex) mesh.inputToVertex = this.read('inputToVertex');
+      if (inputToVertex) mesh.inputToVertex = this.read('inputToVertex');
       mesh.constraintEdges = this.read('constraintEdges');
       mesh.sourceOffsets = this.read('sourceOffsets');
       mesh.sources = this.read('sources');
-      if (withInside) mesh.inside = this.read('inside');
+      if (inside) mesh.inside = this.read('inside');
+      if (regions) mesh.regions = this.read('regions');
+      if (z) mesh.z = this.read('z');
       mesh.stats = this.output.stats();
       return mesh;
     } finally {
@@ -243,15 +272,16 @@ export class Kernel {
     };
   }
 
-  // checked: checkInput()'s { points, lines }; o: meshOptions(); onProgress: a function or
-  // undefined.
-  triangulate({ points, lines }, o, onProgress) {
+  // checked: checkInput()'s { points, lines, polygons, z }; o: meshOptions(); onProgress: a
+  // function or undefined.
+  triangulate(checked, o, onProgress) {
+    const { points, lines, polygons, z } = checked;
     const progress = this.progress(onProgress);
     this.enter();
     let ok;
     let coreMilliseconds;
     try {
-      this.writeInput(points, lines);
+      this.writeInput(checked);
       const started = now();
       ok = this.wasm.triangulateInto(this.output, this.input, o.keep, o.fill, o.insideFlags,
         progress.callback);
@@ -268,7 +298,10 @@ export class Kernel {
         : coordinateError(lines.arrays[polyline], `polylines[${polyline}]`, 0, point,
           ` of polyline ${polyline}`));
     progress.rethrow();
-    const mesh = this.takeMesh(true, o.insideFlags);
+    const mesh = this.takeMesh({
+      inputToVertex: true, inside: o.insideFlags, regions: polygons !== undefined,
+      z: z !== undefined,
+    });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
   }
@@ -284,7 +317,7 @@ export class Kernel {
     this.enter();
     let ok;
     try {
-      this.writeInput(coordinates, { count: 0, points: 0 });
+      this.writeInput({ points: coordinates, lines: { count: 0, points: 0 } });
       ok = polyline ? incremental.insertPolyline(this.output, this.input, progress.callback)
         : incremental.insertPoints(this.output, this.input, progress.callback);
     } finally {
@@ -300,20 +333,26 @@ export class Kernel {
     }
   }
 
-  mesh(incremental, o, onProgress) {
+  // polygons: checked offsets into the triangulation's polylines, or undefined.
+  mesh(incremental, o, onProgress, polygons) {
     const progress = this.progress(onProgress);
     this.enter();
     let ok;
-    const started = now();
+    let started;
     try {
-      ok = incremental.mesh(this.output, o.keep, o.fill, o.insideFlags, progress.callback);
+      this.writeInput({ points: [], lines: { count: 0, points: 0 }, polygons },
+        incremental.polylineCount(), 'options.polygons');
+      started = now();
+      ok = incremental.mesh(this.output, this.input, o.keep, o.fill, o.insideFlags,
+        progress.callback);
     } finally {
+      this.input.clear();
       this.leave();
     }
     const coreMilliseconds = now() - started;
     this.check(ok, () => null);
     progress.rethrow();
-    const mesh = this.takeMesh(false, o.insideFlags);
+    const mesh = this.takeMesh({ inside: o.insideFlags, regions: polygons !== undefined });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
   }

@@ -3,8 +3,8 @@
 // postMessage; the values are checked in the worker, by the core, as they are copied into
 // the heap.
 import { GeocdtError, reviveError } from './errors.js';
-import { checkCoordinates, checkInput, describe } from './input.js';
-import { geoJSONOutput, readGeoJSON, meshToGeoJSON } from './geojson.js';
+import { checkCoordinates, checkInput, checkOffsets, describe } from './input.js';
+import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 
 // An array the worker may take: a typed array that spans its whole buffer is handed over
 // (the caller's array is then detached), another typed array is copied with slice(), and a
@@ -93,9 +93,11 @@ export class GeocdtWorker {
   // copying them; they are detached afterwards. options.onProgress({ phase, fraction }).
   async triangulate(input, options) {
     const { transfer, onProgress, rest } = takeProgress(options);
-    const { points, lines } = checkInput(input);
+    const { points, lines, polygons, z } = checkInput(input);
     const buffers = new Set();
     const sent = { points: transferable(points, transfer, buffers) };
+    if (polygons !== undefined) sent.polygons = transferable(polygons, transfer, buffers);
+    if (z !== undefined) sent.z = transferable(z, transfer, buffers);
     if (lines.arrays !== undefined) {
       sent.polylines = lines.arrays.map((line) => transferable(line, transfer, buffers));
     } else {
@@ -108,11 +110,13 @@ export class GeocdtWorker {
   }
 
   // The GeoJSON is read on this thread (it cannot be transferred); the coordinates go to the
-  // worker as transferred arrays, and the triangles come back as GeoJSON or as arrays.
+  // worker as transferred arrays, and the triangles come back as GeoJSON or as arrays. The
+  // features of the regions stay here.
   async triangulateGeoJSON(geojson, options) {
     const { output, rest } = geoJSONOutput(options);
-    const mesh = await this.triangulate(readGeoJSON(geojson), { ...rest, transfer: true });
-    return output === 'arrays' ? mesh : meshToGeoJSON(mesh);
+    const input = readGeoJSON(geojson);
+    const mesh = await this.triangulate(input, { ...rest, transfer: true });
+    return geoJSONResult(mesh, input, output, rest);
   }
 
   memoryUsage() {
@@ -168,6 +172,9 @@ export class RemoteTriangulation {
 
   async results(options) {
     const { onProgress, rest } = takeProgress(options);
+    if (rest.polygons != null) {
+      checkOffsets(rest.polygons, 'options.polygons', 'polygons', 'polyline');
+    }
     return this.#call('results', [rest], [], onProgress);
   }
 

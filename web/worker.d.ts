@@ -2,8 +2,9 @@
 // worker_threads Worker (Node). Coordinates go to the worker and results come back as
 // transferred buffers, not copies.
 import type {
-  Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, Location, MemoryUsage, Mesh,
-  MeshOptions, ProgressOptions, TriangleFeatureCollection, TriangulateInput, TriangulateResult,
+  Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, GeoJSONResult, Location, MemoryUsage,
+  Mesh, MeshOptions, ProgressOptions, ResultsOptions, TriangleFeatureCollection,
+  TriangulateInput, TriangulateResult,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -27,10 +28,10 @@ export class GeocdtWorker {
     options?: MeshOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options: MeshOptions & { output: 'arrays' }): Promise<TriangulateResult>;
+    options: MeshOptions & { output: 'arrays' }): Promise<GeoJSONResult>;
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options?: GeoJSONOptions): Promise<TriangleFeatureCollection | TriangulateResult>;
+    options?: GeoJSONOptions): Promise<TriangleFeatureCollection | GeoJSONResult>;
   memoryUsage(): Promise<MemoryUsage>;
   /** A Triangulation that lives in the worker. */
   createTriangulation(): RemoteTriangulation;
@@ -44,7 +45,7 @@ export class RemoteTriangulation {
   insertPolyline(
     polyline: Coordinates, options?: TransferOptions & ProgressOptions): Promise<Uint32Array>;
   locate(x: number, y: number): Promise<Location>;
-  results(options?: MeshOptions): Promise<Mesh>;
+  results(options?: ResultsOptions): Promise<Mesh>;
   stats(): Promise<CoreStats>;
   counts(): Promise<{ vertexCount: number; triangleCount: number; polylineCount: number }>;
   dispose(): Promise<void>;

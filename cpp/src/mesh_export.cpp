@@ -1,7 +1,8 @@
 // From internal slots to the caller's arrays: ghost triangles dropped, optionally the
-// outside triangles too, with provenance and inside flags.
+// outside triangles too, with provenance, inside flags and region labels.
 #include <algorithm>
 
+#include "region_labels.h"
 #include "triangulation_state.h"
 
 namespace geocdt {
@@ -71,8 +72,10 @@ std::vector<std::uint8_t> realSlots(const std::vector<std::uint32_t>& tri) {
 
 // Drops the slots not kept, in place: twins pointing at a dropped slot become -1, then
 // kept triangles from the end fill the holes, their twins told where they went. Only the
-// few dropped slots (ghosts, mostly) cost anything beyond one pass.
-void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::uint8_t> kept) {
+// few dropped slots (ghosts, mostly) cost anything beyond one pass. flags and labels, when
+// given, hold one value per slot and move with their triangles.
+void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t>* labels,
+             std::vector<std::uint8_t> kept) {
   std::vector<std::uint32_t>& tri = m.triangles;
   std::vector<std::int32_t>& adj = m.halfedges;
   std::vector<std::uint8_t>& fixed = m.constrained;
@@ -92,11 +95,32 @@ void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::uint8_t
       if (adj[to] >= 0) adj[adj[to]] = to;
     }
     if (flags) (*flags)[front] = (*flags)[back];
+    if (labels) (*labels)[front] = (*labels)[back];
   });
   tri.resize(3 * static_cast<std::size_t>(count));
   adj.resize(3 * static_cast<std::size_t>(count));
   fixed.resize(3 * static_cast<std::size_t>(count));
   if (flags) flags->resize(count);
+  if (labels) labels->resize(count);
+}
+
+// For each vertex on a constrained edge, where an input segment through it starts: any of
+// its constrained edges lies on the segment its EdgeSource names.
+std::vector<std::uint32_t> vertexSegments(const Delaunay& d, const std::vector<std::uint32_t>& tri,
+                                          const std::vector<std::uint8_t>& fixed,
+                                          std::size_t vertexCount) {
+  std::vector<std::uint32_t> start(vertexCount, kNoSegment);
+  for (std::size_t e = 0; e < tri.size(); ++e) {
+    if (!fixed[e]) continue;
+    const std::uint32_t u = tri[e], v = tri[e % 3 == 2 ? e - 2 : e + 1];
+    if (u == kGhost || v == kGhost || (start[u] != kNoSegment && start[v] != kNoSegment)) continue;
+    const EdgeSource* src = d.constraints.find(u, v);
+    if (!src) continue;
+    const std::uint32_t p = d.constraints.segmentStarts[src->segment];
+    if (start[u] == kNoSegment) start[u] = p;
+    if (start[v] == kNoSegment) start[v] = p;
+  }
+  return start;
 }
 
 void addProvenance(const Delaunay& d, Mesh& m) {
@@ -133,6 +157,8 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
   const bool classify = options.insideFlags || options.keep == Keep::Inside;
   std::vector<std::uint8_t> inside;
   if (classify) inside = insideSlots(d, options.fill);
+  std::vector<std::int32_t> regions;
+  if (options.regions) regions = regionSlots(d, options.polylinePolygons, options.fill);
   Mesh m;
   Topology& topo = d.topo;
   if (consume) {
@@ -146,12 +172,15 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
     m.halfedges = topo.adj;
     m.constrained = topo.fixed;
   }
+  if (options.vertexSegments)
+    m.vertexSegments = vertexSegments(d, m.triangles, m.constrained, m.points.size() / 2);
   std::vector<std::uint8_t> kept = realSlots(m.triangles);
   if (options.keep == Keep::Inside)
     for (std::size_t t = 0; t < kept.size(); ++t) kept[t] &= inside[t];
   progress(Phase::Export, 1, 3);
-  compact(m, classify ? &inside : nullptr, std::move(kept));
+  compact(m, classify ? &inside : nullptr, options.regions ? &regions : nullptr, std::move(kept));
   if (options.insideFlags) m.inside = std::move(inside);
+  if (options.regions) m.regions = std::move(regions);
   progress(Phase::Export, 2, 3);
   addProvenance(d, m);
   progress(Phase::Export, 3, 3);

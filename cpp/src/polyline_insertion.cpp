@@ -1,5 +1,6 @@
 // Triangulation's constraint API: polylines in, their points as one batch, then their
 // segments one by one through the SegmentInserter.
+#include <algorithm>
 #include <cmath>
 #include <new>
 #include <string>
@@ -103,6 +104,8 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
       const std::uint32_t* lineIds = ids + offset;
       offset += line.count;
       const std::uint32_t id = store.polylineCount++;
+      const std::uint64_t firstPoint = store.polylinePoints;
+      store.polylinePoints += line.count;
       const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
       ++d.stats.polylines;
       for (std::size_t k = 0; k + 1 < line.count; ++k) {
@@ -116,6 +119,8 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
         src.polyline = id;
         store.segments.push_back(
             {line.xy[2 * k], line.xy[2 * k + 1], line.xy[2 * k + 2], line.xy[2 * k + 3]});
+        store.segmentStarts.push_back(
+            static_cast<std::uint32_t>(std::min<std::uint64_t>(firstPoint + k, kNoSegment)));
         if (!d.built()) {
           store.pending.push_back(
               {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});

@@ -1,6 +1,8 @@
 // Writers for the binary dataset files read by tests/cpp/support/polyline_file.h.
 //   .gpl: "GPL1", uint32 P, uint32 count[P], float64 x, y of all points in order.
 //   .gpt: "GPT1", uint64 n, float64 x, y of n points.
+//   .gpg: "GPG1", uint32 G, uint32 count[G]: polygon g has the next count[g] polylines of
+//         the .gpl file of the same name.
 // All numbers little-endian.
 import { writeFileSync } from 'node:fs';
 
@@ -46,4 +48,14 @@ export function writePolylines(path, polylines) {
 export function writePoints(path, xy) {
   writeFileSync(path, encodePoints(xy));
   return { points: Math.floor(xy.length / 2) };
+}
+
+// ringCounts: how many polylines each polygon has, in order.
+export function writePolygons(path, ringCounts) {
+  const view = new DataView(new ArrayBuffer(8 + 4 * ringCounts.length));
+  [0x47, 0x50, 0x47, 0x31].forEach((byte, i) => view.setUint8(i, byte));
+  view.setUint32(4, ringCounts.length, true);
+  ringCounts.forEach((count, i) => view.setUint32(8 + 4 * i, count, true));
+  writeFileSync(path, new Uint8Array(view.buffer));
+  return { polygons: ringCounts.length };
 }

@@ -4,13 +4,16 @@
 //   ne_<scale>_arcs.gpl     the mesh of country borders and coasts, each shared arc once
 //   us_counties_rings.gpl   every ring of every US county (us-atlas counties-10m)
 // for the Natural Earth scales 10m, 50m and 110m (world-atlas). Coordinates are lon/lat.
+// Each rings file has a .gpg beside it that groups its rings into polygons: one per country
+// (or county), in the order of the features, with all the rings of its Polygon or
+// MultiPolygon.
 // Usage: node scripts/datasets/natural_earth.mjs [output folder, default build/data]
 import { mkdirSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import topojson from 'topojson-client';
-import { writePolylines } from './dataset_file.mjs';
+import { writePolygons, writePolylines } from './dataset_file.mjs';
 
 const require = createRequire(import.meta.url);
 const repoRoot = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -19,17 +22,20 @@ function loadTopology(name) {
   return JSON.parse(readFileSync(require.resolve(name), 'utf8'));
 }
 
-// Rings as topojson-client decodes them: closed, the first point repeated at the end.
+// Rings as topojson-client decodes them: closed, the first point repeated at the end; and
+// how many each feature has.
 function ringsOf(topology, objectName) {
   const rings = [];
+  const perFeature = [];
   const { features } = topojson.feature(topology, topology.objects[objectName]);
   for (const { geometry } of features) {
-    if (!geometry) continue;
-    const polygons = geometry.type === 'Polygon' ? [geometry.coordinates]
-      : geometry.type === 'MultiPolygon' ? geometry.coordinates : [];
+    const polygons = geometry?.type === 'Polygon' ? [geometry.coordinates]
+      : geometry?.type === 'MultiPolygon' ? geometry.coordinates : [];
+    const before = rings.length;
     for (const polygon of polygons) rings.push(...polygon);
+    perFeature.push(rings.length - before);
   }
-  return rings;
+  return { rings, perFeature };
 }
 
 function arcsOf(topology, objectName) {
@@ -40,6 +46,10 @@ function main() {
   const outDir = resolve(process.argv[2] ?? join(repoRoot, 'build', 'data'));
   mkdirSync(outDir, { recursive: true });
   const rows = [];
+  const writeRings = (name, { rings, perFeature }) => {
+    write(`${name}.gpl`, rings);
+    writePolygons(join(outDir, `${name}.gpg`), perFeature);
+  };
   const write = (name, polylines) => {
     const open = polylines.filter((l) => {
       const a = l[0], b = l[l.length - 1];
@@ -50,10 +60,10 @@ function main() {
   };
   for (const scale of ['10m', '50m', '110m']) {
     const topology = loadTopology(`world-atlas/countries-${scale}.json`);
-    write(`ne_${scale}_rings.gpl`, ringsOf(topology, 'countries'));
+    writeRings(`ne_${scale}_rings`, ringsOf(topology, 'countries'));
     write(`ne_${scale}_arcs.gpl`, arcsOf(topology, 'countries'));
   }
-  write('us_counties_rings.gpl', ringsOf(loadTopology('us-atlas/counties-10m.json'), 'counties'));
+  writeRings('us_counties_rings', ringsOf(loadTopology('us-atlas/counties-10m.json'), 'counties'));
 
   console.log(`Wrote to ${outDir}:`);
   console.log('| file | polylines | points | open polylines |');

@@ -3,9 +3,13 @@
 // overlaps and repeated points all occur here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <string>
 
 #include "constraint_invariants.h"
+#include "geocdt/predicates.h"
 #include "geocdt/triangulation.h"
 #include "invariants.h"
 #include "point_generators.h"
@@ -79,6 +83,122 @@ TEST(RealData, NaturalEarth50mArcs) { checkDataset("ne_50m_arcs.gpl", 100); }
 TEST(RealData, NaturalEarth10mRings) { checkDataset("ne_10m_rings.gpl", 400); }
 TEST(RealData, NaturalEarth10mArcs) { checkDataset("ne_10m_arcs.gpl", 400); }
 TEST(RealData, UsCountiesRings) { checkDataset("us_counties_rings.gpl", 0); }
+
+// Region labels on countries (and counties) whose rings share borders, touch at vertices and
+// cross where the data is imprecise: a triangle's label must be the country whose rings hold
+// its centroid by an exact even-odd test against the input rings. Centroids within 1e-9 of a
+// ring are skipped: there the rounding of crossing points may put the mesh on either side.
+struct RingTest {
+  int winding = 0;
+  double distance = 1e300;
+};
+
+void addRing(const std::vector<double>& ring, double x, double y, RingTest& r) {
+  for (std::size_t k = 0; k + 3 < ring.size(); k += 2) {
+    const double ax = ring[k], ay = ring[k + 1], bx = ring[k + 2], by = ring[k + 3];
+    const Sign side = orient2d(ax, ay, bx, by, x, y);
+    if (ay <= y && by > y && side == Sign::Positive) ++r.winding;
+    if (by <= y && ay > y && side == Sign::Negative) --r.winding;
+    const double dx = bx - ax, dy = by - ay, length2 = dx * dx + dy * dy;
+    double t = length2 > 0 ? ((x - ax) * dx + (y - ay) * dy) / length2 : 0;
+    t = std::min(1.0, std::max(0.0, t));
+    r.distance = std::min(r.distance, std::hypot(ax + t * dx - x, ay + t * dy - y));
+  }
+}
+
+void checkRegions(const std::string& name, std::size_t samples) {
+  const Loaded l = load(name + ".gpl");
+  std::vector<std::int32_t> polygonOf;
+  ASSERT_EQ(
+      testing::readPolygonFile(std::string(GEOCDT_REAL_DATA_DIR) + "/" + name + ".gpg", polygonOf),
+      "");
+  ASSERT_EQ(polygonOf.size(), l.lines.size());
+  const std::size_t polygons = static_cast<std::size_t>(polygonOf.back()) + 1;
+  std::vector<std::vector<std::size_t>> rings(polygons);
+  std::vector<std::array<double, 4>> box(polygons, {1e300, 1e300, -1e300, -1e300});
+  for (std::size_t i = 0; i < l.lines.size(); ++i) {
+    rings[polygonOf[i]].push_back(i);
+    std::array<double, 4>& b = box[polygonOf[i]];
+    for (std::size_t k = 0; k < l.lines[i].size(); k += 2) {
+      b = {std::min(b[0], l.lines[i][k]), std::min(b[1], l.lines[i][k + 1]),
+           std::max(b[2], l.lines[i][k]), std::max(b[3], l.lines[i][k + 1])};
+    }
+  }
+  const std::vector<PolylineView> views = l.set.views();
+  Triangulation t;
+  ASSERT_TRUE(t.insertPolylines(views.data(), views.size()).ok());
+  MeshOptions mo;
+  mo.regions = true;
+  mo.polylinePolygons = polygonOf;
+  const Mesh m = t.mesh(mo);
+  const std::size_t n = m.triangles.size() / 3;
+  ASSERT_EQ(m.regions.size(), n);
+
+  // Which polygons hold each sampled centroid, exactly; and, when every triangle is checked,
+  // each polygon's area from the triangles found inside it, to check the overlap rule.
+  testing::Random r(5);
+  const bool all = samples >= n;
+  std::vector<std::pair<std::size_t, std::vector<std::int32_t>>> found;
+  std::vector<double> area(polygons, 0.0);
+  std::size_t checked = 0, labelled = 0;
+  for (std::size_t i = 0; i < std::min(samples, n); ++i) {
+    const std::size_t tri = all ? i : r.next() % n;
+    double x = 0, y = 0;
+    for (int k = 0; k < 3; ++k) {
+      x += m.points[2 * m.triangles[3 * tri + k]] / 3;
+      y += m.points[2 * m.triangles[3 * tri + k] + 1] / 3;
+    }
+    constexpr double kNear = 1e-9;
+    std::vector<std::int32_t> holders;
+    bool near = false;
+    for (std::size_t g = 0; g < polygons && !near; ++g) {
+      const std::array<double, 4>& b = box[g];
+      if (x < b[0] - kNear || y < b[1] - kNear || x > b[2] + kNear || y > b[3] + kNear) continue;
+      RingTest test;
+      for (const std::size_t ring : rings[g]) addRing(l.lines[ring], x, y, test);
+      near = test.distance < kNear;
+      if (test.winding % 2 != 0) holders.push_back(static_cast<std::int32_t>(g));
+    }
+    if (near) continue;
+    ++checked;
+    const std::int32_t label = m.regions[tri];
+    labelled += label >= 0;
+    if (holders.empty()) {
+      EXPECT_EQ(label, -1) << name << " triangle at " << x << ", " << y;
+      continue;
+    }
+    EXPECT_NE(std::find(holders.begin(), holders.end(), label), holders.end())
+        << name << " triangle at " << x << ", " << y << " labelled " << label;
+    const double* p = m.points.data();
+    const std::uint32_t a = m.triangles[3 * tri], b = m.triangles[3 * tri + 1],
+                        c = m.triangles[3 * tri + 2];
+    for (const std::int32_t g : holders)
+      area[g] += ((p[2 * b] - p[2 * a]) * (p[2 * c + 1] - p[2 * a + 1]) -
+                  (p[2 * b + 1] - p[2 * a + 1]) * (p[2 * c] - p[2 * a])) /
+                 2;
+    found.push_back({tri, std::move(holders)});
+  }
+  EXPECT_GT(checked, std::min(samples, n) / 2);
+  EXPECT_GT(labelled, checked / 4);
+  // Where the data's polygons overlap (rings across the antimeridian span the whole plane),
+  // the label is the holder of least area, when the areas differ clearly.
+  std::size_t overlaps = 0;
+  for (const auto& [tri, holders] : found) {
+    if (!all || holders.size() < 2) continue;
+    std::vector<std::int32_t> bySize = holders;
+    std::sort(bySize.begin(), bySize.end(),
+              [&](std::int32_t u, std::int32_t v) { return area[u] < area[v]; });
+    if (area[bySize[1]] < 1.01 * area[bySize[0]]) continue;
+    EXPECT_EQ(m.regions[tri], bySize[0]) << name << " triangle " << tri;
+    ++overlaps;
+  }
+  if (all) EXPECT_GT(overlaps, 0u);
+}
+
+TEST(RealData, RegionsOfNaturalEarth110mCountries) { checkRegions("ne_110m_rings", 1u << 30); }
+TEST(RealData, RegionsOfNaturalEarth50mCountries) { checkRegions("ne_50m_rings", 3000); }
+TEST(RealData, RegionsOfNaturalEarth10mCountries) { checkRegions("ne_10m_rings", 1000); }
+TEST(RealData, RegionsOfUsCounties) { checkRegions("us_counties_rings", 10000); }
 
 TEST(RealData, CountriesAsPointsAndScaled) {
   // The same vertices as a point set, and the 50m rings scaled and moved far away.

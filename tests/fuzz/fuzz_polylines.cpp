@@ -1,6 +1,7 @@
 // libFuzzer target: arbitrary bytes as free points and polylines (open, closed, crossing,
 // overlapping, with repeated points), inserted through one of several API paths, and the
-// result held to both halves of the invariant checker, the inside flags and provenance.
+// result held to both halves of the invariant checker, the inside flags, the region labels
+// (polylines 2i and 2i + 1 make polygon i) and provenance.
 //
 // Input: byte 0 = options (see decodeOptions), byte 1 = API path (bits 0-1) and fill rule
 // (bit 2), byte 2 = free point count (low 4 bits), then a PointDecoder header, the free
@@ -106,6 +107,9 @@ Built build(const Input& input) {
   MeshOptions flagged, insideOnly;
   flagged.insideFlags = true;
   flagged.fill = insideOnly.fill = input.fill;
+  flagged.regions = true;
+  for (std::size_t i = 0; i < input.lines.size(); ++i)
+    flagged.polylinePolygons.push_back(static_cast<std::int32_t>(i / 2));
   insideOnly.keep = Keep::Inside;
   Triangulation t(input.options);
   std::vector<PolylineView> views;
@@ -210,7 +214,8 @@ int winding(const testing::Polylines& lines, double x, double y) {
 }
 
 // Inside flags: one per triangle, as many set as Keep::Inside keeps, and agreeing with a
-// ray-casting reference at centroids that lie clearly away from every constraint.
+// ray-casting reference at centroids that lie clearly away from every constraint. Region
+// labels: -1 where no polygon holds such a centroid by the reference, else one that does.
 void checkInside(const Input& input, const Built& b) {
   const Mesh& m = b.mesh;
   const std::size_t triangles = m.triangles.size() / 3;
@@ -222,18 +227,26 @@ void checkInside(const Input& input, const Built& b) {
   if (flagged != b.insideKept)
     fail(std::to_string(flagged) + " triangles flagged inside but Keep::Inside kept " +
          std::to_string(b.insideKept));
+  if (m.regions.size() != triangles)
+    fail(std::to_string(m.regions.size()) + " region labels for " + std::to_string(triangles) +
+         " triangles");
 
   // In a frame scaled by a power of two to magnitude ~1, so that tiny inputs do not underflow.
   int exponent = 0;
   for (const auto& line : input.lines) exponent = std::max(exponent, magnitudeExponent(line));
   testing::Polylines lines, rings;
-  for (const auto& line : input.lines) {
+  std::vector<testing::Polylines> polygons((input.lines.size() + 1) / 2);
+  for (std::size_t i = 0; i < input.lines.size(); ++i) {
+    const auto& line = input.lines[i];
     lines.push_back(scaled(line, exponent));
     // Whether it is a ring is decided before scaling, which can flush subnormals to zero.
     const std::size_t n = line.size() / 2;
-    if (n >= 3 && line[0] == line[2 * n - 2] && line[1] == line[2 * n - 1])
+    if (n >= 3 && line[0] == line[2 * n - 2] && line[1] == line[2 * n - 1]) {
       rings.push_back(lines.back());
+      polygons[i / 2].push_back(lines.back());
+    }
   }
+  const auto holds = [&](int w) { return input.fill == FillRule::EvenOdd ? (w & 1) != 0 : w != 0; };
   double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
   for (const auto& line : lines)
     for (std::size_t k = 0; k < line.size(); k += 2) {
@@ -252,11 +265,18 @@ void checkInside(const Input& input, const Built& b) {
         testing::distanceToPolylines(lines, x, y) <= clearance)
       continue;
     const int w = winding(rings, x, y);
-    const bool inside = input.fill == FillRule::EvenOdd ? (w & 1) != 0 : w != 0;
-    if (inside != (m.inside[t] != 0))
+    const std::string at = " its centroid (" + std::to_string(std::ldexp(x, exponent)) + ", " +
+                           std::to_string(std::ldexp(y, exponent)) + ")";
+    if (holds(w) != (m.inside[t] != 0))
       fail("triangle " + std::to_string(t) + " is flagged " + (m.inside[t] ? "inside" : "outside") +
-           " but its centroid (" + std::to_string(std::ldexp(x, exponent)) + ", " +
-           std::to_string(std::ldexp(y, exponent)) + ") has winding " + std::to_string(w));
+           " but" + at + " has winding " + std::to_string(w));
+    const std::int32_t label = m.regions[t];
+    bool anyHolds = false;
+    for (const auto& polygon : polygons) anyHolds |= holds(winding(polygon, x, y));
+    if (label >= static_cast<std::int32_t>(polygons.size()) || label < -1 ||
+        (label == -1 && anyHolds) || (label >= 0 && !holds(winding(polygons[label], x, y))))
+      fail("triangle " + std::to_string(t) + " has region " + std::to_string(label) + " but" + at +
+           (anyHolds ? " lies in a polygon" : " lies in none"));
   }
 }
 

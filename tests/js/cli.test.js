@@ -43,6 +43,28 @@ test('writes the same FeatureCollection as the API', () => {
   assert.deepEqual(written, expected);
 });
 
+test('keeps ids, properties and heights as the API does, with or without inside flags', () => {
+  const geojson = JSON.parse(readFileSync(fixture, 'utf8'));
+  geojson.features[0].id = 'island';
+  const input = join(dir, 'regions.geojson');
+  writeFileSync(input, JSON.stringify(geojson));
+  for (const flags of [[], ['--inside-flags']]) {
+    const out = join(dir, 'regions-out.geojson');
+    const p = run([input, '-o', out, ...flags]);
+    assert.equal(p.status, 0, p.stderr);
+    const written = JSON.parse(readFileSync(out, 'utf8'));
+    assert.deepEqual(written, triangulateGeoJSON(geojson, { insideFlags: flags.length > 0 }));
+    const island = written.features.filter((f) => f.id === 'island');
+    assert.ok(island.length > 0 && island.every((f) => f.properties.name === 'island'));
+    const outside = flags.length > 0 ? { inside: false } : null;  // outside every polygon
+    assert.ok(written.features.some((f) => !('id' in f)
+      && JSON.stringify(f.properties) === JSON.stringify(outside)));
+    const well = written.features.flatMap((f) => f.geometry.coordinates[0])
+      .find(([x, y]) => x === 1 && y === 1);
+    assert.deepEqual(well, [1, 1, 250]);
+  }
+});
+
 test('reads stdin and writes stdout', () => {
   const geojson = readFileSync(multiPointFile(50), 'utf8');
   const p = run(['-'], geojson);

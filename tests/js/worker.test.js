@@ -92,6 +92,38 @@ test('memoryUsage and GeoJSON through the worker', async () => {
   assert.ok(usage.heapBytes >= usage.allocatedBytes && usage.allocatedBytes > 0);
 });
 
+test('regions, heights and GeoJSON features through the worker', async () => {
+  const polylines = [[0, 0, 10, 0, 10, 10, 0, 10, 0, 0], [2, 2, 2, 8, 8, 8, 8, 2, 2, 2],
+    [-1, 5, 11, 5]];
+  const z = Array.from({ length: 2 + 5 + 5 + 2 }, (_, i) => i);
+  const input = { points: [-5, -5, 15, 15], polylines, polygons: [0, 1, 2], z };
+  const here = triangulate(input);
+  const there = await worker.triangulate(
+    { ...input, polygons: new Uint32Array([0, 1, 2]), z: Float64Array.from(z) });
+  assert.deepEqual(there.regions, here.regions);
+  assert.deepEqual(there.z, here.z);
+  assert.ok(there.regions.includes(0) && there.regions.includes(1));
+
+  const square = [[0, 0, 1], [4, 0, 2], [4, 4, 3], [0, 4, 4], [0, 0, 1]];
+  const fc = { type: 'FeatureCollection', features: [{
+    type: 'Feature', id: 'a', properties: { name: 'square' },
+    geometry: { type: 'Polygon', coordinates: [square] },
+  }] };
+  const geojson = await worker.triangulateGeoJSON(fc);
+  assert.deepEqual(geojson, triangulateGeoJSON(fc));
+  assert.ok(geojson.features.every((f) => f.id === 'a' && f.properties.name === 'square'));
+  const arrays = await worker.triangulateGeoJSON(fc, { output: 'arrays' });
+  assert.equal(arrays.regionFeatures[0], fc.features[0], 'the features stay on this thread');
+
+  const t = worker.createTriangulation();
+  await t.insertPolyline(polylines[0]);
+  await t.insertPolyline(polylines[1]);
+  const labelled = await t.results({ polygons: [0, 2] });
+  assert.equal(labelled.regions.length, labelled.triangles.length / 3);
+  await assert.rejects(t.results({ polygons: [0, 3] }), RangeError);
+  await t.dispose();
+});
+
 test('an idle worker does not keep node running', async () => {
   const { spawnSync } = await import('node:child_process');
   const script = "import { createWorker } from 'geocdt/worker'; const w = createWorker(); "

@@ -65,9 +65,25 @@ enum class Keep : std::uint8_t { All, Inside };
 
 struct MeshOptions {
   Keep keep = Keep::All;              // Inside drops triangles outside every ring
-  FillRule fill = FillRule::EvenOdd;  // how rings decide inside
+  FillRule fill = FillRule::EvenOdd;  // how rings decide inside (of each polygon too)
   bool insideFlags = false;           // fill Mesh::inside
+
+  // Region labels: with regions, Mesh::regions names the polygon that holds each triangle.
+  // A polygon is the set of polylines that polylinePolygons maps to its id (any number >= 0):
+  // polylinePolygons[p] for polyline p, -1 for none, and none for polylines past its end.
+  // Its inside is where its own rings give an inside by the fill rule, whatever the other
+  // polylines do; polylines of no polygon, and open polylines, still constrain but bound no
+  // region. Where several polygons hold a triangle (nested or overlapping), its region is the
+  // smallest of them: the least area (its triangles' areas summed), then the fewest
+  // triangles, then the lowest id. A polygon nested in another has less area or, equal in
+  // floating point, fewer triangles, so nesting always gives the innermost polygon.
+  bool regions = false;
+  std::vector<std::int32_t> polylinePolygons;
+  bool vertexSegments = false;  // fill Mesh::vertexSegments
 };
+
+// Mesh::vertexSegments of a vertex on no constrained edge.
+inline constexpr std::uint32_t kNoSegment = 0xFFFFFFFFu;
 
 // What a triangulation hands out: plain arrays the caller owns.
 struct Mesh {
@@ -81,6 +97,15 @@ struct Mesh {
   std::vector<std::uint32_t> sourceOffsets;
   std::vector<std::uint32_t> sources;
   std::vector<std::uint8_t> inside;  // 1 per triangle when MeshOptions::insideFlags
+  // 1 per triangle when MeshOptions::regions: its polygon (see there), or -1 outside every one.
+  std::vector<std::int32_t> regions;
+  // 1 per vertex when MeshOptions::vertexSegments: for a vertex on a constrained edge, an
+  // input segment through it (up to the rounding of crossing points), as the index p of its
+  // first point among the points of every polyline inserted (numbered across polylines in
+  // insertion order; the segment runs from p to p + 1); kNoSegment for other vertices and
+  // past 2^32 - 2 polyline points. Where constraints cross, it names one of them: with heights
+  // at the input points, a crossing's height can be interpolated along that segment.
+  std::vector<std::uint32_t> vertexSegments;
 };
 
 // A polyline given as 2 * count doubles. A ring repeats its first point at its end.

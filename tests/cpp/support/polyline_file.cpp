@@ -136,4 +136,18 @@ std::string writePointFile(const std::string& path, const std::vector<double>& x
   return writeAll(path, bytes);
 }
 
+std::string readPolygonFile(const std::string& path, std::vector<std::int32_t>& polylinePolygons) {
+  std::vector<unsigned char> bytes;
+  std::string error = readAll(path, bytes);
+  if (!error.empty()) return error;
+  if (!hasMagic(bytes, "GPG1") || bytes.size() < 8) return path + ": not a GPG1 file";
+  const std::uint64_t polygons = loadLE(bytes.data() + 4, 4);
+  if (bytes.size() != 8 + 4 * polygons) return path + ": size does not match its polygons";
+  polylinePolygons.clear();
+  for (std::uint64_t g = 0; g < polygons; ++g)
+    polylinePolygons.insert(polylinePolygons.end(), loadLE(bytes.data() + 8 + 4 * g, 4),
+                            static_cast<std::int32_t>(g));
+  return {};
+}
+
 }  // namespace geocdt::testing

@@ -4,6 +4,8 @@
 //   .gpl  polylines:  "GPL1", uint32 P, uint32 count[P], then float64 x, y of every point
 //                     of every polyline in order.
 //   .gpt  points:     "GPT1", uint64 n, then n float64 x, y pairs.
+//   .gpg  polygons:   "GPG1", uint32 G, uint32 count[G]: polygon g has the next count[g]
+//                     polylines of the .gpl file of the same name.
 //
 // The scripts in scripts/datasets write these files; a ring repeats its first point last.
 #include <cstddef>
@@ -36,5 +38,7 @@ std::string readPolylineFile(const std::string& path, PolylineSet& out);
 std::string writePolylineFile(const std::string& path, const PolylineSet& set);
 std::string readPointFile(const std::string& path, std::vector<double>& xy);
 std::string writePointFile(const std::string& path, const std::vector<double>& xy);
+// The polygon of each polyline, as MeshOptions::polylinePolygons takes it.
+std::string readPolygonFile(const std::string& path, std::vector<std::int32_t>& polylinePolygons);
 
 }  // namespace geocdt::testing

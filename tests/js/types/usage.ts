@@ -2,7 +2,7 @@
 // reject wrong use (the @ts-expect-error lines fail the build if they stop being errors).
 import {
   init, triangulate, triangulateGeoJSON, geoJSONToInput, Triangulation, memoryUsage, GeocdtError,
-  type TriangulateResult, type ProgressEvent, type GeocdtErrorCode,
+  type TriangulateResult, type ProgressEvent, type GeocdtErrorCode, type Position,
 } from 'geocdt';
 import { createWorker } from 'geocdt/worker';
 
@@ -25,15 +25,29 @@ async function main(): Promise<void> {
   const phases: ProgressEvent['phase'][] = ['sort', 'points', 'constraints', 'export'];
 
   const fc = triangulateGeoJSON({ type: 'FeatureCollection', features: [] });
-  const firstRing: [number, number][] = fc.features[0].geometry.coordinates[0];
+  const firstRing: Position[] = fc.features[0].geometry.coordinates[0];
+  const id: string | number | undefined = fc.features[0].id;
+  const name: unknown = fc.features[0].properties?.name;
   const arrays = triangulateGeoJSON({ type: 'Point', coordinates: [0, 0] }, { output: 'arrays' });
   const ids: Uint32Array = arrays.inputToVertex;
+  const regionOf: Int32Array | undefined = arrays.regions;
+  const featureOf = arrays.regionFeatures[0]?.properties;
+  const heights: Float64Array | undefined = arrays.z;
+
+  // Polygons and heights in the array API, polygons in results().
+  const labelled = triangulate({
+    polylines: { coords: new Float64Array(8), offsets: [0, 4] }, polygons: [0, 1],
+    z: new Float32Array(4),
+  });
+  const regions: Int32Array | undefined = labelled.regions;
   const perRing: Float64Array[] = geoJSONToInput({ type: 'Point', coordinates: [0, 0] }).polylines;
   const offsets: Uint32Array =
     geoJSONToInput({ type: 'Point', coordinates: [0, 0] }, { flat: true }).polylines.offsets;
 
   const tri = new Triangulation();
   const v: Uint32Array = tri.insertPoints([0, 0, 1, 0, 0, 1], { onProgress: () => {} });
+  const meshRegions: Int32Array | undefined = tri.results({ polygons: new Uint32Array([0, 0]) })
+    .regions;
   const where = tri.locate(0.2, 0.2);
   const kind: 'empty' | 'outside' | 'face' | 'edge' | 'vertex' = where.kind;
   const flips: number = tri.stats.flips;
@@ -68,11 +82,13 @@ async function main(): Promise<void> {
   triangulate({ polylines: { coords: [0, 0], offsets: new Float64Array(2) } });
   // @ts-expect-error results() of a mesh has no inputToVertex
   new Triangulation().results().inputToVertex;
+  // @ts-expect-error polygons are integer offsets
+  triangulate({ polygons: new Float64Array(2) });
   // @ts-expect-error no such phase
   const phase: ProgressEvent['phase'] = 'walk';
 
   void [t, h, inside, ms, flat, phases, firstRing, ids, perRing, offsets, v, kind, flips, heap,
-    remote, located, phase];
+    remote, located, phase, id, name, regionOf, featureOf, heights, regions, meshRegions];
 }
 
 main();
