@@ -50,10 +50,13 @@ void ProgressRelay::update(Phase phase, double fraction) {
 }
 
 void ProgressRelay::send() {
-  sentAt_ = emscripten_get_now();
   sentAny_ = true;
   unsent_ = false;
   callback_(phase_, fraction_);
+  // Timed from the callback's return, so that two reports are 100 ms apart wherever inside the
+  // callback the caller looks at the clock (a slow callback or a pause in it would otherwise
+  // bring the next report closer).
+  sentAt_ = emscripten_get_now();
 }
 
 }  // namespace geocdt::wasm
