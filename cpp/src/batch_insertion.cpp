@@ -35,8 +35,6 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   if (count == 0) return Status::success();
   const std::uint32_t base = vertexCount();
   std::vector<std::uint32_t> order = insertionOrder(input, count, options_.order);
-  // Reserved after the sort's buffers are gone, to keep the peak low: about 2 triangles a point.
-  topo.reserve(topo.tri.size() / 3 + 2 * static_cast<std::size_t>(count) + 8);
   // A large batch is stored in insertion order while it is inserted, so that the walk and
   // the flips read coordinates that sit next to each other in memory; it costs one pass
   // over all triangles at the end, which a small batch (a click, a polyline) must not pay.
@@ -54,35 +52,46 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
     maxX = std::max(maxX, x);
     minY = std::min(minY, y);
     maxY = std::max(maxY, y);
+    // ids[input index] = the vertex (in the batch's working numbering) it became; a
+    // duplicate overwrites its entry with the vertex it equals.
+    ids[i] = base + (large ? k : order[k]);
   }
   if (grid_.empty()) grid_.reset(minX, minY, maxX, maxY, options_.gridDensity);
-  // ids[input index] = the vertex (in the batch's working numbering) it became or equals.
   batchStart_ = true;
   smallBatch_ = !large;
   inBatch_ = true;
   splits_.clear();
   const std::uint64_t duplicatesBefore = stats.duplicates;
-  if (!built_) {
-    Status s = insertPending(base, count, order, ids);
-    if (!s.ok()) {
-      inBatch_ = false;
-      return s;
-    }
-  } else {
-    for (std::uint32_t k = 0; k < count; ++k) {
-      const std::uint32_t v = base + (large ? k : order[k]);
-      const std::uint32_t r = insertVertex(v);
-      if (r == kGhost) {
-        inBatch_ = false;
-        return error_;
+  std::array<std::uint32_t, 3> built{kGhost, kGhost, kGhost};  // the batch's first triangle
+  Status s;
+  if (!built_) s = insertPending(base, count, order, ids, built);
+  if (s.ok() && built_) {
+    if (large && options_.start == LocateStart::LastTriangle) {
+      s = insertRun(base, count, order, ids, built);
+    } else {
+      topo.reserve(topo.tri.size() / 3 + 2 * static_cast<std::size_t>(count) + 8);
+      for (std::uint32_t k = 0; k < count && s.ok(); ++k) {
+        const std::uint32_t v = base + (large ? k : order[k]);
+        if (v == built[0] || v == built[1] || v == built[2]) continue;
+        const std::uint32_t r = insertVertex(v);
+        if (r == kGhost) s = error_;
+        ids[order[k]] = r;
       }
-      ids[order[k]] = r;
     }
+  }
+  if (!s.ok()) {
+    inBatch_ = false;
+    return s;
   }
   std::vector<std::uint32_t> newId;
   if (large) {
     newId = renumberBatch(input, base, count, order, ids);
-    if (built_) refreshGrid();
+    if (built_) {
+      // The cells' hints would point at the batch's first triangles: the next locate()
+      // or batch rebuilds them, and a one-shot call that has none never pays for it.
+      grid_.resizeFor(stats.inserted);
+      gridStale_ = true;
+    }
   } else if (stats.duplicates != duplicatesBefore) {
     newId = compactSmallBatch(base, count, ids);
   }
@@ -94,6 +103,48 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   }
   splits_.clear();
   return Status::success();
+}
+
+Status Delaunay::insertRun(std::uint32_t base, std::uint32_t count,
+                           const std::vector<std::uint32_t>& order, std::uint32_t* ids,
+                           std::array<std::uint32_t, 3> skip) {
+  // The first point starts from the grid, before the arrays grow past the used slots.
+  last_ = startTriangle(xy[2 * static_cast<std::size_t>(base)],
+                        xy[2 * static_cast<std::size_t>(base) + 1], true);
+  batchStart_ = false;
+  const std::int32_t used = topo.slotCount();
+  // Each insertion adds two slots: with them all in place, a split writes without checks.
+  topo.resizeSlots(static_cast<std::size_t>(used) + 2 * static_cast<std::size_t>(count));
+  runSlots_ = used;
+  const bool withFlags = constrained();
+  Status s;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const std::uint32_t v = base + k;
+    if (v == skip[0] || v == skip[1] || v == skip[2]) continue;
+    const std::uint32_t r = withFlags ? insertRunVertex<true>(v) : insertRunVertex<false>(v);
+    if (r == v) continue;
+    if (r == kGhost) {
+      s = error_;
+      break;
+    }
+    ids[order[k]] = r;
+  }
+  topo.resizeSlots(static_cast<std::size_t>(runSlots_));
+  runSlots_ = -1;
+  return s;
+}
+
+// One vertex of insertRun, in a function of its own: WebAssembly engines optimise a function
+// once it has run often, and a loop inlined whole into one long call would never be.
+template <bool kConstrained>
+GEOCDT_NOINLINE std::uint32_t Delaunay::insertRunVertex(std::uint32_t v) {
+  const double x = xy[2 * static_cast<std::size_t>(v)], y = xy[2 * static_cast<std::size_t>(v) + 1];
+  Hit h = walk(x, y, last_);
+  if (h.kind == Hit::Kind::Failed) {
+    ++stats.walkFallbacks;
+    h = scan(x, y);
+  }
+  return insertAt<kConstrained>(h, v);
 }
 
 // A small batch kept its input numbering; duplicates left holes in it. Each surviving new
@@ -177,7 +228,8 @@ std::vector<std::uint32_t> Delaunay::renumberBatch(const double* input, std::uin
 }
 
 Status Delaunay::insertPending(std::uint32_t base, std::uint32_t count,
-                               const std::vector<std::uint32_t>& order, std::uint32_t* ids) {
+                               const std::vector<std::uint32_t>& order, std::uint32_t* ids,
+                               std::array<std::uint32_t, 3>& built) {
   // The vertices waiting, then the batch's: indexed, not copied (4 bytes a point saved).
   const std::size_t waiting = pending_.size(), n = waiting + count;
   const auto at = [&](std::size_t i) {
@@ -198,10 +250,7 @@ Status Delaunay::insertPending(std::uint32_t base, std::uint32_t count,
   }
   if (i1 >= n || i2 >= n) {
     // Still all collinear: no triangles yet; keep the vertices, without duplicates.
-    for (std::uint32_t k = 0; k < count; ++k) {
-      ids[order[k]] = base + k;
-      pending_.push_back(base + k);
-    }
+    for (std::uint32_t k = 0; k < count; ++k) pending_.push_back(base + k);
     dedupCollinear(base, order, ids);
     return Status::success();
   }
@@ -217,14 +266,11 @@ Status Delaunay::insertPending(std::uint32_t base, std::uint32_t count,
   }
   grid_.reset(minX, minY, maxX, maxY, options_.gridDensity);
   grid_.fill(last_);
-  for (const std::uint32_t v : {a, b, c})
-    if (v >= base) ids[order[v - base]] = v;
-  for (std::size_t i = 1; i < n; ++i) {
+  built = {a, b, c};
+  // The vertices that waited; the batch's own follow in the caller's loop.
+  for (std::size_t i = 1; i < waiting; ++i) {
     if (i == i1 || i == i2) continue;
-    const std::uint32_t v = at(i);
-    const std::uint32_t r = insertVertex(v);
-    if (r == kGhost) return error_;
-    if (v >= base) ids[order[v - base]] = r;
+    if (insertVertex(at(i)) == kGhost) return error_;
   }
   pending_.clear();
   return Status::success();

@@ -43,6 +43,15 @@ class PointGrid {
     m_ = m;
   }
 
+  // The size grow() would have reached after `inserted` insertions, with every cell empty
+  // (-1): for rebuild() after a batch that did not keep the grid up to date.
+  void resizeFor(std::uint64_t inserted) {
+    std::uint32_t m = m_;
+    while (static_cast<double>(inserted) > density_ * m * m && m < kMaxSize) m *= 2;
+    m_ = m;
+    cells_.assign(static_cast<std::size_t>(m) * m, -1);
+  }
+
   void fill(std::int32_t triangle) { std::fill(cells_.begin(), cells_.end(), triangle); }
 
   // Fresh hints after a large batch: for each cell, a triangle with a vertex in it; a cell
