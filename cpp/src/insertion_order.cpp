@@ -76,37 +76,32 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
   // sorts in the same two radix passes. One scale for both axes keeps the cells square.
   int bits = 4;
   while (bits < 16 && (1ull << (2 * bits)) < 4ull * count) ++bits;
+  if (order == InsertionOrder::Brio) bits = std::min(bits, 14);  // 4 bits for the round
   const double top = static_cast<double>((1u << bits) - 1);
   const double extent = std::max(maxX - minX, maxY - minY);
   const double scale = extent > 0 ? top / extent : 0.0;
 
+  // Brio: rounds of 8 times the size, the last about 7/8 of the points, each point's
+  // round drawn from a hash of its index (reproducible, and no shuffle's random memory
+  // accesses). The round goes above the Hilbert key, so that one sort orders both.
+  int lastRound = 0;
+  if (order == InsertionOrder::Brio)
+    while (lastRound < 15 && (std::uint64_t{count} >> (3 * (lastRound + 1))) >= 64) ++lastRound;
   std::vector<std::uint64_t> items(count), scratch(count);
-  if (order == InsertionOrder::Brio) {
-    // Random rounds of doubling size (a fixed seed keeps results reproducible).
-    std::uint64_t state = 0x9E3779B97F4A7C15ull;
-    for (std::uint32_t i = count; i > 1; --i) {
-      state ^= state << 13;
-      state ^= state >> 7;
-      state ^= state << 17;
-      std::swap(ids[i - 1], ids[state % i]);
-    }
-  }
   for (std::uint32_t i = 0; i < count; ++i) {
-    const std::uint32_t id = ids[i];
-    const std::uint64_t key = hilbertIndex(toCell(xy[2 * id], minX, scale, top),
-                                           toCell(xy[2 * id + 1], minY, scale, top), bits);
-    items[i] = key << 32 | id;
-  }
-  if (order == InsertionOrder::Hilbert) {
-    sortByKey(items, scratch, 0, count);
-  } else {
-    // Rounds of halving size from the back: [n/2, n), [n/4, n/2), ..., each sorted alone.
-    for (std::size_t end = count; end > 0;) {
-      const std::size_t begin = end > 64 ? end / 2 : 0;
-      sortByKey(items, scratch, begin, end);
-      end = begin;
+    const std::uint64_t key = hilbertIndex(toCell(xy[2 * i], minX, scale, top),
+                                           toCell(xy[2 * i + 1], minY, scale, top), bits);
+    int round = lastRound;  // earlier with probability 1/8 per round
+    if (round > 0) {
+      std::uint64_t h = (i + 1) * 0x9E3779B97F4A7C15ull;  // splitmix64's finaliser
+      h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+      h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+      h ^= h >> 31;
+      for (; round > 0 && (h & 7) == 0; h >>= 3) --round;
     }
+    items[i] = (static_cast<std::uint64_t>(round) << (2 * bits) | key) << 32 | i;
   }
+  sortByKey(items, scratch, 0, count);
   for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(items[i]);
   return ids;
 }
