@@ -5,49 +5,87 @@
 
 namespace geocdt {
 
-std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y, int bits) {
-  std::uint32_t d = 0;
-  const std::uint32_t mask = (1u << bits) - 1;
-  for (std::uint32_t s = 1u << (bits - 1); s > 0; s >>= 1) {
-    const std::uint32_t rx = (x & s) ? 1 : 0;
-    const std::uint32_t ry = (y & s) ? 1 : 0;
-    d += s * s * ((3 * rx) ^ ry);
-    if (ry == 0) {  // rotate the quadrant so that the curve stays continuous
-      if (rx == 1) {
-        x = mask - x;
-        y = mask - y;
+namespace {
+
+// The Hilbert curve's refinement as a state machine: the state is how the current quadrant
+// is transformed (bit 0: x and y swapped, bit 1: both mirrored). One table step reads four
+// levels (four bits of x and of y) and gives their eight bits of the index and the next
+// state, without the data-dependent branches of the textbook loop (mispredicted half the
+// time, one per level).
+struct HilbertTable {
+  std::uint16_t entry[4 << 8];  // index (state << 8 | x4 << 4 | y4): digits << 2 | state
+};
+
+constexpr HilbertTable makeHilbertTable() {
+  HilbertTable t{};
+  for (int state = 0; state < 4; ++state)
+    for (int x4 = 0; x4 < 16; ++x4)
+      for (int y4 = 0; y4 < 16; ++y4) {
+        int swapped = state & 1, mirrored = state >> 1, digits = 0;
+        for (int level = 3; level >= 0; --level) {
+          const int bx = (x4 >> level) & 1, by = (y4 >> level) & 1;
+          const int rx = (swapped ? by : bx) ^ mirrored, ry = (swapped ? bx : by) ^ mirrored;
+          digits = digits << 2 | ((3 * rx) ^ ry);
+          if (ry == 0) {  // the lower quadrants turn: swap, and mirror the right one
+            swapped ^= 1;
+            mirrored ^= rx;
+          }
+        }
+        t.entry[state << 8 | x4 << 4 | y4] =
+            static_cast<std::uint16_t>(digits << 2 | mirrored << 1 | swapped);
       }
-      std::swap(x, y);
-    }
+  return t;
+}
+
+constexpr HilbertTable kHilbert = makeHilbertTable();
+
+}  // namespace
+
+std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y, int bits) {
+  // At 16 levels, then cut: the cells of a coarser curve are runs of the finer one.
+  x <<= 16 - bits;
+  y <<= 16 - bits;
+  std::uint32_t d = 0, state = 0;
+  for (int shift = 12; shift >= 0; shift -= 4) {
+    const std::uint32_t e =
+        kHilbert.entry[state << 8 | ((x >> shift) & 15) << 4 | ((y >> shift) & 15)];
+    d = d << 8 | e >> 2;
+    state = e & 3;
   }
-  return d;
+  return d >> (2 * (16 - bits));
 }
 
 namespace {
 
-// Sorts ids[begin, end) by their Hilbert keys with a two-pass 16-bit radix sort.
-void sortByKey(std::vector<std::uint64_t>& items, std::vector<std::uint64_t>& scratch,
-               std::size_t begin, std::size_t end) {
-  // Below a few thousand items the radix passes' 64k-entry tables cost more than they save.
-  if (end - begin < 4096) {
-    std::sort(items.begin() + static_cast<std::ptrdiff_t>(begin),
-              items.begin() + static_cast<std::ptrdiff_t>(end));
+// Sorts items (key << 32 | index) by their keys of keyBits bits: an LSD radix sort with
+// digits of at most 12 bits, whose 4096 buckets' write positions stay in the cache.
+void sortByKey(std::vector<std::uint64_t>& items, int keyBits) {
+  const std::size_t n = items.size();
+  if (n < 2048) {
+    std::sort(items.begin(), items.end());
     return;
   }
-  std::vector<std::uint32_t> count(1u << 16);
-  for (int pass = 0; pass < 2; ++pass) {
-    const int shift = 32 + 16 * pass;
-    std::fill(count.begin(), count.end(), 0);
-    for (std::size_t i = begin; i < end; ++i) ++count[(items[i] >> shift) & 0xFFFF];
-    std::uint32_t sum = static_cast<std::uint32_t>(begin);
-    for (auto& c : count) {
-      const std::uint32_t n = c;
-      c = sum;
-      sum += n;
+  const int passes = (keyBits + 11) / 12;
+  const int digit = (keyBits + passes - 1) / passes;
+  const std::size_t buckets = std::size_t{1} << digit;
+  const std::uint64_t mask = buckets - 1;
+  std::vector<std::uint32_t> start(passes * buckets);
+  for (const std::uint64_t item : items)
+    for (int p = 0; p < passes; ++p) ++start[p * buckets + ((item >> (32 + p * digit)) & mask)];
+  for (int p = 0; p < passes; ++p) {
+    std::uint32_t sum = 0;
+    for (std::size_t b = 0; b < buckets; ++b) {
+      const std::uint32_t c = start[p * buckets + b];
+      start[p * buckets + b] = sum;
+      sum += c;
     }
-    for (std::size_t i = begin; i < end; ++i)
-      scratch[count[(items[i] >> shift) & 0xFFFF]++] = items[i];
-    std::copy(scratch.begin() + begin, scratch.begin() + end, items.begin() + begin);
+  }
+  std::vector<std::uint64_t> scratch(n);
+  for (int p = 0; p < passes; ++p) {
+    std::uint32_t* next = start.data() + p * buckets;
+    for (const std::uint64_t item : items)
+      scratch[next[(item >> (32 + p * digit)) & mask]++] = item;
+    items.swap(scratch);
   }
 }
 
@@ -61,9 +99,11 @@ std::uint32_t toCell(double v, double min, double scale, double top) {
 
 std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
                                           InsertionOrder order) {
-  std::vector<std::uint32_t> ids(count);
-  std::iota(ids.begin(), ids.end(), 0u);
-  if (order == InsertionOrder::Input || count < 3) return ids;
+  if (order == InsertionOrder::Input || count < 3) {
+    std::vector<std::uint32_t> ids(count);
+    std::iota(ids.begin(), ids.end(), 0u);
+    return ids;
+  }
 
   double minX = xy[0], minY = xy[1], maxX = xy[0], maxY = xy[1];
   for (std::uint32_t i = 1; i < count; ++i) {
@@ -72,10 +112,11 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
     minY = std::min(minY, xy[2 * i + 1]);
     maxY = std::max(maxY, xy[2 * i + 1]);
   }
-  // About one point per cell is fine enough: a coarser curve is cheaper to compute and
-  // sorts in the same two radix passes. One scale for both axes keeps the cells square.
+  // About one point per cell is fine enough (4 cells a point walked 3.19 steps a point on
+  // 2M uniform points, 1 cell 3.27): a coarser curve sorts in fewer radix passes. One scale
+  // for both axes keeps the cells square.
   int bits = 4;
-  while (bits < 16 && (1ull << (2 * bits)) < 4ull * count) ++bits;
+  while (bits < 16 && (1ull << (2 * bits)) < count) ++bits;
   if (order == InsertionOrder::Brio) bits = std::min(bits, 14);  // 4 bits for the round
   const double top = static_cast<double>((1u << bits) - 1);
   const double extent = std::max(maxX - minX, maxY - minY);
@@ -87,7 +128,7 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
   int lastRound = 0;
   if (order == InsertionOrder::Brio)
     while (lastRound < 15 && (std::uint64_t{count} >> (3 * (lastRound + 1))) >= 64) ++lastRound;
-  std::vector<std::uint64_t> items(count), scratch(count);
+  std::vector<std::uint64_t> items(count);
   for (std::uint32_t i = 0; i < count; ++i) {
     const std::uint64_t key = hilbertIndex(toCell(xy[2 * i], minX, scale, top),
                                            toCell(xy[2 * i + 1], minY, scale, top), bits);
@@ -101,7 +142,10 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
     }
     items[i] = (static_cast<std::uint64_t>(round) << (2 * bits) | key) << 32 | i;
   }
-  sortByKey(items, scratch, 0, count);
+  int roundBits = 0;
+  while ((1 << roundBits) <= lastRound) ++roundBits;
+  sortByKey(items, 2 * bits + roundBits);
+  std::vector<std::uint32_t> ids(count);
   for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(items[i]);
   return ids;
 }
