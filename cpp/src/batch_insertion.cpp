@@ -52,10 +52,10 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
     maxX = std::max(maxX, x);
     minY = std::min(minY, y);
     maxY = std::max(maxY, y);
-    // ids[input index] = the vertex (in the batch's working numbering) it became; a
-    // duplicate overwrites its entry with the vertex it equals.
-    ids[i] = base + (large ? k : order[k]);
   }
+  // A large batch's ids[i] stays kGhost while point i is a vertex of its own, and names the
+  // vertex it equals when it is a duplicate.
+  if (large) std::fill(ids, ids + count, kGhost);
   if (grid_.empty()) grid_.reset(minX, minY, maxX, maxY, options_.gridDensity);
   batchStart_ = true;
   smallBatch_ = !large;
@@ -75,7 +75,7 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
         if (v == built[0] || v == built[1] || v == built[2]) continue;
         const std::uint32_t r = insertVertex(v);
         if (r == kGhost) s = error_;
-        ids[order[k]] = r;
+        if (r != v || !large) ids[order[k]] = r;
       }
     }
   }
@@ -85,7 +85,7 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   }
   std::vector<std::uint32_t> newId;
   if (large) {
-    newId = renumberBatch(input, base, count, order, ids);
+    newId = renumberBatch(input, base, count, order, ids, stats.duplicates != duplicatesBefore);
     if (built_) {
       // The cells' hints would point at the batch's first triangles: the next locate()
       // or batch rebuilds them, and a one-shot call that has none never pays for it.
@@ -197,27 +197,39 @@ void Delaunay::refreshGrid() {
 }
 
 // Gives the batch's new vertices ids in input order, duplicates removed, and rewrites the
-// triangles, the pending list and the coordinates to match.
+// triangles, the pending list and the coordinates to match. On entry ids[i] is kGhost for
+// a point that became a vertex of its own, else the vertex it equals.
 std::vector<std::uint32_t> Delaunay::renumberBatch(const double* input, std::uint32_t base,
                                                    std::uint32_t count,
                                                    std::vector<std::uint32_t>& order,
-                                                   std::uint32_t* ids) {
-  // The insertion numbering is no longer needed: reuse its memory for the new ids, which
-  // follow the first appearance of each vertex in the input.
+                                                   std::uint32_t* ids, bool duplicates) {
+  // The insertion numbering is no longer needed: reuse its memory for the new ids.
   std::vector<std::uint32_t> newId(std::move(order));
-  std::fill(newId.begin(), newId.end(), kGhost);
-  std::uint32_t next = base;
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const std::uint32_t v = ids[i];
-    if (v < base) continue;
-    if (newId[v - base] == kGhost) {
-      newId[v - base] = next++;
-      // Coordinates back in input order, taken from the input itself.
-      xy[2 * static_cast<std::size_t>(newId[v - base])] = input[2 * static_cast<std::size_t>(i)];
-      xy[2 * static_cast<std::size_t>(newId[v - base]) + 1] =
-          input[2 * static_cast<std::size_t>(i) + 1];
+  std::uint32_t next = base + count;
+  if (!duplicates) {
+    // Every point is a vertex: the k-th inserted is input point newId[k]. All sequential.
+    for (std::uint32_t& v : newId) v += base;
+    for (std::uint32_t i = 0; i < count; ++i) ids[i] = base + i;
+    std::copy(input, input + 2 * static_cast<std::size_t>(count),
+              xy.begin() + 2 * static_cast<std::ptrdiff_t>(base));
+  } else {
+    for (std::uint32_t k = 0; k < count; ++k)
+      if (ids[newId[k]] == kGhost) ids[newId[k]] = base + k;
+    // New ids follow the first appearance of each vertex in the input.
+    std::fill(newId.begin(), newId.end(), kGhost);
+    next = base;
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const std::uint32_t v = ids[i];
+      if (v < base) continue;
+      if (newId[v - base] == kGhost) {
+        newId[v - base] = next++;
+        // Coordinates back in input order, taken from the input itself.
+        xy[2 * static_cast<std::size_t>(newId[v - base])] = input[2 * static_cast<std::size_t>(i)];
+        xy[2 * static_cast<std::size_t>(newId[v - base]) + 1] =
+            input[2 * static_cast<std::size_t>(i) + 1];
+      }
+      ids[i] = newId[v - base];
     }
-    ids[i] = newId[v - base];
   }
   for (std::uint32_t& v : topo.tri)
     if (v >= base && v != kGhost) v = newId[v - base];

@@ -95,7 +95,7 @@ class Delaunay {
                                                std::uint32_t* ids);
   std::vector<std::uint32_t> renumberBatch(const double* input, std::uint32_t base,
                                            std::uint32_t count, std::vector<std::uint32_t>& order,
-                                           std::uint32_t* ids);
+                                           std::uint32_t* ids, bool duplicates);
   void refreshGrid();
   Hit walk(double x, double y, std::int32_t t);
   Hit walkFrom(double x, double y, std::int32_t t, std::int64_t& step) const;
