@@ -45,8 +45,7 @@ bool geocdtDelaunayAdopted(const std::vector<double>& xy, Sample& sample, std::s
   std::vector<std::uint32_t> ids(xy.size() / 2);
   const std::uint64_t start = nowNanos();
   geocdt::Triangulation triangulation;
-  const geocdt::Status status =
-      triangulation.insertPoints(buffer.data(), xy.size() / 2, ids.data());
+  const geocdt::Status status = triangulation.insertPoints(std::move(buffer), ids.data());
   if (!status.ok()) {
     error = describe(status);
     return false;

@@ -46,6 +46,9 @@ class Delaunay {
   // that point i became or equals. New vertices are numbered in input order after the
   // existing ones, duplicates removed.
   Status insertBatch(const double* input, std::uint32_t count, std::uint32_t* ids);
+  // The same for the points of buffer, which becomes xy when there are no vertices yet
+  // (no copy), else is appended and freed.
+  Status insertBatch(std::vector<double>&& buffer, std::uint32_t* ids);
 
   // Inserts vertex v (already in xy); returns v or the existing vertex at its place.
   // Returns kGhost when location failed (an internal error, described by lastError()).
@@ -75,17 +78,28 @@ class Delaunay {
   bool build(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   // Builds the first triangle from the waiting vertices and the batch's, then inserts the
   // other waiting ones; `built` gets the three corners.
-  Status insertPending(std::uint32_t base, std::uint32_t count,
-                       const std::vector<std::uint32_t>& order, std::uint32_t* ids,
+  // A large batch is inserted in one run and renumbered in one pass over all triangles at
+  // its end, which a small batch (a click, a polyline) must not pay.
+  bool isLarge(std::uint32_t count, std::uint32_t base) const {
+    return !built_ || 8 * static_cast<std::uint64_t>(count) > base;
+  }
+  Status insertStored(std::uint32_t count, std::uint32_t* ids, std::vector<std::uint32_t> order,
+                      const double* input);
+  void restoreInputOrder(std::uint32_t count, const double* input);
+  // ids[the input index of vertex v] = r, the vertex it equals.
+  void recordDuplicate(std::uint32_t v, std::uint32_t r);
+  Status insertPending(const std::vector<std::uint32_t>& order,
                        std::array<std::uint32_t, 3>& built);
-  void dedupCollinear(std::uint32_t base, const std::vector<std::uint32_t>& order,
-                      std::uint32_t* ids);
-  // Inserts the batch's vertices base + k in order, from the last triangle, into arrays
-  // sized for all of them up front. Duplicates write ids[order[k]].
-  Status insertRun(std::uint32_t base, std::uint32_t count, const std::vector<std::uint32_t>& order,
-                   std::uint32_t* ids, std::array<std::uint32_t, 3> skip);
+  void dedupCollinear(std::uint32_t base);
+  // Inserts the batch's points in turn, from the last triangle, into arrays sized for all
+  // of them up front.
+  Status insertRun(const std::vector<std::uint32_t>& order, std::array<std::uint32_t, 3> skip);
   template <bool kConstrained>
   std::uint32_t insertRunVertex(std::uint32_t v);
+  static constexpr std::uint32_t kRunBlock = 64;
+  // Reads the x of points base + order[0..n) and returns their sum: loads that bring the
+  // points into the cache while nothing waits for them.
+  double touchPoints(std::uint32_t base, const std::uint32_t* order, std::uint32_t n) const;
   // Inserts v where h says (a duplicate returns the vertex it equals, a failed location
   // kGhost), keeping last_ on a triangle around it.
   template <bool kConstrained>
@@ -93,9 +107,9 @@ class Delaunay {
   // Both return the new id of each working id base + k.
   std::vector<std::uint32_t> compactSmallBatch(std::uint32_t base, std::uint32_t count,
                                                std::uint32_t* ids);
-  std::vector<std::uint32_t> renumberBatch(const double* input, std::uint32_t base,
-                                           std::uint32_t count, std::vector<std::uint32_t>& order,
-                                           std::uint32_t* ids, bool duplicates);
+  std::vector<std::uint32_t> compactLargeBatch(std::uint32_t base, std::uint32_t count,
+                                               std::uint32_t* ids,
+                                               std::vector<std::uint32_t>&& scratch);
   void refreshGrid();
   Hit walk(double x, double y, std::int32_t t);
   Hit walkFrom(double x, double y, std::int32_t t, std::int64_t& step) const;
@@ -132,6 +146,14 @@ class Delaunay {
   std::int32_t last_ = -1;
   // During insertRun the arrays hold the whole batch's slots; runSlots_ of them are used.
   std::int32_t runSlots_ = -1;
+  // The batch being inserted: its first vertex, the caller's ids, and while its points are
+  // stored in insertion order, that order (vertex base + k is input point order[k]).
+  struct Batch {
+    std::uint32_t base = 0;
+    std::uint32_t* ids = nullptr;
+    const std::uint32_t* order = nullptr;
+  } batch_;
+  double touch_ = 0;  // what touchPoints() read, kept so that its loads are not dropped
   std::vector<std::uint32_t> pending_;  // vertices waiting for a non-collinear triple
   std::vector<std::int32_t> stack_;
   std::vector<std::int32_t> lawson_;
