@@ -14,6 +14,9 @@ struct BenchConfig {
 // insertion order x locate start combinations.
 void printDelaunayTables(const BenchConfig& config);
 
+// Issue 9's native targets, each printed with its value, limit and whether it is met.
+void printTargetsTable(const BenchConfig& config);
+
 // Issue 3's table: constrained triangulation of real and random polylines.
 void printConstrainedTable(const BenchConfig& config);
 

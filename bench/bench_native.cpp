@@ -1,5 +1,6 @@
 // The native benchmark: prints markdown tables of geocdt against CGAL.
-// Usage: bench_native [--quick] [--dt] [--cdt] [--cpu] [--data DIR] [--timeout SECONDS]
+// Usage: bench_native [--quick] [--targets] [--dt] [--cdt] [--cpu] [--data DIR]
+//                     [--timeout SECONDS]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -36,9 +37,10 @@ const char* compiler() {
 
 void usage(const char* program) {
   std::printf(
-      "usage: %s [--quick] [--dt] [--cdt] [--cpu] [--data DIR] [--timeout SECONDS]\n"
+      "usage: %s [--quick] [--targets] [--dt] [--cdt] [--cpu] [--data DIR] [--timeout SECONDS]\n"
+      "  --targets  issue 9's targets only\n"
       "  --dt       Delaunay tables only\n"
-      "  --cdt      constrained table only (both when neither is given)\n"
+      "  --cdt      constrained table only (all three when none is given)\n"
       "  --quick    fewer repetitions, no 4M run: checks that everything runs\n"
       "  --cpu      time with the process CPU clock instead of the wall clock (for a\n"
       "             machine shared with other work; the code measured is single-threaded)\n"
@@ -52,11 +54,13 @@ void usage(const char* program) {
 int main(int argc, char** argv) {
   bench::BenchConfig config;
   config.dataDir = GEOCDT_BENCH_DATA_DIR;
-  bool delaunay = false, constrained = false;
+  bool targets = false, delaunay = false, constrained = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
       config.quick = true;
+    } else if (arg == "--targets") {
+      targets = true;
     } else if (arg == "--dt") {
       delaunay = true;
     } else if (arg == "--cdt") {
@@ -72,7 +76,7 @@ int main(int argc, char** argv) {
       return arg == "--help" || arg == "-h" ? 0 : 2;
     }
   }
-  if (!delaunay && !constrained) delaunay = constrained = true;
+  if (!targets && !delaunay && !constrained) targets = delaunay = constrained = true;
   if (config.timeoutSeconds <= 0) config.timeoutSeconds = 300;
 
   std::printf(
@@ -81,6 +85,7 @@ int main(int argc, char** argv) {
       config.quick ? " (--quick: fewer repetitions, not a measurement)" : "",
       bench::cgalDescription().c_str(), compiler(),
       bench::usingProcessCpuClock() ? "process CPU time" : "wall time", loadAverage().c_str());
+  if (targets) bench::printTargetsTable(config);
   if (delaunay) bench::printDelaunayTables(config);
   if (constrained) bench::printConstrainedTable(config);
   std::printf("Load average at end: %s.\n", loadAverage().c_str());

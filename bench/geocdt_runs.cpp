@@ -32,8 +32,33 @@ bool geocdtDelaunay(const std::vector<double>& xy, const geocdt::Options& option
   const geocdt::Stats& stats = triangulation.stats();
   sample.walkSteps = stats.walkSteps;
   sample.locates = stats.locates;
+  sample.flips = stats.flips;
   sample.vertices = triangulation.vertexCount();
   sample.triangles = triangulation.triangleCount();
+  return true;
+}
+
+bool geocdtDelaunayAdopted(const std::vector<double>& xy, Sample& sample, std::string& error) {
+  const std::size_t heapBefore = heapInUse();
+  resetHeapPeak();
+  std::vector<double> buffer(xy);
+  std::vector<std::uint32_t> ids(xy.size() / 2);
+  const std::uint64_t start = nowNanos();
+  geocdt::Triangulation triangulation;
+  const geocdt::Status status = triangulation.insertPoints(std::move(buffer), ids.data());
+  if (!status.ok()) {
+    error = describe(status);
+    return false;
+  }
+  const geocdt::Stats stats = triangulation.stats();
+  const geocdt::Mesh mesh = triangulation.release();
+  sample.pointSeconds = secondsSince(start);
+  sample.peakBytes = heapPeak() - heapBefore;
+  sample.walkSteps = stats.walkSteps;
+  sample.locates = stats.locates;
+  sample.flips = stats.flips;
+  sample.vertices = mesh.points.size() / 2;
+  sample.triangles = mesh.triangles.size() / 3;
   return true;
 }
 

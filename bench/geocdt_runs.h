@@ -14,6 +14,11 @@ namespace bench {
 bool geocdtDelaunay(const std::vector<double>& xy, const geocdt::Options& options, Sample& sample,
                     std::string& error);
 
+// The wasm binding's case: the caller writes the points into a heap buffer (counted in the
+// peak, not timed), which the triangulation adopts, then the mesh is handed out. Times
+// insertPoints and release together, as one call of the binding does.
+bool geocdtDelaunayAdopted(const std::vector<double>& xy, Sample& sample, std::string& error);
+
 // The same, then times two things the insertion order alone cannot speed up: inserting
 // `late` points into the finished triangulation (edgeSeconds) and locating `queries`
 // (extraSeconds). lateWalkSteps/lateLocates count the late inserts.

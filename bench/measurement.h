@@ -16,6 +16,7 @@ struct Sample {
   std::uint64_t peakBytes = 0;  // peak extra heap during the run
   std::uint64_t walkSteps = 0;
   std::uint64_t locates = 0;
+  std::uint64_t flips = 0;
   std::uint64_t lateWalkSteps = 0;  // the same for the follow-up phase
   std::uint64_t lateLocates = 0;
   std::uint64_t crossings = 0;  // vertices added where constraints cross

@@ -31,9 +31,9 @@ bool Incremental::insert(Output& out, Input& input, bool polyline, emscripten::v
       out,
       [&] {
         out.vertexIds.resize(count);
-        const double* xy = input.points.data();
-        return polyline ? triangulation_.insertPolyline(xy, count, out.vertexIds.data())
-                        : triangulation_.insertPoints(xy, count, out.vertexIds.data());
+        if (polyline)
+          return triangulation_.insertPolyline(input.points.data(), count, out.vertexIds.data());
+        return triangulation_.insertPoints(std::move(input.points), out.vertexIds.data());
       },
       "out of memory: the triangulation needs more than the 4 GB a WebAssembly module can "
       "address; it was cleared");

@@ -39,8 +39,9 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
         const std::vector<PolylineView> lines = input.polylines();
         out.inputToVertex.resize(points + input.linePointCount());
         Triangulation triangulation(options);
+        // The core takes the input buffer over as its coordinate array: no second copy.
         Status status =
-            triangulation.insertPoints(input.points.data(), points, out.inputToVertex.data());
+            triangulation.insertPoints(std::move(input.points), out.inputToVertex.data());
         relay.batch(points);
         if (status.ok() && !lines.empty())
           status = triangulation.insertPolylines(lines.data(), lines.size(),

@@ -12,6 +12,12 @@
 #include "point_grid.h"
 #include "topology.h"
 
+#if defined(__GNUC__)
+#define GEOCDT_NOINLINE __attribute__((noinline))
+#else
+#define GEOCDT_NOINLINE
+#endif
+
 namespace geocdt {
 
 // Where a point lies in the triangulation.
@@ -41,6 +47,9 @@ class Delaunay {
   // that point i became or equals. New vertices are numbered in input order after the
   // existing ones, duplicates removed.
   Status insertBatch(const double* input, std::uint32_t count, std::uint32_t* ids);
+  // The same for the points of buffer, which becomes xy when there are no vertices yet
+  // (no copy), else is appended and freed.
+  Status insertBatch(std::vector<double>&& buffer, std::uint32_t* ids);
 
   // Inserts vertex v (already in xy); returns v or the existing vertex at its place.
   // Returns kGhost when location failed (an internal error, described by lastError()).
@@ -48,17 +57,12 @@ class Delaunay {
 
   // Locates (x, y), starting from the grid's cell or from the last triangle.
   Hit locate(double x, double y, bool fromGrid);
-  // Splits triangle slot t (real or ghost) at new vertex v and restores Delaunay.
-  // Both return a half-edge starting at v.
-  std::int32_t insertInFace(std::int32_t t, std::uint32_t v);
-  // Splits the edge of half-edge e at vertex v lying strictly inside it; the halves of a
-  // constrained edge stay constrained.
+  // Splits the edge of half-edge e at vertex v lying strictly inside it and restores
+  // Delaunay; the halves of a constrained edge stay constrained. Returns a half-edge
+  // starting at v.
   std::int32_t splitEdge(std::int32_t e, std::uint32_t v);
-  std::int32_t edgeFrom(std::int32_t t, std::uint32_t v) const;  // -1 if v is not in t
-  // Flips non-constrained edges on the stack until each is locally Delaunay. legalize()
-  // assumes every entry has the newly inserted vertex opposite it, so a flip only exposes two
-  // new edges; restoreDelaunay() takes any edges and checks all four around each flip.
-  void legalize();
+  // Flips non-constrained edges on the stack until each is locally Delaunay, checking all
+  // four edges around each flip: for any edges, not only those around a new vertex.
   void restoreDelaunay();
   std::vector<std::int32_t>& flipStack() { return stack_; }
 
@@ -70,33 +74,91 @@ class Delaunay {
   void clear();
 
  private:
+  // Whether any edge is or was constrained: only then do splits and flips carry the flags.
+  bool constrained() const { return constraints.polylineCount > 0 || constraints.edgeCount() > 0; }
   bool build(std::uint32_t a, std::uint32_t b, std::uint32_t c);
-  Status insertPending(std::uint32_t base, std::uint32_t count,
-                       const std::vector<std::uint32_t>& order, std::uint32_t* ids);
-  void dedupCollinear(std::uint32_t base, const std::vector<std::uint32_t>& order,
-                      std::uint32_t* ids);
+  // Builds the first triangle from the waiting vertices and the batch's, then inserts the
+  // other waiting ones; `built` gets the three corners.
+  // A large batch is inserted in one run and renumbered in one pass over all triangles at
+  // its end, which a small batch (a click, a polyline) must not pay.
+  bool isLarge(std::uint32_t count, std::uint32_t base) const {
+    return !built_ || 8 * static_cast<std::uint64_t>(count) > base;
+  }
+  Status insertStored(std::uint32_t count, std::uint32_t* ids, std::vector<std::uint32_t> order,
+                      const double* input);
+  void restoreInputOrder(std::uint32_t count, const double* input);
+  // ids[the input index of vertex v] = r, the vertex it equals.
+  void recordDuplicate(std::uint32_t v, std::uint32_t r);
+  Status insertPending(const std::vector<std::uint32_t>& order,
+                       std::array<std::uint32_t, 3>& built);
+  void dedupCollinear(std::uint32_t base);
+  // Inserts the batch's points in turn, from the last triangle, into arrays sized for all
+  // of them up front.
+  Status insertRun(const std::vector<std::uint32_t>& order, std::array<std::uint32_t, 3> skip);
+  template <bool kConstrained>
+  std::uint32_t insertRunVertex(std::uint32_t v);
+  static constexpr std::uint32_t kRunBlock = 64;
+  // Reads the x of points base + order[0..n) and returns their sum: loads that bring the
+  // points into the cache while nothing waits for them.
+  double touchPoints(std::uint32_t base, const std::uint32_t* order, std::uint32_t n) const;
+  // Inserts v where h says (a duplicate returns the vertex it equals, a failed location
+  // kGhost), keeping last_ on a triangle around it.
+  template <bool kConstrained>
+  std::uint32_t insertAt(const Hit& h, std::uint32_t v);
   // Both return the new id of each working id base + k.
   std::vector<std::uint32_t> compactSmallBatch(std::uint32_t base, std::uint32_t count,
                                                std::uint32_t* ids);
-  std::vector<std::uint32_t> renumberBatch(const double* input, std::uint32_t base,
-                                           std::uint32_t count, std::vector<std::uint32_t>& order,
-                                           std::uint32_t* ids);
+  std::vector<std::uint32_t> compactLargeBatch(std::uint32_t base, std::uint32_t count,
+                                               std::uint32_t* ids,
+                                               std::vector<std::uint32_t>&& scratch);
   void refreshGrid();
   Hit walk(double x, double y, std::int32_t t);
+  Hit walkFrom(double x, double y, std::int32_t t, std::int64_t& step) const;
   Hit scan(double x, double y) const;
   std::int32_t startTriangle(double x, double y, bool fromGrid);
-  bool beyondGhostEdge(std::int32_t e, std::uint32_t v) const;
+
+  // The splits and flips, on slots already allocated: the new vertex p ends in third place
+  // of every triangle around it, so that the edge facing it is the triangle's first.
+  // splitFace makes slots t1, t2; splitEdgeAt makes t3, t4. Both leave the edges facing p
+  // on the Lawson stack (lawson_, its used size in lawsonTop_) and return a triangle with p.
+  template <bool kConstrained>
+  std::int32_t splitFace(std::int32_t t, std::uint32_t p, std::int32_t t1, std::int32_t t2);
+  template <bool kConstrained>
+  std::int32_t splitEdgeAt(std::int32_t e, std::uint32_t p, std::int32_t t3, std::int32_t t4);
+  template <bool kConstrained>
+  void legalizeAround(std::uint32_t p);
+  template <int k>
+  void fillFan(std::uint32_t p, const std::uint32_t (&ring)[k], const std::int32_t (&outer)[k],
+               const std::int32_t (&slot)[k]);
+  std::int32_t addSlots(std::int32_t n);  // n zeroed slots at the end; returns the first
+  void pushLawson(std::int32_t e) {
+    if (lawsonTop_ == lawson_.size()) lawson_.resize(2 * lawson_.size() + 64);
+    lawson_[lawsonTop_++] = e;
+  }
 
   Options options_;
   PointGrid grid_;
+  bool gridStale_ = false;  // the cells' triangles predate a large batch: rebuild on use
   bool built_ = false;
   bool batchStart_ = false;
   bool smallBatch_ = false;
   bool inBatch_ = false;
   std::vector<std::array<std::uint32_t, 3>> splits_;  // constrained edges split in a batch
   std::int32_t last_ = -1;
+  // During insertRun the arrays hold the whole batch's slots; runSlots_ of them are used.
+  std::int32_t runSlots_ = -1;
+  // The batch being inserted: its first vertex, the caller's ids, and while its points are
+  // stored in insertion order, that order (vertex base + k is input point order[k]).
+  struct Batch {
+    std::uint32_t base = 0;
+    std::uint32_t* ids = nullptr;
+    const std::uint32_t* order = nullptr;
+  } batch_;
+  double touch_ = 0;  // what touchPoints() read, kept so that its loads are not dropped
   std::vector<std::uint32_t> pending_;  // vertices waiting for a non-collinear triple
   std::vector<std::int32_t> stack_;
+  std::vector<std::int32_t> lawson_;
+  std::size_t lawsonTop_ = 0;
   Status error_;
 };
 

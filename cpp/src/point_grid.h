@@ -24,7 +24,6 @@ class PointGrid {
 
   bool empty() const { return cells_.empty(); }
   std::uint32_t size() const { return m_; }
-  std::size_t memoryBytes() const { return cells_.capacity() * sizeof(std::int32_t); }
 
   std::int32_t& cellAt(double x, double y) {
     return cells_[static_cast<std::size_t>(row(y)) * m_ + column(x)];
@@ -41,6 +40,15 @@ class PointGrid {
             cells_[static_cast<std::size_t>(j / 2) * m_ + i / 2];
     cells_.swap(cells);
     m_ = m;
+  }
+
+  // The size grow() would have reached after `inserted` insertions, with every cell empty
+  // (-1): for rebuild() after a batch that did not keep the grid up to date.
+  void resizeFor(std::uint64_t inserted) {
+    std::uint32_t m = m_;
+    while (static_cast<double>(inserted) > density_ * m * m && m < kMaxSize) m *= 2;
+    m_ = m;
+    cells_.assign(static_cast<std::size_t>(m) * m, -1);
   }
 
   void fill(std::int32_t triangle) { std::fill(cells_.begin(), cells_.end(), triangle); }

@@ -24,6 +24,10 @@ Along alongSegment(const double* a, const double* b, const double* q) {
 }  // namespace
 std::int32_t Delaunay::startTriangle(double x, double y, bool fromGrid) {
   if (fromGrid) {
+    if (gridStale_) {
+      refreshGrid();
+      gridStale_ = false;
+    }
     const std::int32_t t = grid_.cellAt(x, y);
     if (t >= 0 && t < topo.slotCount()) return t;
   }
@@ -50,13 +54,20 @@ Hit Delaunay::locate(double x, double y, bool fromGrid) {
 // cycle in a Delaunay triangulation; constrained ones get a step bound and a scan.
 Hit Delaunay::walk(double x, double y, std::int32_t t) {
   ++stats.locates;
+  std::int64_t step = 0;
+  const Hit h = walkFrom(x, y, t, step);
+  stats.walkSteps += static_cast<std::uint64_t>(step);
+  return h;
+}
+
+Hit Delaunay::walkFrom(double x, double y, std::int32_t t, std::int64_t& step) const {
   const double* p = xy.data();
   const std::uint32_t* tri = topo.tri.data();
   const std::int32_t* adj = topo.adj.data();
   const std::int64_t bound = 64 + 2 * static_cast<std::int64_t>(topo.slotCount());
   std::int32_t entered = -1;
-  for (std::int64_t step = 0; step < bound; ++step) {
-    ++stats.walkSteps;
+  while (step < bound) {
+    ++step;
     const std::int32_t e0 = 3 * t;
     const std::uint32_t a = tri[e0], b = tri[e0 + 1], c = tri[e0 + 2];
     if (a != kGhost && b != kGhost && c != kGhost) {
@@ -122,7 +133,8 @@ Hit Delaunay::walk(double x, double y, std::int32_t t) {
 Hit Delaunay::scan(double x, double y) const {
   const double* p = xy.data();
   const std::uint32_t* tri = topo.tri.data();
-  for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
+  const std::int32_t slots = runSlots_ >= 0 ? runSlots_ : topo.slotCount();
+  for (std::int32_t t = 0; t < slots; ++t) {
     if (topo.isGhost(t)) continue;
     const std::int32_t e0 = 3 * t;
     Sign o[3];
@@ -139,7 +151,7 @@ Hit Delaunay::scan(double x, double y) const {
       if (o[k] == Sign::Zero) return {Hit::Kind::Edge, e0 + k};
     return {Hit::Kind::Face, e0};
   }
-  for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
+  for (std::int32_t t = 0; t < slots; ++t) {
     if (!topo.isGhost(t)) continue;
     const std::int32_t e0 = 3 * t;
     const int g = tri[e0] == kGhost ? 0 : (tri[e0 + 1] == kGhost ? 1 : 2);

@@ -41,7 +41,6 @@ struct Topology {
 
   // A slot for a new triangle; its twins are left unset (-1) for the caller to link.
   std::int32_t addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    // push_back inlines to a store when the capacity is there (reserved per batch).
     const std::int32_t t = slotCount();
     tri.push_back(a);
     tri.push_back(b);
@@ -51,6 +50,13 @@ struct Topology {
       fixed.push_back(0);
     }
     return t;
+  }
+
+  // Exactly `slots` slots: new ones zeroed, removed ones' memory kept for later growth.
+  void resizeSlots(std::size_t slots) {
+    tri.resize(3 * slots);
+    adj.resize(3 * slots);
+    fixed.resize(3 * slots);
   }
 
   void setTriangle(std::int32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) {

@@ -65,8 +65,14 @@ Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uin
   return insertCheckedPoints(xy, count, vertexIds);
 }
 
+Status Triangulation::insertPoints(std::vector<double>&& xy, std::uint32_t* vertexIds) {
+  const Status s = checkCoordinates(xy.data(), xy.size() / 2, "point");
+  if (!s.ok()) return s;
+  return insertCheckedPoints(xy.data(), xy.size() / 2, vertexIds, &xy);
+}
+
 Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
-                                          std::uint32_t* vertexIds) {
+                                          std::uint32_t* vertexIds, std::vector<double>* adopt) {
   State& state = *state_;
   Delaunay& d = state.delaunay;
   Status s;
@@ -80,7 +86,8 @@ Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
       ids = scratch.data();
     }
     state.slotMapValid = false;
-    s = d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
+    s = adopt ? d.insertBatch(std::move(*adopt), ids)
+              : d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
     if (s.ok()) s = insertPendingSegments(d);
   } catch (const std::bad_alloc&) {
     d.clear();
@@ -143,10 +150,14 @@ Mesh Triangulation::release(const MeshOptions& options) {
   return m;
 }
 
-Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
-                   std::size_t polylineCount, const Options& options,
-                   const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex) {
+namespace {
+
+// One shot: insertPoints(t, ids) inserts the points, then the polylines follow.
+template <typename InsertPoints>
+Status triangulateWith(std::size_t count, InsertPoints insertPoints, const PolylineView* polylines,
+                       std::size_t polylineCount, const Options& options,
+                       const MeshOptions& meshOptions, Mesh& out,
+                       std::vector<std::uint32_t>* inputToVertex) {
   if (polylineCount > 0 && polylines == nullptr)
     return {StatusCode::InvalidArgument, "null polylines with a count"};
   Triangulation t(options);
@@ -156,7 +167,7 @@ Status triangulate(const double* xy, std::size_t count, const PolylineView* poly
     std::size_t total = count;
     for (std::size_t i = 0; i < polylineCount; ++i) total += polylines[i].count;
     ids.resize(total);
-    s = t.insertPoints(xy, count, ids.data());
+    s = insertPoints(t, ids.data());
     if (s.ok() && polylineCount > 0)
       s = t.insertPolylines(polylines, polylineCount, ids.data() + count);
     if (!s.ok()) return s;
@@ -166,6 +177,27 @@ Status triangulate(const double* xy, std::size_t count, const PolylineView* poly
   }
   if (inputToVertex) inputToVertex->swap(ids);
   return s;
+}
+
+}  // namespace
+
+Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
+                   std::size_t polylineCount, const Options& options,
+                   const MeshOptions& meshOptions, Mesh& out,
+                   std::vector<std::uint32_t>* inputToVertex) {
+  return triangulateWith(
+      count, [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(xy, count, ids); },
+      polylines, polylineCount, options, meshOptions, out, inputToVertex);
+}
+
+Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
+                   std::size_t polylineCount, const Options& options,
+                   const MeshOptions& meshOptions, Mesh& out,
+                   std::vector<std::uint32_t>* inputToVertex) {
+  return triangulateWith(
+      xy.size() / 2,
+      [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(std::move(xy), ids); },
+      polylines, polylineCount, options, meshOptions, out, inputToVertex);
 }
 
 }  // namespace geocdt

@@ -252,9 +252,11 @@ TEST(Constraints, IncrementalPointsAndPolylinesStayValid) {
 }
 
 TEST(Constraints, PointsLandingOnConstraintsKeepProvenanceAndInside) {
-  // Large and small batches of points exactly on an existing ring: the ring's pieces keep
-  // their polyline and winding whatever working ids the batch used.
-  for (const std::size_t extra : {400, 3}) {
+  // Large and small batches of points exactly on an existing ring, copied or in a buffer
+  // taken over: the ring's pieces keep their polyline and winding whatever working ids the
+  // batch used.
+  for (const auto& [extra, adopt] :
+       {std::pair<std::size_t, bool>{400, false}, {400, true}, {3, false}, {3, true}}) {
     Triangulation t;
     const std::vector<double> ring = {0, 0, 10, 0, 10, 10, 0, 10, 0, 0};
     const std::vector<double> line = {-5, 5, 15, 5};
@@ -264,7 +266,8 @@ TEST(Constraints, PointsLandingOnConstraintsKeepProvenanceAndInside) {
     for (int k = 1; k < 20; ++k)
       for (const double v : {k * 0.5, 0.0, 10.0, k * 0.5, k * 0.5, 10.0, 0.0, k * 0.5})
         xy.push_back(v);
-    ASSERT_TRUE(t.insertPoints(xy.data(), xy.size() / 2).ok());
+    ASSERT_TRUE(
+        (adopt ? t.insertPoints(std::move(xy)) : t.insertPoints(xy.data(), xy.size() / 2)).ok());
     MeshOptions mo;
     mo.insideFlags = true;
     const Mesh m = t.mesh(mo);

@@ -227,6 +227,80 @@ TEST(Delaunay, ManySmallBatchesWithDuplicates) {
   EXPECT_EQ(largest + 1, m.points.size() / 2);
 }
 
+// Inputs with duplicates (repeats of earlier points, in and out of order) on a lattice.
+std::vector<double> withRepeats(std::size_t side) {
+  std::vector<double> xy = testing::latticePoints(side);
+  testing::Random r(41);
+  const std::size_t n = xy.size() / 2;
+  for (std::size_t k = 0; k < n / 3; ++k) {
+    const std::size_t pick = r.next() % n;
+    xy.push_back(xy[2 * pick]);
+    xy.push_back(xy[2 * pick + 1]);
+  }
+  return xy;
+}
+
+TEST(Delaunay, AdoptedBufferBecomesTheCoordinates) {
+  for (const std::vector<double>& xy : {testing::uniformPoints(20000, 43), withRepeats(90)}) {
+    const Built copied = build(xy);
+    ASSERT_TRUE(copied.status.ok());
+    std::vector<double> buffer = xy;
+    const double* memory = buffer.data();
+    Triangulation t;
+    std::vector<std::uint32_t> ids(xy.size() / 2);
+    ASSERT_TRUE(t.insertPoints(std::move(buffer), ids.data()).ok());
+    EXPECT_EQ(t.points().data(), memory);  // taken over, not copied
+    EXPECT_EQ(ids, copied.ids);
+    const Mesh m = t.release();
+    EXPECT_EQ(m.points.data(), memory);
+    EXPECT_EQ(m.points, copied.mesh.points);
+    EXPECT_EQ(m.triangles, copied.mesh.triangles);
+    EXPECT_EQ(m.halfedges, copied.mesh.halfedges);
+  }
+}
+
+TEST(Delaunay, AdoptedBufferAfterOtherPointsIsAppended) {
+  const std::vector<double> all = withRepeats(60);
+  const std::size_t half = all.size() / 4 * 2;
+  Triangulation t;
+  std::vector<std::uint32_t> ids(all.size() / 2);
+  ASSERT_TRUE(t.insertPoints(all.data(), half / 2, ids.data()).ok());
+  std::vector<double> rest(all.begin() + static_cast<std::ptrdiff_t>(half), all.end());
+  ASSERT_TRUE(t.insertPoints(std::move(rest), ids.data() + half / 2).ok());
+  EXPECT_TRUE(rest.empty());  // freed once appended
+  CheckOptions c;
+  c.inputXY = &all;
+  c.inputToVertex = &ids;
+  EXPECT_EQ(checkTriangulation(t.mesh(), c), "");
+}
+
+TEST(Delaunay, AdoptedBufferWithInvalidCoordinatesIsLeftAsItWas) {
+  std::vector<double> xy = testing::uniformPoints(100, 44);
+  xy[77] = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t size = xy.size();
+  Triangulation t;
+  const Status s = t.insertPoints(std::move(xy));
+  EXPECT_EQ(s.code, StatusCode::InvalidCoordinate);
+  EXPECT_EQ(s.index, 38u);
+  EXPECT_EQ(xy.size(), size);
+  EXPECT_EQ(t.vertexCount(), 0u);
+}
+
+TEST(Delaunay, OneShotWithAdoptedBufferEqualsCopied) {
+  const std::vector<double> xy = withRepeats(40);
+  const std::vector<double> ring = {3.5, 3.5, 20.5, 7.25, 11, 30, 3.5, 3.5};
+  const PolylineView view{ring.data(), ring.size() / 2};
+  Mesh copied, adopted;
+  std::vector<std::uint32_t> copiedIds, adoptedIds;
+  ASSERT_TRUE(triangulate(xy.data(), xy.size() / 2, &view, 1, {}, {}, copied, &copiedIds).ok());
+  std::vector<double> buffer = xy;
+  ASSERT_TRUE(triangulate(std::move(buffer), &view, 1, {}, {}, adopted, &adoptedIds).ok());
+  EXPECT_EQ(adoptedIds, copiedIds);
+  EXPECT_EQ(adopted.points, copied.points);
+  EXPECT_EQ(adopted.triangles, copied.triangles);
+  EXPECT_EQ(adopted.constrained, copied.constrained);
+}
+
 TEST(Delaunay, DeterministicResult) {
   const std::vector<double> xy = testing::latticePoints(50);
   Built a = build(xy), b = build(xy);
