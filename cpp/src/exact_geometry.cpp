@@ -1,0 +1,328 @@
+#include "exact_geometry.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "bigint.h"
+
+namespace geocdt {
+namespace {
+
+using detail::BigInt;
+// A finite double, or a power of two from 2^-1075 up, is an integer below 2^2101 in units of
+// the smallest unit among the inputs: 66 limbs, plus room for the carries of sums. Products
+// of two, three and four such numbers need twice, three and four times that.
+using Linear = BigInt<68>;
+using Quadratic = BigInt<136>;
+using Cubic = BigInt<204>;
+using Quartic = BigInt<272>;
+
+using Long = long double;
+constexpr Long kEpsilon = std::numeric_limits<Long>::epsilon();
+// What underflow can take from a long double product: where long double is double (MSVC),
+// products of subnormal coordinates underflow.
+constexpr Long kTiny = std::numeric_limits<Long>::denorm_min();
+
+// The exponent of the lowest set bit's unit: v is an integer multiple of 2^unitExponent(v).
+int unitExponent(double v) {
+  if (v == 0) return 1 << 20;
+  std::uint64_t mantissa;
+  int exponent;
+  detail::decompose(v, mantissa, exponent);
+  return exponent;
+}
+
+// The lowest unit among values, so that each is an integer multiple of 2^base.
+int baseOf(std::initializer_list<double> values, int lowest = 1 << 20) {
+  for (const double v : values) lowest = std::min(lowest, unitExponent(v));
+  return lowest;
+}
+
+Linear fixed(double v, int base) {
+  Linear r;
+  detail::set_double(r, v, base);
+  return r;
+}
+
+Linear integer(std::uint32_t v) {
+  Linear r;
+  r.limb[0] = v;
+  r.size = v != 0;
+  return r;
+}
+
+Linear power(int exponent, int base) {
+  Linear r;
+  const int shift = exponent - base, word = shift / 32;
+  for (int i = 0; i < word; ++i) r.limb[i] = 0;
+  r.limb[word] = std::uint32_t{1} << (shift % 32);
+  r.size = word + 1;
+  return r;
+}
+
+template <int C, int A, int B>
+BigInt<C> sum(const BigInt<A>& a, const BigInt<B>& b, bool subtract = false) {
+  BigInt<C> r;
+  detail::add(r, a, b, subtract);
+  return r;
+}
+
+template <int C, int A, int B>
+BigInt<C> product(const BigInt<A>& a, const BigInt<B>& b) {
+  BigInt<C> r;
+  detail::multiply(r, a, b);
+  return r;
+}
+
+Linear difference(double a, double b, int base) {
+  return sum<68>(fixed(a, base), fixed(b, base), true);
+}
+
+template <int A, int B>
+int compare(const BigInt<A>& a, const BigInt<B>& b) {
+  const int sa = detail::sign(a), sb = detail::sign(b);
+  if (sa != sb) return sa < sb ? -1 : 1;
+  const int m = detail::compare_magnitude(a, b);
+  return sa >= 0 ? m : -m;
+}
+
+template <int C>
+void negate(BigInt<C>& a) {
+  if (a.size > 0) a.negative = !a.negative;
+}
+
+// The value of a times 2^unit, to about 64 bits: its top three limbs.
+template <int C>
+Long approximate(const BigInt<C>& a, int unit) {
+  Long v = 0;
+  for (int i = std::max(0, a.size - 3); i < a.size; ++i)
+    v += std::ldexp(Long(a.limb[i]), 32 * i + unit);
+  return a.negative ? -v : v;
+}
+
+// Sign of 2 X - (c + n), where X is the coordinate (axis 0: x, 1: y) of the crossing of the
+// lines of s and t: whether X lies above the midpoint of c and its neighbour n.
+int crossingAgainstMidpoint(const InputSegment& s, const InputSegment& t, int axis, double c,
+                            double n) {
+  {  // In long double, decided unless the crossing lies within its error of the midpoint.
+    const Long dx = (Long)s.bx - s.ax, dy = (Long)s.by - s.ay;
+    const Long fx = (Long)t.bx - t.ax, fy = (Long)t.by - t.ay;
+    const Long gx = (Long)t.ax - s.ax, gy = (Long)t.ay - s.ay;
+    const Long den = dx * fy - dy * fx, num = gx * fy - gy * fx;
+    const Long denError = std::fabs(dx * fy) + std::fabs(dy * fx);
+    const Long numError = std::fabs(gx * fy) + std::fabs(gy * fx);
+    const Long a = axis == 0 ? s.ax : s.ay, d = axis == 0 ? dx : dy;
+    const Long along = num / den, x = a + d * along;
+    // Relative errors: 3 eps in num and den each (relative to their magnitudes), so the
+    // quotient errs by (3 eps)(numError / |num| + denError / |den|) of itself, and the
+    // products and sums by a few eps more.
+    const Long relative = numError / std::fabs(num) + denError / std::fabs(den);
+    const Long error =
+        16 * kEpsilon * (std::fabs(a) + std::fabs(d * along) * (1 + relative)) + 64 * kTiny;
+    const Long v = 2 * x - ((Long)c + n);
+    if (std::isfinite(error) && std::isfinite(v) && den != 0 && num != 0) {
+      if (v > 2 * error) return 1;
+      if (-v > 2 * error) return -1;
+    }
+  }
+  const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by, c, n});
+  const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Linear fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
+  const Linear gx = difference(t.ax, s.ax, base), gy = difference(t.ay, s.ay, base);
+  // X = a + d * num / den along the axis.
+  Quadratic den = sum<136>(product<136>(dx, fy), product<136>(dy, fx), true);
+  const Quadratic num = sum<136>(product<136>(gx, fy), product<136>(gy, fx), true);
+  const Linear a = fixed(axis == 0 ? s.ax : s.ay, base);
+  Cubic scaled = sum<204>(product<204>(a, den), product<204>(axis == 0 ? dx : dy, num));
+  if (detail::sign(den) < 0) {
+    negate(den);
+    negate(scaled);
+  }
+  const Cubic twice = sum<204>(scaled, scaled);
+  const Cubic midpoint = product<204>(sum<68>(fixed(c, base), fixed(n, base)), den);
+  return compare(twice, midpoint);
+}
+
+// The double whose rounding interval (halfway cases upward) holds the crossing coordinate,
+// starting from an estimate and, should it be far off, bisecting [lo, hi], which holds it.
+double roundCoordinate(const InputSegment& s, const InputSegment& t, int axis, double guess,
+                       double lo, double hi) {
+  const auto below = [&](double c) {  // the crossing lies below c's interval
+    return crossingAgainstMidpoint(s, t, axis, c, std::nextafter(c, -INFINITY)) < 0;
+  };
+  const auto above = [&](double c) {  // the crossing lies at or above c's interval's end
+    return crossingAgainstMidpoint(s, t, axis, c, std::nextafter(c, INFINITY)) >= 0;
+  };
+  double c = std::clamp(guess, lo, hi);
+  for (int step = 0; step < 4; ++step) {
+    if (below(c)) {
+      c = std::nextafter(c, -INFINITY);
+    } else if (above(c)) {
+      c = std::nextafter(c, INFINITY);
+    } else {
+      return c;
+    }
+  }
+  // Doubles in order are integers in order once negative ones are mirrored.
+  const auto key = [](double v) {
+    std::int64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    return bits < 0 ? std::numeric_limits<std::int64_t>::min() - bits : bits;
+  };
+  const auto value = [](std::int64_t k) {
+    const std::int64_t bits = k < 0 ? std::numeric_limits<std::int64_t>::min() - k : k;
+    double v;
+    std::memcpy(&v, &bits, sizeof v);
+    return v;
+  };
+  // The first double from lo whose interval ends above the crossing.
+  std::int64_t first = key(lo), last = key(hi);
+  while (first < last) {
+    const std::int64_t middle =
+        first + static_cast<std::int64_t>(
+                    (static_cast<std::uint64_t>(last) - static_cast<std::uint64_t>(first)) / 2);
+    if (above(value(middle))) {
+      first = middle + 1;
+    } else {
+      last = middle;
+    }
+  }
+  return value(first);
+}
+
+// Distance from (x, y) to the closed segment, in long double, and a bound on its error.
+Long approximateDistance(const InputSegment& s, double x, double y, Long& error) {
+  const Long dx = (Long)s.bx - s.ax, dy = (Long)s.by - s.ay;
+  const Long length2 = dx * dx + dy * dy;
+  Long t = length2 > 0 ? (((Long)x - s.ax) * dx + ((Long)y - s.ay) * dy) / length2 : 0;
+  t = std::clamp(t, Long(0), Long(1));
+  const Long ex = s.ax + t * dx - x, ey = s.ay + t * dy - y;
+  const Long magnitude = std::fabs((Long)s.ax) + std::fabs((Long)s.ay) + std::fabs((Long)s.bx) +
+                         std::fabs((Long)s.by) + std::fabs((Long)x) + std::fabs((Long)y);
+  error = 32 * kEpsilon * magnitude + 64 * kTiny;
+  return std::sqrt(ex * ex + ey * ey);
+}
+
+// One end of the interval of t in [0, 1] along s where a coordinate lies in a box.
+struct Bound {
+  Linear numerator, denominator;  // denominator > 0
+  bool open;
+};
+
+// -1, 0 or 1 as a/b compares with c/d.
+int compareBounds(const Bound& a, const Bound& b) {
+  return compare(product<136>(a.numerator, b.denominator),
+                 product<136>(b.numerator, a.denominator));
+}
+
+}  // namespace
+
+int spacingExponent(double v) {
+  const double gap = spacingAt(v);
+  int exponent = 0;
+  std::frexp(gap, &exponent);
+  return exponent - 1;
+}
+
+void roundedCrossing(const InputSegment& s, const InputSegment& t, double& x, double& y) {
+  // The estimate comes from the exact numerators and denominator, each to 64 bits: long
+  // double alone loses a crossing at 1e-140 on a segment from 1e47 to the cancellation.
+  const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by});
+  const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Linear fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
+  const Linear ox = difference(t.ax, s.ax, base), oy = difference(t.ay, s.ay, base);
+  const Quadratic den = sum<136>(product<136>(dx, fy), product<136>(dy, fx), true);
+  const Quadratic num = sum<136>(product<136>(ox, fy), product<136>(oy, fx), true);
+  const Cubic nx = sum<204>(product<204>(fixed(s.ax, base), den), product<204>(dx, num));
+  const Cubic ny = sum<204>(product<204>(fixed(s.ay, base), den), product<204>(dy, num));
+  // Units: den counts 2^(2 base), nx and ny 2^(3 base); scaled apart by 2^base so that
+  // neither quotient part overflows long double.
+  const Long d = approximate(den, 0);
+  const double gx = static_cast<double>(std::ldexp(approximate(nx, 0) / d, base));
+  const double gy = static_cast<double>(std::ldexp(approximate(ny, 0) / d, base));
+  // The crossing lies on s: within its box.
+  x = roundCoordinate(s, t, 0, std::isfinite(gx) ? gx : s.ax, std::min(s.ax, s.bx),
+                      std::max(s.ax, s.bx));
+  y = roundCoordinate(s, t, 1, std::isfinite(gy) ? gy : s.ay, std::min(s.ay, s.by),
+                      std::max(s.ay, s.by));
+}
+
+bool segmentMeetsBox(const InputSegment& s, double x, double y, int ex, int ey) {
+  Long error;
+  const Long d = approximateDistance(s, x, y, error);
+  const Long hx = std::ldexp(Long(1), ex), hy = std::ldexp(Long(1), ey);
+  if (d - error > std::sqrt(hx * hx + hy * hy)) return false;
+  if (d + error < std::min(hx, hy)) return true;
+
+  const int base = std::min({baseOf({s.ax, s.ay, s.bx, s.by, x, y}), ex, ey});
+  const Linear ax = fixed(s.ax, base), ay = fixed(s.ay, base);
+  const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Linear px = fixed(x, base), py = fixed(y, base);
+  const Linear wx = power(ex, base), wy = power(ey, base);
+  // a + t d lies in [lo, hi) on each axis, for t in [0, 1].
+  Bound lower{integer(0), integer(1), false}, upper{integer(1), integer(1), false};
+  const auto tighten = [&](const Linear& a, const Linear& d, const Linear& p, const Linear& w) {
+    const Linear lo = sum<68>(sum<68>(p, w, true), a, true);  // lo - a
+    const Linear hi = sum<68>(sum<68>(p, w), a, true);        // hi - a
+    const int sd = detail::sign(d);
+    if (sd == 0) return detail::sign(lo) <= 0 && detail::sign(hi) > 0;
+    Linear positive = d;
+    positive.negative = false;
+    Bound from{lo, positive, false}, to{hi, positive, true};  // d > 0: t in [lo/d, hi/d)
+    if (sd < 0) {                                             // d < 0: t in (hi/d, lo/d]
+      from = {hi, positive, true};
+      to = {lo, positive, false};
+      negate(from.numerator);
+      negate(to.numerator);
+    }
+    const int f = compareBounds(from, lower);
+    if (f > 0 || (f == 0 && from.open)) lower = from;
+    const int u = compareBounds(to, upper);
+    if (u < 0 || (u == 0 && to.open)) upper = to;
+    return true;
+  };
+  if (!tighten(ax, dx, px, wx) || !tighten(ay, dy, py, wy)) return false;
+  const int c = compareBounds(lower, upper);
+  return c < 0 || (c == 0 && !lower.open && !upper.open);
+}
+
+bool withinDistance(const InputSegment& s, double x, double y, int e) {
+  Long error;
+  const Long d = approximateDistance(s, x, y, error), bound = std::ldexp(Long(1), e);
+  if (d + error < bound) return true;
+  if (d - error > bound) return false;
+
+  const int base = std::min(baseOf({s.ax, s.ay, s.bx, s.by, x, y}), e);
+  const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Linear wx = difference(x, s.ax, base), wy = difference(y, s.ay, base);
+  const Linear r = power(e, base);
+  const Quadratic r2 = product<136>(r, r);
+  const Quadratic dot = sum<136>(product<136>(wx, dx), product<136>(wy, dy));
+  const Quadratic length2 = sum<136>(product<136>(dx, dx), product<136>(dy, dy));
+  if (detail::sign(dot) <= 0)
+    return compare(sum<136>(product<136>(wx, wx), product<136>(wy, wy)), r2) <= 0;
+  if (compare(dot, length2) >= 0) {
+    const Linear vx = difference(x, s.bx, base), vy = difference(y, s.by, base);
+    return compare(sum<136>(product<136>(vx, vx), product<136>(vy, vy)), r2) <= 0;
+  }
+  const Quadratic cross = sum<136>(product<136>(dx, wy), product<136>(dy, wx), true);
+  return compare(product<272>(cross, cross), product<272>(r2, length2)) <= 0;
+}
+
+int signAlong(const InputSegment& s, double px, double py, double qx, double qy) {
+  const Long ux = (Long)qx - px, uy = (Long)qy - py;
+  const Long dx = (Long)s.bx - s.ax, dy = (Long)s.by - s.ay;
+  const Long v = ux * dx + uy * dy;
+  const Long error = 8 * kEpsilon * (std::fabs(ux * dx) + std::fabs(uy * dy)) + 8 * kTiny;
+  if (v > error) return 1;
+  if (-v > error) return -1;
+  const int base = baseOf({s.ax, s.ay, s.bx, s.by, px, py, qx, qy});
+  const Quadratic dot =
+      sum<136>(product<136>(difference(qx, px, base), difference(s.bx, s.ax, base)),
+               product<136>(difference(qy, py, base), difference(s.by, s.ay, base)));
+  return detail::sign(dot);
+}
+
+}  // namespace geocdt
