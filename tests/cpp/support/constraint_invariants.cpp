@@ -38,6 +38,9 @@ long double distanceToSegment(const Segment& s, double x, double y) {
   return std::sqrt(ex * ex + ey * ey);
 }
 
+// The spacing of doubles at |v|.
+double spacing(double v) { return std::nextafter(std::fabs(v), INFINITY) - std::fabs(v); }
+
 // Whether (x, y) lies within `bound` of the closed segment, in rationals.
 bool withinExactly(const Segment& s, double x, double y, double bound) {
   const mpq_class ax(s.ax), ay(s.ay), bx(s.bx), by(s.by), px(x), py(y);
@@ -166,16 +169,25 @@ bool inSector(const std::vector<double>& p, std::uint32_t a, std::uint32_t u, st
 
 // How often chain q crosses chain p, counted over the stretches they share; `undefined`
 // tells whether a stretch holds an end of either chain (where a crossing is not defined).
+using Positions = std::vector<std::pair<std::uint32_t, std::size_t>>;  // (vertex, index)
+
+// A chain's vertices with their indices, sorted for lookup.
+Positions positionsOf(const std::vector<std::uint32_t>& chain) {
+  Positions out;
+  for (std::size_t k = 0; k < chain.size(); ++k) out.push_back({chain[k], k});
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 int crossings(const std::vector<double>& p, const std::vector<std::uint32_t>& P,
-              const std::vector<std::uint32_t>& Q, bool& undefined) {
-  std::unordered_map<std::uint32_t, std::size_t> inQ;
-  for (std::size_t k = 0; k < Q.size(); ++k) inQ[Q[k]] = k;
+              const std::vector<std::uint32_t>& Q, const Positions& inQ, bool& undefined) {
   const std::size_t m = P.size(), n = Q.size();
   int count = 0;
   undefined = false;
   for (std::size_t i = 0; i < m; ++i) {
-    const auto found = inQ.find(P[i]);
-    if (found == inQ.end()) continue;
+    const auto found =
+        std::lower_bound(inQ.begin(), inQ.end(), std::pair<std::uint32_t, std::size_t>{P[i], 0});
+    if (found == inQ.end() || found->first != P[i]) continue;
     const std::size_t k = found->second;
     // The shared stretch P[i..j] = Q[k..l], with Q running forward or backward along it.
     int step = 0;
@@ -214,8 +226,10 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   std::vector<Segment> segments;
   std::vector<double> bounds;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
+  std::vector<std::uint32_t> polylineOf;
   std::size_t offset = 0;
-  for (const auto& line : polylines) {
+  for (std::size_t i = 0; i < polylines.size(); ++i) {
+    const std::vector<double>& line = polylines[i];
     const std::size_t n = line.size() / 2;
     for (std::size_t k = 0; k + 1 < n; ++k) {
       const std::uint32_t u = inputToVertex[offset + k], v = inputToVertex[offset + k + 1];
@@ -223,6 +237,7 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
       segments.push_back({line[2 * k], line[2 * k + 1], line[2 * k + 2], line[2 * k + 3]});
       bounds.push_back(chainBound(line[2 * k], line[2 * k + 1], line[2 * k + 2], line[2 * k + 3]));
       ends.push_back({u, v});
+      polylineOf.push_back(static_cast<std::uint32_t>(i));
     }
     offset += n;
   }
@@ -241,26 +256,66 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
                       p[2 * v], ", ", p[2 * v + 1], ") lies within the bound of no input segment");
   }
 
+  // The polylines each constrained edge names, when the mesh has provenance: a chain only
+  // uses edges that name its polyline (with coordinates of very different sizes the bound is
+  // wide across the smaller axis, and other segments' edges would fit it too).
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> named;
+  for (std::size_t i = 0; i < mesh.constraintEdges.size(); ++i) {
+    const std::uint32_t e = mesh.constraintEdges[i];
+    const std::uint32_t u = mesh.triangles[e], v = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
+    const std::uint64_t key = std::uint64_t{std::min(u, v)} << 32 | std::max(u, v);
+    named[key].assign(mesh.sources.begin() + mesh.sourceOffsets[i],
+                      mesh.sources.begin() + mesh.sourceOffsets[i + 1]);
+  }
+  const auto names = [&](std::uint32_t u, std::uint32_t v, std::uint32_t polyline) {
+    if (named.empty()) return true;
+    const auto it = named.find(std::uint64_t{std::min(u, v)} << 32 | std::max(u, v));
+    return it != named.end() &&
+           std::find(it->second.begin(), it->second.end(), polyline) != it->second.end();
+  };
+
+  // How far v strays from segment i in units of the spacing of doubles on each axis there
+  // (snap rounding keeps a chain within one such unit).
+  const auto stray = [&](std::size_t i, std::uint32_t v) {
+    const Segment& s = segments[i];
+    const double gx = spacing(std::max(std::fabs(s.ax), std::fabs(s.bx)));
+    const double gy = spacing(std::max(std::fabs(s.ay), std::fabs(s.by)));
+    return distanceToSegment({s.ax / gx, s.ay / gy, s.bx / gx, s.by / gy}, p[2 * v] / gx,
+                             p[2 * v + 1] / gy);
+  };
   // From each segment's start, constrained edges to vertices within the bound and further
-  // along lead to its end: a search over a graph without cycles (positions increase).
+  // along lead to its end (a graph without cycles: positions increase). Where several chains
+  // would do, the one that strays least is the segment's: the chain snap rounding gives.
   std::vector<std::uint32_t> seenAt(p.size() / 2, 0xFFFFFFFFu), from(p.size() / 2);
-  std::vector<std::uint32_t> frontier;
+  struct Step {
+    long double cost;  // the most a chain to here strays
+    std::uint32_t at, before;
+  };
+  std::vector<Step> queue;
   std::vector<std::vector<std::uint32_t>> chains(segments.size());
+  std::uint32_t searches = 0;
   const auto search = [&](std::size_t i, double bound, bool ordered) {
     const Segment& s = segments[i];
-    const std::uint32_t goal = ends[i].second, mark = static_cast<std::uint32_t>(i);
-    frontier.assign(1, ends[i].first);
-    seenAt[ends[i].first] = mark;
-    for (std::size_t k = 0; k < frontier.size(); ++k) {
-      const std::uint32_t at = frontier[k];
+    const std::uint32_t goal = ends[i].second, mark = searches++;
+    queue.assign(1, {0.0L, ends[i].first, ends[i].first});
+    const auto later = [](const Step& a, const Step& b) { return a.cost > b.cost; };
+    while (!queue.empty()) {
+      std::pop_heap(queue.begin(), queue.end(), later);
+      const Step step = queue.back();
+      queue.pop_back();
+      const std::uint32_t at = step.at;
+      if (seenAt[at] == mark) continue;
+      seenAt[at] = mark;
+      from[at] = step.before;
+      if (at == goal) return true;
       for (const std::uint32_t n : next[at]) {
-        if (seenAt[n] == mark || !within(s, p[2 * n], p[2 * n + 1], bound)) continue;
+        if (seenAt[n] == mark || !names(at, n, polylineOf[i]) ||
+            !within(s, p[2 * n], p[2 * n + 1], bound))
+          continue;
         if (ordered && alongSign(s, p[2 * at], p[2 * at + 1], p[2 * n], p[2 * n + 1]) <= 0)
           continue;
-        seenAt[n] = mark;
-        from[n] = at;
-        if (n == goal) return true;
-        frontier.push_back(n);
+        queue.push_back({std::max(step.cost, stray(i, n)), n, at});
+        std::push_heap(queue.begin(), queue.end(), later);
       }
     }
     return false;
@@ -276,15 +331,51 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
     }
     const std::string what = describe("input segment ", i, " (", s.ax, ", ", s.ay, ")-(", s.bx,
                                       ", ", s.by, ") is not covered by a chain of constrained ");
-    seenAt.assign(seenAt.size(), 0xFFFFFFFFu);
     if (search(i, bounds[i], false))
       return what + "edges in order along it (within the bound, it goes back and forth)";
-    seenAt.assign(seenAt.size(), 0xFFFFFFFFu);
     const double loose = 1e-6 * std::hypot(s.bx - s.ax, s.by - s.ay) + 1e6 * bounds[i];
     if (search(i, loose, false))
       return what + "edges within " + describe(bounds[i]) + " of it (only farther away)";
     return what + "edges lying near it";
   }
+
+  // The output names polylines, not segments: in a tangle a few ulps wide, a segment's chain
+  // can borrow edges of a neighbouring segment of its polyline, or pass one of its own
+  // vertices by, and still keep the bound. So a pair of chains that seems to cross is checked
+  // again with every chain of the two segments (up to 64 each): it fails only when every
+  // choice crosses.
+  const auto everyChain = [&](std::size_t i) {
+    const Segment& s = segments[i];
+    const std::uint32_t a = ends[i].first, b = ends[i].second;
+    std::vector<std::vector<std::uint32_t>> found;
+    std::vector<std::uint32_t> path(1, a);
+    std::vector<std::size_t> choice(1, 0);
+    while (!path.empty() && found.size() < 64) {
+      const std::uint32_t at = path.back();
+      if (at == b) {
+        found.push_back(path);
+        path.pop_back();
+        choice.pop_back();
+        continue;
+      }
+      std::size_t& k = choice.back();
+      while (k < next[at].size()) {
+        const std::uint32_t n = next[at][k];
+        if (names(at, n, polylineOf[i]) && within(s, p[2 * n], p[2 * n + 1], bounds[i]) &&
+            alongSign(s, p[2 * at], p[2 * at + 1], p[2 * n], p[2 * n + 1]) > 0)
+          break;
+        ++k;
+      }
+      if (k == next[at].size()) {
+        path.pop_back();
+        choice.pop_back();
+        continue;
+      }
+      path.push_back(next[at][k++]);
+      choice.push_back(0);
+    }
+    return found;
+  };
 
   // No new crossings: pairs of chains that share a vertex, and, for inputs small enough to
   // compare every pair, pairs of crossing segments whose chains share none.
@@ -304,16 +395,32 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
     return within(t, s.ax, s.ay, bounds[j]) || within(t, s.bx, s.by, bounds[j]) ||
            within(s, t.ax, t.ay, bounds[i]) || within(s, t.bx, t.by, bounds[i]);
   };
+  std::vector<Positions> positions(chains.size());
+  for (std::size_t i = 0; i < chains.size(); ++i) positions[i] = positionsOf(chains[i]);
   for (const auto& [i, j] : pairs) {
     const Meeting how = meeting(segments[i], segments[j]);
     if (how == Meeting::Touching || (how == Meeting::Crossing && crossingNearAnEnd(i, j))) continue;
-    bool undefined = false;
-    const int count = crossings(p, chains[i], chains[j], undefined);
-    const bool wrong = how == Meeting::Apart ? count > 0 : count > 1 || (!undefined && count != 1);
-    if (wrong)
+    int count = 0;
+    const auto wrong = [&](const std::vector<std::uint32_t>& P, const std::vector<std::uint32_t>& Q,
+                           const Positions& inQ) {
+      if (P.empty() || Q.empty()) return true;
+      bool undefined = false;
+      count = crossings(p, P, Q, inQ, undefined);
+      return how == Meeting::Apart ? count > 0 : count > 1 || (!undefined && count != 1);
+    };
+    if (wrong(chains[i], chains[j], positions[j])) {
+      const std::vector<std::vector<std::uint32_t>> is = everyChain(i), js = everyChain(j);
+      bool some = false;
+      for (const auto& Q : js) {
+        const Positions inQ = positionsOf(Q);
+        for (const auto& P : is) some = some || !wrong(P, Q, inQ);
+      }
+      if (some) continue;
+      wrong(chains[i], chains[j], positions[j]);
       return describe("the chains of input segments ", i, " and ", j, " cross ", count,
                       " times, but the segments ",
                       how == Meeting::Apart ? "do not meet" : "cross once");
+    }
   }
   if (segments.size() <= 2000) {
     for (std::size_t i = 0; i < segments.size(); ++i)
