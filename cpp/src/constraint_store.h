@@ -1,8 +1,10 @@
 #pragma once
 // What each constrained edge carries: the input polylines it came from (several where they
-// overlap), one input segment it lies on (to compute crossings from the original geometry),
-// and its net winding, which decides inside and outside. Keyed by the undirected vertex
-// pair, so it survives the flips and re-triangulations that move half-edges around.
+// overlap), the input segments whose chains hold it (the first to compute crossings from the
+// original geometry, all to check the chains), and its net winding, which decides inside and
+// outside. Keyed by the undirected vertex pair, so it survives the flips and
+// re-triangulations that move half-edges around.
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -12,10 +14,10 @@
 namespace geocdt {
 
 struct EdgeSource {
-  std::uint32_t segment = 0;   // index into ConstraintStore::segments
+  std::uint32_t segment = 0;   // the first input segment: index into ConstraintStore::segments
   std::int32_t winding = 0;    // ring traversals along the edge's direction minus against it
   std::uint32_t polyline = 0;  // the first polyline
-  std::int32_t extra = -1;     // index of more polylines in the store, or -1
+  std::int32_t extra = -1;     // index of more polylines and segments in the store, or -1
 };
 
 struct InputSegment {
@@ -34,6 +36,27 @@ class ConstraintStore {
   std::vector<InputSegment> segments;
   std::vector<PendingSegment> pending;
   std::uint32_t polylineCount = 0;
+  // Per polyline: the index of its first segment and whether it is a ring, so that snap
+  // rounding can give each segment its source again (a few bytes per polyline).
+  std::vector<std::uint32_t> firstSegment;
+  std::vector<std::uint8_t> ring;
+
+  // Starts polyline polylineCount; returns its id.
+  std::uint32_t addPolyline(bool isRing) {
+    firstSegment.push_back(static_cast<std::uint32_t>(segments.size()));
+    ring.push_back(isRing);
+    return polylineCount++;
+  }
+
+  // What segment i carries when it alone makes an edge: its polyline and winding.
+  EdgeSource sourceOf(std::uint32_t i) const {
+    const auto after = std::upper_bound(firstSegment.begin(), firstSegment.end(), i);
+    EdgeSource src;
+    src.segment = i;
+    src.polyline = static_cast<std::uint32_t>(after - firstSegment.begin() - 1);
+    src.winding = ring[src.polyline] ? 1 : 0;
+    return src;
+  }
 
   static std::uint64_t key(std::uint32_t u, std::uint32_t v) {
     if (u > v) std::swap(u, v);
@@ -51,9 +74,11 @@ class ConstraintStore {
     EdgeSource& e = *entry;
     e.winding += src.winding;
     addPolyline(e, src.polyline);
+    add(e, src.segment, &Extra::segments, e.segment);
     if (src.extra >= 0) {
-      const std::vector<std::uint32_t> more = extras_[src.extra];
-      for (const std::uint32_t p : more) addPolyline(e, p);
+      const Extra more = extras_[src.extra];
+      for (const std::uint32_t p : more.polylines) addPolyline(e, p);
+      for (const std::uint32_t i : more.segments) add(e, i, &Extra::segments, e.segment);
     }
   }
 
@@ -86,7 +111,16 @@ class ConstraintStore {
   void forEachPolyline(const EdgeSource& e, F&& f) const {
     f(e.polyline);
     if (e.extra >= 0)
-      for (const std::uint32_t p : extras_[e.extra]) f(p);
+      for (const std::uint32_t p : extras_[e.extra].polylines) f(p);
+  }
+
+  // Every input segment whose chain holds the edge (several where segments overlap or were
+  // routed through the same vertices).
+  template <typename F>
+  void forEachSegment(const EdgeSource& e, F&& f) const {
+    f(e.segment);
+    if (e.extra >= 0)
+      for (const std::uint32_t i : extras_[e.extra].segments) f(i);
   }
 
   std::size_t edgeCount() const { return edges_.size(); }
@@ -96,28 +130,39 @@ class ConstraintStore {
     segments.clear();
     pending.clear();
     polylineCount = 0;
+    firstSegment.clear();
+    ring.clear();
   }
 
  private:
-  void addPolyline(EdgeSource& e, std::uint32_t p) {
-    if (e.polyline == p) return;
+  // What an edge carries beyond its first polyline and segment.
+  struct Extra {
+    std::vector<std::uint32_t> polylines, segments;
+  };
+
+  void addPolyline(EdgeSource& e, std::uint32_t p) { add(e, p, &Extra::polylines, e.polyline); }
+
+  // Adds v to the list of e's extra when it is neither `first` nor listed.
+  void add(EdgeSource& e, std::uint32_t v, std::vector<std::uint32_t> Extra::*list,
+           std::uint32_t first) {
+    if (first == v) return;
     if (e.extra < 0) {
       e.extra = static_cast<std::int32_t>(extras_.size());
       extras_.emplace_back();
     }
-    std::vector<std::uint32_t>& list = extras_[e.extra];
-    for (const std::uint32_t q : list)
-      if (q == p) return;
-    list.push_back(p);
+    std::vector<std::uint32_t>& values = extras_[e.extra].*list;
+    for (const std::uint32_t q : values)
+      if (q == v) return;
+    values.push_back(v);
   }
   std::int32_t copyExtra(std::int32_t from) {
-    const std::vector<std::uint32_t> copy = extras_[from];
+    const Extra copy = extras_[from];
     extras_.push_back(copy);
     return static_cast<std::int32_t>(extras_.size() - 1);
   }
 
   EdgeMap<EdgeSource> edges_;
-  std::vector<std::vector<std::uint32_t>> extras_;
+  std::vector<Extra> extras_;
 };
 
 }  // namespace geocdt

@@ -247,25 +247,37 @@ void roundedCrossing(const InputSegment& s, const InputSegment& t, double& x, do
                       std::max(s.ax, s.bx));
   y = roundCoordinate(s, t, 1, std::isfinite(gy) ? gy : s.ay, std::min(s.ay, s.by),
                       std::max(s.ay, s.by));
+  x += 0.0;  // -0 becomes 0: a vertex at the origin prints as one
+  y += 0.0;
 }
 
-bool segmentMeetsBox(const InputSegment& s, double x, double y, int ex, int ey) {
+bool segmentMeetsCell(const InputSegment& s, double x, double y) {
+  // The cell is [x - 2^xl, x + 2^xh) x [y - 2^yl, y + 2^yh): half the spacings to the
+  // neighbouring doubles.
+  const auto halfGap = [](double v, double toward) {
+    int exponent = 0;
+    std::frexp(std::fabs(std::nextafter(v, toward) - v), &exponent);
+    return exponent - 2;
+  };
+  const int xl = halfGap(x, -INFINITY), xh = halfGap(x, INFINITY);
+  const int yl = halfGap(y, -INFINITY), yh = halfGap(y, INFINITY);
   Long error;
   const Long d = approximateDistance(s, x, y, error);
-  const Long hx = std::ldexp(Long(1), ex), hy = std::ldexp(Long(1), ey);
-  if (d - error > std::sqrt(hx * hx + hy * hy)) return false;
-  if (d + error < std::min(hx, hy)) return true;
+  const Long far =
+      std::hypot(std::ldexp(Long(1), std::max(xl, xh)), std::ldexp(Long(1), std::max(yl, yh)));
+  const Long near = std::ldexp(Long(1), std::min({xl, xh, yl, yh}));
+  if (d - error > far) return false;
+  if (d + error < near) return true;
 
-  const int base = std::min({baseOf({s.ax, s.ay, s.bx, s.by, x, y}), ex, ey});
+  const int base = std::min({baseOf({s.ax, s.ay, s.bx, s.by, x, y}), xl, xh, yl, yh});
   const Linear ax = fixed(s.ax, base), ay = fixed(s.ay, base);
   const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
   const Linear px = fixed(x, base), py = fixed(y, base);
-  const Linear wx = power(ex, base), wy = power(ey, base);
   // a + t d lies in [lo, hi) on each axis, for t in [0, 1].
   Bound lower{integer(0), integer(1), false}, upper{integer(1), integer(1), false};
-  const auto tighten = [&](const Linear& a, const Linear& d, const Linear& p, const Linear& w) {
-    const Linear lo = sum<68>(sum<68>(p, w, true), a, true);  // lo - a
-    const Linear hi = sum<68>(sum<68>(p, w), a, true);        // hi - a
+  const auto tighten = [&](const Linear& a, const Linear& d, const Linear& p, int l, int h) {
+    const Linear lo = sum<68>(sum<68>(p, power(l, base), true), a, true);  // lo - a
+    const Linear hi = sum<68>(sum<68>(p, power(h, base)), a, true);        // hi - a
     const int sd = detail::sign(d);
     if (sd == 0) return detail::sign(lo) <= 0 && detail::sign(hi) > 0;
     Linear positive = d;
@@ -283,7 +295,7 @@ bool segmentMeetsBox(const InputSegment& s, double x, double y, int ex, int ey) 
     if (u < 0 || (u == 0 && to.open)) upper = to;
     return true;
   };
-  if (!tighten(ax, dx, px, wx) || !tighten(ay, dy, py, wy)) return false;
+  if (!tighten(ax, dx, px, xl, xh) || !tighten(ay, dy, py, yl, yh)) return false;
   const int c = compareBounds(lower, upper);
   return c < 0 || (c == 0 && !lower.open && !upper.open);
 }

@@ -19,15 +19,24 @@ inline double spacingAt(double v) {
 // The exponent e of the power of two 2^e = spacingAt(v).
 int spacingExponent(double v);
 
+// The exponent e of the documented bound 2^e that every chain keeps from its input segment:
+// two spacings of doubles at the segment's largest |coordinate|.
+inline int chainBoundExponent(const InputSegment& s) {
+  return spacingExponent(std::fmax(std::fmax(std::fabs(s.ax), std::fabs(s.ay)),
+                                   std::fmax(std::fabs(s.bx), std::fabs(s.by)))) +
+         1;
+}
+
 // Where the lines of s and t cross (s and t not parallel), each coordinate rounded to the
 // nearest double, halfway cases upward: the point whose rounding box [x - below/2,
 // x + above/2) x [y - below/2, y + above/2) holds the crossing (below and above being the
 // spacings to the neighbouring doubles).
 void roundedCrossing(const InputSegment& s, const InputSegment& t, double& x, double& y);
 
-// Whether the closed segment s meets the half-open box [x - 2^ex, x + 2^ex) x
-// [y - 2^ey, y + 2^ey).
-bool segmentMeetsBox(const InputSegment& s, double x, double y, int ex, int ey);
+// Whether the closed segment s meets the rounding cell of (x, y): the half-open box of the
+// points that round to it, from halfway to the double below to halfway to the double above
+// on each axis (halfway cases upward, as roundedCrossing does).
+bool segmentMeetsCell(const InputSegment& s, double x, double y);
 
 // Whether (x, y) lies within 2^e of the closed segment s (Euclidean distance).
 bool withinDistance(const InputSegment& s, double x, double y, int e);

@@ -13,13 +13,35 @@
 
 namespace geocdt {
 
+// How a constrained edge that the segment crosses is met.
+enum class Crossings : std::uint8_t {
+  // At the crossing of the two input segments, computed and checked to fit (the usual way,
+  // which can get lost in tangles of vertices a few ulps apart: it then gives up).
+  Computed,
+  // At the snap-rounded crossing of the two edges: for the links of snap-rounded chains,
+  // which should never cross, so this only mends what the rounding grid's seams leave.
+  Snapped,
+};
+
+// What insert() did.
+enum class Outcome : std::uint8_t {
+  Inserted,
+  GaveUp,  // the Computed way went round in circles: the caller snap-rounds instead
+  Broken,  // a broken invariant: error() says which
+};
+
 class SegmentInserter {
  public:
-  explicit SegmentInserter(Delaunay& d) : d_(d) {}
+  explicit SegmentInserter(Delaunay& d, Crossings crossings = Crossings::Computed)
+      : d_(d), crossings_(crossings) {}
 
-  // Inserts u -> v carrying src. On failure the status names nothing: the caller adds the
-  // polyline and segment.
-  Status insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
+  // Inserts u -> v carrying src.
+  Outcome insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
+  const Status& error() const { return error_; }
+  // The input segments whose constraints met a crossing since the last clearTouchedSegments(): the
+  // only ones whose chains may have left their segment.
+  const std::vector<std::uint32_t>& touchedSegments() const { return touchedSegments_; }
+  void clearTouchedSegments() { touchedSegments_.clear(); }
 
  private:
   struct Piece {
@@ -40,8 +62,15 @@ class SegmentInserter {
   // Resolves a crossing with constrained half-edge h; returns the vertex where the piece
   // must now pass, or kGhost when the crossed constraint was re-routed instead.
   std::uint32_t resolveCrossing(const Piece& piece, std::int32_t h);
+  // The same in Crossings::Snapped mode; kGhost with error_ set when no vertex keeps the
+  // guarantee (never seen).
+  std::uint32_t snapCrossing(const Piece& piece, std::int32_t h, bool& failed);
+  Outcome broken(const char* what);
 
   Delaunay& d_;
+  Crossings crossings_;
+  Status error_;
+  std::vector<std::uint32_t> touchedSegments_;
   std::vector<Piece> pieces_;
   struct QueuedEdge {
     std::uint32_t u, v;
@@ -49,9 +78,8 @@ class SegmentInserter {
   };
   std::vector<std::int32_t> crossed_, touched_;
   std::deque<QueuedEdge> queue_;
-  std::int32_t hint_ = -1;
-  EdgeMap<std::uint32_t> met_;  // input segment pair -> the vertex where they cross  // a half-edge
-                                // out of where the next piece likely starts
+  std::int32_t hint_ = -1;      // a half-edge out of where the next piece likely starts
+  EdgeMap<std::uint32_t> met_;  // input segment pair -> the vertex where they cross
 };
 
 }  // namespace geocdt

@@ -93,12 +93,12 @@ TEST(ExactGeometry, HalfwayCrossingsRoundUp) {
   EXPECT_EQ(x, -big);
 }
 
-// The exact box test: the segment meets [x - wx, x + wx) x [y - wy, y + wy).
-bool meetsBoxExactly(const InputSegment& s, double x, double y, int ex, int ey) {
-  const mpq_class wx =
-      mpq_class(1) * (ex >= 0 ? mpq_class(mpz_class(1) << ex) : mpq_class(1, mpz_class(1) << -ex));
-  const mpq_class wy = ey >= 0 ? mpq_class(mpz_class(1) << ey) : mpq_class(1, mpz_class(1) << -ey);
-  const mpq_class lo[2] = {q(x) - wx, q(y) - wy}, hi[2] = {q(x) + wx, q(y) + wy};
+// The exact cell test: the segment meets [(x + below) / 2, (x + above) / 2) on each axis.
+bool meetsCellExactly(const InputSegment& s, double x, double y) {
+  const mpq_class lo[2] = {(q(x) + q(std::nextafter(x, -INFINITY))) / 2,
+                           (q(y) + q(std::nextafter(y, -INFINITY))) / 2};
+  const mpq_class hi[2] = {(q(x) + q(std::nextafter(x, INFINITY))) / 2,
+                           (q(y) + q(std::nextafter(y, INFINITY))) / 2};
   const mpq_class a[2] = {q(s.ax), q(s.ay)}, d[2] = {q(s.bx) - q(s.ax), q(s.by) - q(s.ay)};
   // t ranges over [from, to] with open flags.
   mpq_class from = 0, to = 1;
@@ -120,7 +120,7 @@ bool meetsBoxExactly(const InputSegment& s, double x, double y, int ex, int ey) 
   return from < to || (from == to && !fromOpen && !toOpen);
 }
 
-TEST(ExactGeometry, SegmentMeetsBoxAgreesWithRationals) {
+TEST(ExactGeometry, SegmentMeetsCellAgreesWithRationals) {
   Coordinates c(2);
   testing::Random r(3);
   int met = 0, missed = 0;
@@ -132,12 +132,8 @@ TEST(ExactGeometry, SegmentMeetsBoxAgreesWithRationals) {
     if (!std::isfinite(x) || !std::isfinite(y)) continue;
     for (int k = int(r.next() % 4); k > 0; --k)
       x = std::nextafter(x, r.next() % 2 ? 1e300 : -1e300);
-    const int ex =
-        spacingExponent(std::max(std::fabs(s.ax), std::fabs(s.bx))) - 1 + int(r.next() % 3) - 1;
-    const int ey =
-        spacingExponent(std::max(std::fabs(s.ay), std::fabs(s.by))) - 1 + int(r.next() % 3) - 1;
-    const bool expected = meetsBoxExactly(s, x, y, ex, ey);
-    ASSERT_EQ(segmentMeetsBox(s, x, y, ex, ey), expected)
+    const bool expected = meetsCellExactly(s, x, y);
+    ASSERT_EQ(segmentMeetsCell(s, x, y), expected)
         << s.ax << " " << s.ay << " " << s.bx << " " << s.by << " at " << x << " " << y;
     (expected ? met : missed) += 1;
   }
@@ -145,19 +141,23 @@ TEST(ExactGeometry, SegmentMeetsBoxAgreesWithRationals) {
   EXPECT_GT(missed, 1000);
 }
 
-TEST(ExactGeometry, BoxBoundariesAreHalfOpen) {
-  // The box [-1, 1) x [-1, 1) around the origin: a segment along y = 1 misses it, one along
-  // y = -1 meets it, and one through the corner (1, 1) only misses it.
-  EXPECT_FALSE(segmentMeetsBox({-5, 1, 5, 1}, 0, 0, 0, 0));
-  EXPECT_TRUE(segmentMeetsBox({-5, -1, 5, -1}, 0, 0, 0, 0));
-  EXPECT_FALSE(segmentMeetsBox({0, 2, 2, 0}, 0, 0, 0, 0));
-  EXPECT_TRUE(segmentMeetsBox({-2, 0, 0, -2}, 0, 0, 0, 0));
-  EXPECT_FALSE(segmentMeetsBox({1, -3, 1, 3}, 0, 0, 0, 0));
-  EXPECT_TRUE(segmentMeetsBox({-1, -3, -1, 3}, 0, 0, 0, 0));
-  // Subnormal boxes: half the smallest double is not a double, but a box size.
+TEST(ExactGeometry, CellsAreHalfOpen) {
+  // Above 2^53 the doubles are the even integers: the cell of (2^53 + 2, 2^53 + 2) is
+  // [2^53 + 1, 2^53 + 3) on each axis. Segments that touch it at one corner only: the lower
+  // one belongs to it, the others do not.
+  const double big = 0x1p53, c = big + 2;
+  EXPECT_TRUE(segmentMeetsCell({big - 2, big + 4, big + 2, big}, c, c));       // (b+1, b+1)
+  EXPECT_FALSE(segmentMeetsCell({big + 2, big + 4, big + 4, big + 2}, c, c));  // (b+3, b+3)
+  EXPECT_FALSE(segmentMeetsCell({big, big + 2, big + 2, big + 4}, c, c));      // (b+1, b+3)
+  EXPECT_FALSE(segmentMeetsCell({big + 2, big, big + 4, big + 2}, c, c));      // (b+3, b+1)
+  // At a binade's start the cell reaches half as far down: (2^53, 2^53) owns
+  // [2^53 - 1/2, 2^53 + 1) on each axis, so its lower corner is (2^53 - 1/2, 2^53 - 1/2).
+  EXPECT_TRUE(segmentMeetsCell({big - 1, big, big, big - 1}, big, big));
+  EXPECT_FALSE(segmentMeetsCell({big - 2, big, big, big - 2}, big, big));
+  // Subnormal cells: half the smallest double is not a double, but a cell size.
   const double tiny = std::numeric_limits<double>::denorm_min();
-  EXPECT_TRUE(segmentMeetsBox({-tiny, -tiny, tiny, tiny}, 0, 0, -1075, -1075));
-  EXPECT_FALSE(segmentMeetsBox({tiny, -tiny, tiny, tiny}, 0, 0, -1075, -1075));
+  EXPECT_TRUE(segmentMeetsCell({-tiny, -tiny, tiny, tiny}, 0, 0));
+  EXPECT_FALSE(segmentMeetsCell({tiny, -tiny, tiny, tiny}, 0, 0));
 }
 
 TEST(ExactGeometry, DistanceAndOrderAgreeWithRationals) {
