@@ -285,6 +285,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   // The crossing of the two original input segments, unless rounding and earlier bends put
   // it outside the two pieces that actually cross here: then the crossing of the pieces.
   double x = 0, y = 0;  // the crossing point, once found
+  bool ofPieces = false;  // found from the pieces: the input segments may not cross at all
   const auto distance = [&](std::uint32_t v) { return std::hypot(p[2 * v] - x, p[2 * v + 1] - y); };
   // When no crossing point fits (the two are collinear within rounding, and the crossing of
   // their lines means nothing), the constraints meet at one of the four ends instead: the
@@ -338,6 +339,7 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   } else if (!lineCrossing(ab, cd, x, y) || !fits(x, y)) {
     if (!lineCrossing(segmentOf(piece.a, piece.b), segmentOf(r, l), x, y) || !fits(x, y))
       return meetAtAnEnd();
+    ofPieces = true;
   }
   const auto strictlyLeft = [&](std::uint32_t u, std::uint32_t v) {
     return orient2d(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], x, y) == Sign::Positive;
@@ -373,8 +375,9 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     ++d_.stats.crossings;
     ++d_.stats.inserted;
     // The crossed constraint bends inside its own two triangles, where no vertex lies, and
-    // the two segments cross at v: nothing for chainsKeepTheGuarantee to check here.
-    touchedSegments_.resize(untouched);
+    // (found from them) the two segments cross at v: nothing for chainsKeepTheGuarantee to
+    // check here.
+    if (!ofPieces) touchedSegments_.resize(untouched);
     return v;
   }
   // Otherwise both constraints pass through one vertex w: the one the point is (nearly)
