@@ -434,6 +434,17 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   return "";
 }
 
+bool withinBoundOfPolyline(const std::vector<double>& line, double x0, double y0, double x1,
+                           double y1) {
+  for (std::size_t k = 0; k + 3 < line.size(); k += 2) {
+    const Segment s{line[k], line[k + 1], line[k + 2], line[k + 3]};
+    if (s.ax == s.bx && s.ay == s.by) continue;
+    const double bound = chainBound(s.ax, s.ay, s.bx, s.by);
+    if (within(s, x0, y0, bound) && within(s, x1, y1, bound)) return true;
+  }
+  return false;
+}
+
 bool insideEvenOdd(const Polylines& polylines, double x, double y) {
   bool inside = false;
   for (const auto& line : polylines) {

@@ -29,6 +29,10 @@ double chainBound(double ax, double ay, double bx, double by);
 std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
                              const std::vector<std::uint32_t>& inputToVertex);
 
+// Whether both points lie within the bound of one segment of the polyline (exactly).
+bool withinBoundOfPolyline(const std::vector<double>& line, double x0, double y0, double x1,
+                           double y1);
+
 // Even-odd inside test of a point against the rings among the polylines, by ray casting.
 bool insideEvenOdd(const Polylines& polylines, double x, double y);
 
