@@ -120,7 +120,7 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     const where = `edge ${e} (${ax},${ay})-(${bx},${by})`;
     assert.ok(may.length > 0, `constrained ${where} lies within the bound of no input segment`);
     for (const j of named) {
-      assert.ok(may.includes(j), `${where} names polyline ${j} but lies beyond its segments' bound`);
+      assert.ok(may.includes(j), `${where} names polyline ${j}, beyond its segments' bound`);
     }
     for (const j of must) assert.ok(named.includes(j), `${where} lies on polyline ${j} but names only ${named}`);
   });
