@@ -96,7 +96,8 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
   // containing it, so none lies off every input segment and overlaps name every polyline.
   const { constraintEdges, sourceOffsets, sources } = r;
   assert.equal(constraintEdges.length, edges.length, 'one provenance entry per constrained edge');
-  assert.equal(sourceOffsets.length, constraintEdges.length + 1, 'sourceOffsets has one more entry');
+  assert.equal(sourceOffsets.length, constraintEdges.length + 1,
+    'sourceOffsets has one more entry');
   assert.equal(sourceOffsets[sourceOffsets.length - 1], sources.length);
   const segments = polylines.map(segmentsOf);
   const boxes = polylines.map(boxOf);
@@ -112,7 +113,8 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     const may = [], must = [];
     segments.forEach((list, j) => {
       const [minX, minY, maxX, maxY] = boxes[j];
-      if (Math.min(ax, bx) < minX || Math.max(ax, bx) > maxX || Math.min(ay, by) < minY || Math.max(ay, by) > maxY) return;
+      if (Math.min(ax, bx) < minX || Math.max(ax, bx) > maxX) return;
+      if (Math.min(ay, by) < minY || Math.max(ay, by) > maxY) return;
       if (list.some((s) => withinBound(s, ax, ay) && withinBound(s, bx, by))) may.push(j);
       if (list.some((s) => exactlyOn(s, ax, ay) && exactlyOn(s, bx, by))) must.push(j);
     });
@@ -122,7 +124,9 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     for (const j of named) {
       assert.ok(may.includes(j), `${where} names polyline ${j}, beyond its segments' bound`);
     }
-    for (const j of must) assert.ok(named.includes(j), `${where} lies on polyline ${j} but names only ${named}`);
+    for (const j of must) {
+      assert.ok(named.includes(j), `${where} lies on polyline ${j} but names only ${named}`);
+    }
   });
 }
 
@@ -146,7 +150,8 @@ export function insideRings(rings, px, py, fillRule = 'evenodd') {
 export function checkInsideFlags(r, input, fillRule = 'evenodd') {
   const { points, triangles, inside } = r;
   assert.equal(inside.length, triangles.length / 3, 'one inside flag per triangle');
-  const rings = (input.polylines ?? []).filter(isRing).map((l) => ({ box: boxOf(l), segments: segmentsOf(l) }));
+  const rings = (input.polylines ?? []).filter(isRing)
+    .map((l) => ({ box: boxOf(l), segments: segmentsOf(l) }));
   for (let t = 0; t < inside.length; t++) {
     let cx = 0, cy = 0;
     for (let k = 0; k < 3; k++) {
