@@ -59,12 +59,36 @@ class SegmentInserter {
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v);  // half-edge u -> v, or -1
   void markConstrained(std::int32_t e, const EdgeSource& src);
   bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);
-  // Resolves a crossing with constrained half-edge h; returns the vertex where the piece
-  // must now pass, or kGhost when the crossed constraint was re-routed instead.
+  // A piece crossing constrained half-edge h = r -> l, whose triangles' apexes are c1 and c2,
+  // and the input segments ab and cd of the two.
+  struct Crossing {
+    Piece piece;
+    std::int32_t h;
+    std::uint32_t r, l, c1, c2;
+    InputSegment ab, cd;
+    std::uint64_t pair;  // the two input segments' key
+
+    // Whether (x, y) lies beyond vertex u along g's direction (sign), between lo and hi.
+    static int beyond(const double* p, const InputSegment& g, double x, double y, std::uint32_t u);
+    static bool between(const double* p, const InputSegment& g, double x, double y,
+                        std::uint32_t lo, std::uint32_t hi);
+    // Whether (x, y) lies between the piece's ends along ab and the edge's along cd.
+    bool fits(const double* p, double x, double y) const;
+  };
+  // Resolves a crossing with constrained half-edge h (computed_crossing.cpp); returns the
+  // vertex where the piece must now pass, or kGhost when the crossed constraint was
+  // re-routed instead. Its steps: split the crossed edge at the rounded crossing, route
+  // both through one vertex, or meet at an end (whose (x, y) is the crossing last tried).
   std::uint32_t resolveCrossing(const Piece& piece, std::int32_t h);
-  // The same in Crossings::Snapped mode; kGhost with error_ set when no vertex keeps the
-  // guarantee (never seen).
+  std::uint32_t split(const Crossing& c, double x, double y);
+  std::uint32_t meetAtAnEnd(const Crossing& c, double x, double y);
+  // The same in Crossings::Snapped mode (snap_rounding.cpp); kGhost with error_ set when no
+  // vertex keeps the guarantee (never seen).
   std::uint32_t snapCrossing(const Piece& piece, std::int32_t h, bool& failed);
+  // A vertex at (x, y): a new one, or the one already there; failed when location failed.
+  std::uint32_t addCrossingVertex(double x, double y, bool& failed);
+  // The constrained edge r-l, if it still is one, becomes the pieces r -> w -> l to insert.
+  void bendThrough(std::uint32_t r, std::uint32_t l, std::uint32_t w);
   Outcome broken(const char* what);
 
   Delaunay& d_;

@@ -143,6 +143,51 @@ struct Crossing {
 
 }  // namespace
 
+// Crossings::Snapped: links of snap-rounded chains never cross where the spacing of doubles
+// is even; where it is not, two links may. Then both pass through the vertex of the
+// rounding cell of their crossing (ISR's step), which must keep the guarantee for both input
+// segments, or this is a bug to report.
+std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, bool& failed) {
+  const ConstraintStore& store = d_.constraints;
+  const std::uint32_t r = d_.topo.tri[h], l = d_.topo.tri[nextEdge(h)];
+  const EdgeSource* crossed = store.find(r, l);
+  if (!crossed) {
+    failed = true;
+    error_ = {StatusCode::InternalError, "a constrained edge without a source"};
+    return kGhost;
+  }
+  const std::uint32_t crossedSegment = crossed->segment;
+  const double* p = d_.xy.data();
+  const InputSegment link{p[2 * piece.a], p[2 * piece.a + 1], p[2 * piece.b], p[2 * piece.b + 1]};
+  const InputSegment edge{p[2 * r], p[2 * r + 1], p[2 * l], p[2 * l + 1]};
+  double x, y;
+  roundedCrossing(link, edge, x, y);
+  const std::uint32_t w = addCrossingVertex(x, y, failed);
+  if (failed) {
+    error_ = d_.lastError();
+    return kGhost;
+  }
+  p = d_.xy.data();
+  const double wx = p[2 * w], wy = p[2 * w + 1];
+  const auto keeps = [&](const InputSegment& g, std::uint32_t from, std::uint32_t to) {
+    if (!withinDistance(g, wx, wy, chainBoundExponent(g))) return false;
+    if (w == from || w == to) return true;
+    return signAlong(g, p[2 * from], p[2 * from + 1], wx, wy) *
+               signAlong(g, wx, wy, p[2 * to], p[2 * to + 1]) >
+           0;
+  };
+  if (!keeps(store.segments[piece.src.segment], piece.a, piece.b) ||
+      !keeps(store.segments[crossedSegment], r, l)) {
+    failed = true;
+    error_ = {StatusCode::InternalError,
+              "snap rounding found no vertex within the bound where two links cross"};
+    return kGhost;
+  }
+  // The crossed link bends through w, unless w split it already (it lay on it).
+  if (w != r && w != l) bendThrough(r, l, w);
+  return w == piece.a || w == piece.b ? kGhost : w;
+}
+
 Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& options) {
   Delaunay fresh(options);
   std::vector<std::uint32_t> ids(keep);
