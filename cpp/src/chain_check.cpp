@@ -3,16 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
+#include "edge_map.h"
 #include "exact_geometry.h"
 #include "geocdt/predicates.h"
 
 namespace geocdt {
 
 namespace {
-
-using Long = long double;
 
 // How two input segments meet: not at all, in one point inside both, or otherwise (at an
 // end, or overlapping), where a crossing of their chains means nothing.
@@ -44,25 +42,27 @@ bool crossingNearAnEnd(const InputSegment& s, const InputSegment& t) {
          withinDistance(s, t.ax, t.ay, es) || withinDistance(s, t.bx, t.by, es);
 }
 
+// The chains of the segments checked, found on demand. Maps keyed by vertex or segment, not
+// arrays over all vertices: a call into a large triangulation checks a few chains.
 class Chains {
  public:
-  explicit Chains(Delaunay& d) : d_(d), seen_(d.vertexCount(), 0), from_(d.vertexCount()) {}
+  explicit Chains(Delaunay& d) : d_(d) {}
 
   // The chain of segment i, empty when it has none; cached.
   const std::vector<std::uint32_t>& of(std::uint32_t i) {
-    const auto found = chains_.find(i);
-    if (found != chains_.end()) return found->second;
-    std::vector<std::uint32_t>& chain = chains_[i];
-    search(i, chain);
-    return chain;
+    if (const std::uint32_t* k = index_.find(i)) return chains_[*k];
+    index_.insert(i, static_cast<std::uint32_t>(chains_.size()));
+    chains_.emplace_back();
+    search(i, chains_.back());
+    return chains_.back();
   }
 
   // A half-edge out of each vertex of the chains found so far.
-  std::int32_t edgeOutOf(std::uint32_t v) const { return out_.at(v); }
+  std::int32_t edgeOutOf(std::uint32_t v) { return *out_.find(v); }
 
  private:
   struct Step {
-    Long cost;  // the most a chain to here strays
+    double cost;  // the most a chain to here strays
     std::uint32_t at, before;
     std::int32_t out;  // a half-edge out of `at`
   };
@@ -85,17 +85,18 @@ class Chains {
     const Hit a = d_.locate(s.ax, s.ay, true), b = d_.locate(s.bx, s.by, true);
     if (a.kind != Hit::Kind::Vertex || b.kind != Hit::Kind::Vertex) return;
     const std::uint32_t first = d_.topo.tri[a.edge], last = d_.topo.tri[b.edge];
-    const Long gx = spacingAt(std::fmax(std::fabs(s.ax), std::fabs(s.bx)));
-    const Long gy = spacingAt(std::fmax(std::fabs(s.ay), std::fabs(s.by)));
-    const Long dx = (s.bx - (Long)s.ax) / gx, dy = (s.by - (Long)s.ay) / gy;
-    const Long length2 = dx * dx + dy * dy;
+    // Spacings are powers of two: dividing by them is exact.
+    const double gx = spacingAt(std::fmax(std::fabs(s.ax), std::fabs(s.bx)));
+    const double gy = spacingAt(std::fmax(std::fabs(s.ay), std::fabs(s.by)));
+    const double dx = (s.bx - s.ax) / gx, dy = (s.by - s.ay) / gy;
+    const double length2 = dx * dx + dy * dy;
     const double* p = d_.xy.data();
     const auto stray = [&](std::uint32_t v) {
-      const Long wx = (p[2 * v] - (Long)s.ax) / gx, wy = (p[2 * v + 1] - (Long)s.ay) / gy;
-      const Long t = std::clamp((wx * dx + wy * dy) / length2, Long(0), Long(1));
+      const double wx = (p[2 * v] - s.ax) / gx, wy = (p[2 * v + 1] - s.ay) / gy;
+      const double t = std::clamp((wx * dx + wy * dy) / length2, 0.0, 1.0);
       return std::hypot(wx - t * dx, wy - t * dy);
     };
-    const std::uint32_t mark = ++stamp_;
+    EdgeMap<std::uint32_t> settled;  // vertex -> the one before it on the chain
     std::vector<Step> queue(1, {0, first, first, a.edge});
     const auto later = [](const Step& x, const Step& y) { return x.cost > y.cost; };
     const Topology& topo = d_.topo;
@@ -103,12 +104,10 @@ class Chains {
       std::pop_heap(queue.begin(), queue.end(), later);
       const Step step = queue.back();
       queue.pop_back();
-      if (seen_[step.at] == mark) continue;
-      seen_[step.at] = mark;
-      from_[step.at] = step.before;
-      out_[step.at] = step.out;
+      if (!settled.insert(step.at, step.before).second) continue;
+      out_.insert(step.at, step.out);
       if (step.at == last) {
-        for (std::uint32_t v = last; v != first; v = from_[v]) chain.push_back(v);
+        for (std::uint32_t v = last; v != first; v = *settled.find(v)) chain.push_back(v);
         chain.push_back(first);
         std::reverse(chain.begin(), chain.end());
         return;
@@ -116,7 +115,7 @@ class Chains {
       std::int32_t e = step.out;
       do {
         const std::uint32_t n = topo.tri[nextEdge(e)];
-        if (topo.fixed[e] && n != kGhost && seen_[n] != mark && names(step.at, n, polyline) &&
+        if (topo.fixed[e] && n != kGhost && !settled.find(n) && names(step.at, n, polyline) &&
             withinDistance(s, p[2 * n], p[2 * n + 1], bound) &&
             signAlong(s, p[2 * step.at], p[2 * step.at + 1], p[2 * n], p[2 * n + 1]) > 0) {
           queue.push_back({std::max(step.cost, stray(n)), n, step.at, topo.adj[e]});
@@ -128,10 +127,9 @@ class Chains {
   }
 
   Delaunay& d_;
-  std::vector<std::uint32_t> seen_, from_;
-  std::unordered_map<std::uint32_t, std::int32_t> out_;
-  std::uint32_t stamp_ = 0;
-  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> chains_;
+  EdgeMap<std::int32_t> out_;
+  EdgeMap<std::uint32_t> index_;  // segment -> its chain in chains_
+  std::vector<std::vector<std::uint32_t>> chains_;
 };
 
 // Whether ray a->w lies strictly inside the counter-clockwise sector from ray a->u to a->v.
@@ -185,6 +183,7 @@ int crossings(const double* p, const std::vector<std::uint32_t>& P,
 }  // namespace
 
 bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments) {
+  if (segments.empty()) return true;
   std::sort(segments.begin(), segments.end());
   segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
   const ConstraintStore& store = d.constraints;

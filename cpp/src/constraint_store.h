@@ -42,7 +42,7 @@ class ConstraintStore {
   std::vector<std::uint8_t> ring;
 
   // Starts polyline polylineCount; returns its id.
-  std::uint32_t addPolyline(bool isRing) {
+  std::uint32_t startPolyline(bool isRing) {
     firstSegment.push_back(static_cast<std::uint32_t>(segments.size()));
     ring.push_back(isRing);
     return polylineCount++;
@@ -73,12 +73,10 @@ class ConstraintStore {
     }
     EdgeSource& e = *entry;
     e.winding += src.winding;
-    addPolyline(e, src.polyline);
-    add(e, src.segment, &Extra::segments, e.segment);
+    add(e, {src.polyline, src.segment});
     if (src.extra >= 0) {
-      const Extra more = extras_[src.extra];
-      for (const std::uint32_t p : more.polylines) addPolyline(e, p);
-      for (const std::uint32_t i : more.segments) add(e, i, &Extra::segments, e.segment);
+      const std::vector<Member> more = extras_[src.extra];
+      for (const Member m : more) add(e, m);
     }
   }
 
@@ -107,11 +105,18 @@ class ConstraintStore {
     return u < v ? -e->winding : e->winding;
   }
 
+  // Every polyline of the edge, once.
   template <typename F>
   void forEachPolyline(const EdgeSource& e, F&& f) const {
     f(e.polyline);
-    if (e.extra >= 0)
-      for (const std::uint32_t p : extras_[e.extra].polylines) f(p);
+    if (e.extra < 0) return;
+    const std::vector<Member>& more = extras_[e.extra];
+    for (std::size_t k = 0; k < more.size(); ++k) {
+      const std::uint32_t p = more[k].polyline;
+      bool seen = p == e.polyline;
+      for (std::size_t j = 0; j < k && !seen; ++j) seen = more[j].polyline == p;
+      if (!seen) f(p);
+    }
   }
 
   // Every input segment whose chain holds the edge (several where segments overlap or were
@@ -120,7 +125,7 @@ class ConstraintStore {
   void forEachSegment(const EdgeSource& e, F&& f) const {
     f(e.segment);
     if (e.extra >= 0)
-      for (const std::uint32_t i : extras_[e.extra].segments) f(i);
+      for (const Member m : extras_[e.extra]) f(m.segment);
   }
 
   std::size_t edgeCount() const { return edges_.size(); }
@@ -135,34 +140,32 @@ class ConstraintStore {
   }
 
  private:
-  // What an edge carries beyond its first polyline and segment.
-  struct Extra {
-    std::vector<std::uint32_t> polylines, segments;
+  // What an edge carries beyond its first polyline and segment: more (polyline, segment)
+  // pairs. One list, allocated when a second pair arrives (as polylines alone were before:
+  // shared borders make hundreds of thousands of them), each pair once.
+  struct Member {
+    std::uint32_t polyline, segment;
   };
 
-  void addPolyline(EdgeSource& e, std::uint32_t p) { add(e, p, &Extra::polylines, e.polyline); }
-
-  // Adds v to the list of e's extra when it is neither `first` nor listed.
-  void add(EdgeSource& e, std::uint32_t v, std::vector<std::uint32_t> Extra::*list,
-           std::uint32_t first) {
-    if (first == v) return;
+  void add(EdgeSource& e, Member m) {
+    if (m.polyline == e.polyline && m.segment == e.segment) return;
     if (e.extra < 0) {
       e.extra = static_cast<std::int32_t>(extras_.size());
       extras_.emplace_back();
     }
-    std::vector<std::uint32_t>& values = extras_[e.extra].*list;
-    for (const std::uint32_t q : values)
-      if (q == v) return;
-    values.push_back(v);
+    std::vector<Member>& list = extras_[e.extra];
+    for (const Member q : list)
+      if (q.polyline == m.polyline && q.segment == m.segment) return;
+    list.push_back(m);
   }
   std::int32_t copyExtra(std::int32_t from) {
-    const Extra copy = extras_[from];
+    const std::vector<Member> copy = extras_[from];
     extras_.push_back(copy);
     return static_cast<std::int32_t>(extras_.size() - 1);
   }
 
   EdgeMap<EdgeSource> edges_;
-  std::vector<Extra> extras_;
+  std::vector<std::vector<Member>> extras_;
 };
 
 }  // namespace geocdt

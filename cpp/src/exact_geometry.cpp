@@ -19,11 +19,11 @@ using Quadratic = BigInt<136>;
 using Cubic = BigInt<204>;
 using Quartic = BigInt<272>;
 
-using Long = long double;
-constexpr Long kEpsilon = std::numeric_limits<Long>::epsilon();
-// What underflow can take from a long double product: where long double is double (MSVC),
-// products of subnormal coordinates underflow.
-constexpr Long kTiny = std::numeric_limits<Long>::denorm_min();
+// The filters are in double, with error bounds for double: long double's precision varies
+// (64 bits on x86, 53 on MSVC and under valgrind, 113 in wasm), and an answer must not.
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+// Covers what underflow can take from the products and sums of a filter.
+constexpr double kUnderflow = 0x1p-1000;
 
 // The exponent of the lowest set bit's unit: v is an integer multiple of 2^unitExponent(v).
 int unitExponent(double v) {
@@ -93,12 +93,13 @@ void negate(BigInt<C>& a) {
   if (a.size > 0) a.negative = !a.negative;
 }
 
-// The value of a times 2^unit, to about 64 bits: its top three limbs.
+// The value of a times 2^unit, to about 64 bits: its top three limbs (in long double for its
+// exponent range; only an estimate).
 template <int C>
-Long approximate(const BigInt<C>& a, int unit) {
-  Long v = 0;
+long double approximate(const BigInt<C>& a, int unit) {
+  long double v = 0;
   for (int i = std::max(0, a.size - 3); i < a.size; ++i)
-    v += std::ldexp(Long(a.limb[i]), 32 * i + unit);
+    v += std::ldexp(static_cast<long double>(a.limb[i]), 32 * i + unit);
   return a.negative ? -v : v;
 }
 
@@ -106,25 +107,27 @@ Long approximate(const BigInt<C>& a, int unit) {
 // lines of s and t: whether X lies above the midpoint of c and its neighbour n.
 int crossingAgainstMidpoint(const InputSegment& s, const InputSegment& t, int axis, double c,
                             double n) {
-  {  // In long double, decided unless the crossing lies within its error of the midpoint.
-    const Long dx = (Long)s.bx - s.ax, dy = (Long)s.by - s.ay;
-    const Long fx = (Long)t.bx - t.ax, fy = (Long)t.by - t.ay;
-    const Long gx = (Long)t.ax - s.ax, gy = (Long)t.ay - s.ay;
-    const Long den = dx * fy - dy * fx, num = gx * fy - gy * fx;
-    const Long denError = std::fabs(dx * fy) + std::fabs(dy * fx);
-    const Long numError = std::fabs(gx * fy) + std::fabs(gy * fx);
-    const Long a = axis == 0 ? s.ax : s.ay, d = axis == 0 ? dx : dy;
-    const Long along = num / den, x = a + d * along;
-    // Relative errors: 3 eps in num and den each (relative to their magnitudes), so the
-    // quotient errs by (3 eps)(numError / |num| + denError / |den|) of itself, and the
-    // products and sums by a few eps more.
-    const Long relative = numError / std::fabs(num) + denError / std::fabs(den);
-    const Long error =
-        16 * kEpsilon * (std::fabs(a) + std::fabs(d * along) * (1 + relative)) + 64 * kTiny;
-    const Long v = 2 * x - ((Long)c + n);
-    if (std::isfinite(error) && std::isfinite(v) && den != 0 && num != 0) {
-      if (v > 2 * error) return 1;
-      if (-v > 2 * error) return -1;
+  {  // Decided in floating point unless the crossing lies within its error of the midpoint.
+    const double dx = s.bx - s.ax, dy = s.by - s.ay, fx = t.bx - t.ax, fy = t.by - t.ay;
+    const double gx = t.ax - s.ax, gy = t.ay - s.ay;
+    const double den = dx * fy - dy * fx, num = gx * fy - gy * fx;
+    const double denError = std::fabs(dx * fy) + std::fabs(dy * fx);
+    const double numError = std::fabs(gx * fy) + std::fabs(gy * fx);
+    const double a = axis == 0 ? s.ax : s.ay, d = axis == 0 ? dx : dy;
+    const double along = num / den, x = a + d * along;
+    // Each difference errs by eps/2 of itself, so num and den by 3 eps of their magnitudes
+    // (numError, denError); the quotient by (3 eps)(numError / |num| + denError / |den|) of
+    // itself, and the last products and sums by a few eps more. Sixteen times that.
+    const double relative = numError / std::fabs(num) + denError / std::fabs(den);
+    const double error =
+        16 * kEpsilon * (std::fabs(a) + std::fabs(d * along) * (1 + relative)) + kUnderflow;
+    const double v = 2 * x - (c + n);
+    // Underflow in num, den or their quotient (whose error d would magnify) leaves it to the
+    // exact path.
+    if (std::isfinite(error) && std::isfinite(v) && std::fabs(den) > 0x1p-900 &&
+        std::fabs(num) > 0x1p-900 && std::fabs(along) > 0x1p-900) {
+      if (v > 2 * error + 4 * kEpsilon * std::fabs(c + n)) return 1;
+      if (-v > 2 * error + 4 * kEpsilon * std::fabs(c + n)) return -1;
     }
   }
   const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by, c, n});
@@ -192,16 +195,21 @@ double roundCoordinate(const InputSegment& s, const InputSegment& t, int axis, d
   return value(first);
 }
 
-// Distance from (x, y) to the closed segment, in long double, and a bound on its error.
-Long approximateDistance(const InputSegment& s, double x, double y, Long& error) {
-  const Long dx = (Long)s.bx - s.ax, dy = (Long)s.by - s.ay;
-  const Long length2 = dx * dx + dy * dy;
-  Long t = length2 > 0 ? (((Long)x - s.ax) * dx + ((Long)y - s.ay) * dy) / length2 : 0;
-  t = std::clamp(t, Long(0), Long(1));
-  const Long ex = s.ax + t * dx - x, ey = s.ay + t * dy - y;
-  const Long magnitude = std::fabs((Long)s.ax) + std::fabs((Long)s.ay) + std::fabs((Long)s.bx) +
-                         std::fabs((Long)s.by) + std::fabs((Long)x) + std::fabs((Long)y);
-  error = 32 * kEpsilon * magnitude + 64 * kTiny;
+// Distance from (x, y) to the closed segment, in floating point, with a bound on its error;
+// an infinite error where the magnitudes are too small for a bound (squares underflow).
+double approximateDistance(const InputSegment& s, double x, double y, double& error) {
+  const double magnitude = std::fmax(std::fmax(std::fmax(std::fabs(s.ax), std::fabs(s.ay)),
+                                               std::fmax(std::fabs(s.bx), std::fabs(s.by))),
+                                     std::fmax(std::fabs(x), std::fabs(y)));
+  const double dx = s.bx - s.ax, dy = s.by - s.ay;
+  const double length2 = dx * dx + dy * dy;
+  double t = length2 > 0 ? ((x - s.ax) * dx + (y - s.ay) * dy) / length2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  const double ex = s.ax + t * dx - x, ey = s.ay + t * dy - y;
+  // The differences err by eps of the magnitude, the projection's parameter moves the
+  // nearest point by a few more: 128 eps covers it with room.
+  error = magnitude > 0x1p-900 && length2 > 0x1p-900 ? 128 * kEpsilon * magnitude + kUnderflow
+                                                     : INFINITY;
   return std::sqrt(ex * ex + ey * ey);
 }
 
@@ -239,7 +247,7 @@ void roundedCrossing(const InputSegment& s, const InputSegment& t, double& x, do
   const Cubic ny = sum<204>(product<204>(fixed(s.ay, base), den), product<204>(dy, num));
   // Units: den counts 2^(2 base), nx and ny 2^(3 base); scaled apart by 2^base so that
   // neither quotient part overflows long double.
-  const Long d = approximate(den, 0);
+  const long double d = approximate(den, 0);
   const double gx = static_cast<double>(std::ldexp(approximate(nx, 0) / d, base));
   const double gy = static_cast<double>(std::ldexp(approximate(ny, 0) / d, base));
   // The crossing lies on s: within its box.
@@ -261,13 +269,10 @@ bool segmentMeetsCell(const InputSegment& s, double x, double y) {
   };
   const int xl = halfGap(x, -INFINITY), xh = halfGap(x, INFINITY);
   const int yl = halfGap(y, -INFINITY), yh = halfGap(y, INFINITY);
-  Long error;
-  const Long d = approximateDistance(s, x, y, error);
-  const Long far =
-      std::hypot(std::ldexp(Long(1), std::max(xl, xh)), std::ldexp(Long(1), std::max(yl, yh)));
-  const Long near = std::ldexp(Long(1), std::min({xl, xh, yl, yh}));
+  double error;
+  const double d = approximateDistance(s, x, y, error);
+  const double far = std::ldexp(1.0, std::max({xl, xh, yl, yh}) + 1);  // beyond the cell's corners
   if (d - error > far) return false;
-  if (d + error < near) return true;
 
   const int base = std::min({baseOf({s.ax, s.ay, s.bx, s.by, x, y}), xl, xh, yl, yh});
   const Linear ax = fixed(s.ax, base), ay = fixed(s.ay, base);
@@ -301,8 +306,9 @@ bool segmentMeetsCell(const InputSegment& s, double x, double y) {
 }
 
 bool withinDistance(const InputSegment& s, double x, double y, int e) {
-  Long error;
-  const Long d = approximateDistance(s, x, y, error), bound = std::ldexp(Long(1), e);
+  if ((x == s.ax && y == s.ay) || (x == s.bx && y == s.by)) return true;
+  double error;
+  const double d = approximateDistance(s, x, y, error), bound = std::ldexp(1.0, e);
   if (d + error < bound) return true;
   if (d - error > bound) return false;
 
@@ -324,10 +330,10 @@ bool withinDistance(const InputSegment& s, double x, double y, int e) {
 }
 
 int signAlong(const InputSegment& s, double px, double py, double qx, double qy) {
-  const Long ux = (Long)qx - px, uy = (Long)qy - py;
-  const Long dx = (Long)s.bx - s.ax, dy = (Long)s.by - s.ay;
-  const Long v = ux * dx + uy * dy;
-  const Long error = 8 * kEpsilon * (std::fabs(ux * dx) + std::fabs(uy * dy)) + 8 * kTiny;
+  const double ux = qx - px, uy = qy - py, dx = s.bx - s.ax, dy = s.by - s.ay;
+  const double v = ux * dx + uy * dy;
+  // Each difference errs by eps/2 of itself, each product and the sum by eps/2 more.
+  const double error = 4 * kEpsilon * (std::fabs(ux * dx) + std::fabs(uy * dy)) + kUnderflow;
   if (v > error) return 1;
   if (-v > error) return -1;
   const int base = baseOf({s.ax, s.ay, s.bx, s.by, px, py, qx, qy});

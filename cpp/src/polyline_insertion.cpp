@@ -112,7 +112,7 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
       const std::uint32_t* lineIds = ids + offset;
       offset += line.count;
       const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
-      const std::uint32_t id = store.addPolyline(ring);
+      const std::uint32_t id = store.startPolyline(ring);
       ++d.stats.polylines;
       for (std::size_t k = 0; k + 1 < line.count; ++k) {
         const std::uint32_t u = lineIds[k], v = lineIds[k + 1];

@@ -14,8 +14,6 @@ namespace geocdt {
 
 namespace {
 
-using Long = long double;
-
 // The half-sizes 2^ex, 2^ey of the boxes a segment is tested against: half the largest
 // spacing of doubles on each axis over the segment's extent.
 void boxExponents(const InputSegment& s, int& ex, int& ey) {
@@ -25,20 +23,31 @@ void boxExponents(const InputSegment& s, int& ex, int& ey) {
 
 // Whether triangle (p, q, r) may meet the rectangle of points within `reach` of s: false only
 // when the three corners lie clearly beyond one side of it (a separating-axis test on the
-// rectangle's two axes, in long double with a margin: it may say yes to a few more).
-bool mayMeet(const InputSegment& s, Long reach, const double* p, const double* q, const double* r) {
-  const Long dx = (Long)s.bx - s.ax, dy = (Long)s.by - s.ay;
-  const Long length = std::sqrt(dx * dx + dy * dy);
-  const Long magnitude =
-      std::fabs((Long)s.ax) + std::fabs((Long)s.ay) + std::fabs((Long)s.bx) + std::fabs((Long)s.by);
-  const Long slack = reach + 64 * std::numeric_limits<Long>::epsilon() * magnitude +
-                     std::numeric_limits<Long>::denorm_min();
+// rectangle's two axes, with a margin: it may say yes to a few more). In a frame scaled by a
+// power of two (exactly) to put s's coordinates near 1, so that nothing underflows; corners
+// far out may become infinite there, which only puts them further beyond.
+bool mayMeet(const InputSegment& s, double reach, const double* p, const double* q,
+             const double* r) {
+  int exponent = 0;
+  std::frexp(std::fmax(std::fmax(std::fabs(s.ax), std::fabs(s.ay)),
+                       std::fmax(std::fabs(s.bx), std::fabs(s.by))),
+             &exponent);
+  const auto scaled = [&](double v) { return std::ldexp(v, -exponent); };
+  const double ax = scaled(s.ax), ay = scaled(s.ay);
+  const double dx = scaled(s.bx) - ax, dy = scaled(s.by) - ay;
+  const double length = std::sqrt(dx * dx + dy * dy);
+  if (!(length > 0x1p-900)) return true;
+  // A difference of two doubles errs by eps/2 of itself, products and sums by a few eps of
+  // theirs, so the distances across and along err by a few eps of |w|: 32 eps with room,
+  // plus what underflow in the scaling can take.
+  const double reachHere = std::ldexp(reach, -exponent);
   int above = 0, below = 0, before = 0, after = 0;
   for (const double* v : {p, q, r}) {
-    const Long wx = (Long)v[0] - s.ax, wy = (Long)v[1] - s.ay;
-    const Long across = (dx * wy - dy * wx) / length, along = (dx * wx + dy * wy) / length;
-    const Long margin = slack + 64 * std::numeric_limits<Long>::epsilon() *
-                                    (std::fabs((Long)v[0]) + std::fabs((Long)v[1]));
+    const double wx = scaled(v[0]) - ax, wy = scaled(v[1]) - ay;
+    const double across = (dx * wy - dy * wx) / length, along = (dx * wx + dy * wy) / length;
+    const double margin =
+        reachHere + 32 * std::numeric_limits<double>::epsilon() * (std::fabs(wx) + std::fabs(wy)) +
+        0x1p-1000;
     above += across > margin;
     below += across < -margin;
     before += along < -margin;
@@ -49,7 +58,7 @@ bool mayMeet(const InputSegment& s, Long reach, const double* p, const double* q
 
 // The real triangles that may meet the points within `reach` of s, found by a search from
 // the triangles around s's first end (the region is convex, so its triangles are connected).
-void trianglesNear(const Delaunay& d, std::int32_t out, const InputSegment& s, Long reach,
+void trianglesNear(const Delaunay& d, std::int32_t out, const InputSegment& s, double reach,
                    std::uint32_t mark, std::vector<std::uint32_t>& stamp,
                    std::vector<std::int32_t>& found) {
   const Topology& topo = d.topo;
@@ -223,11 +232,11 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   std::vector<std::int32_t> found;
   std::vector<std::pair<std::int32_t, std::uint32_t>> slotSegment;
   std::vector<std::vector<std::uint32_t>> candidates(n);
-  std::vector<Long> reach(n);
+  std::vector<double> reach(n);
   for (std::size_t i = 0; i < n; ++i) {
     int ex, ey;
     boxExponents(segments[i], ex, ey);
-    reach[i] = std::hypot(std::ldexp(Long(1), ex), std::ldexp(Long(1), ey));
+    reach[i] = std::hypot(std::ldexp(1.0, ex), std::ldexp(1.0, ey));
     trianglesNear(fresh, outOf[i], segments[i], reach[i], static_cast<std::uint32_t>(i), stamp,
                   found);
     for (const std::int32_t t : found) {
