@@ -12,12 +12,10 @@ namespace {
 
 using detail::BigInt;
 // A finite double, or a power of two from 2^-1075 up, is an integer below 2^2101 in units of
-// the smallest unit among the inputs: 66 limbs, plus room for the carries of sums. Products
-// of two, three and four such numbers need twice, three and four times that.
-using Linear = BigInt<68>;
-using Quadratic = BigInt<136>;
-using Cubic = BigInt<204>;
-using Quartic = BigInt<272>;
+// the smallest unit among the inputs: 66 limbs, plus room for the carries of sums; products
+// of up to four such numbers need four times that. One type for all (operations touch only
+// the limbs in use), so that the arithmetic is compiled once: it is the wasm's size.
+using Number = BigInt<276>;
 
 // The filters are in double, with error bounds for double: long double's precision varies
 // (64 bits on x86, 53 on MSVC and under valgrind, 113 in wasm), and an answer must not.
@@ -40,21 +38,21 @@ int baseOf(std::initializer_list<double> values, int lowest = 1 << 20) {
   return lowest;
 }
 
-Linear fixed(double v, int base) {
-  Linear r;
+Number fixed(double v, int base) {
+  Number r;
   detail::set_double(r, v, base);
   return r;
 }
 
-Linear integer(std::uint32_t v) {
-  Linear r;
+Number integer(std::uint32_t v) {
+  Number r;
   r.limb[0] = v;
   r.size = v != 0;
   return r;
 }
 
-Linear power(int exponent, int base) {
-  Linear r;
+Number power(int exponent, int base) {
+  Number r;
   const int shift = exponent - base, word = shift / 32;
   for (int i = 0; i < word; ++i) r.limb[i] = 0;
   r.limb[word] = std::uint32_t{1} << (shift % 32);
@@ -62,22 +60,20 @@ Linear power(int exponent, int base) {
   return r;
 }
 
-template <int C, int A, int B>
-BigInt<C> sum(const BigInt<A>& a, const BigInt<B>& b, bool subtract = false) {
-  BigInt<C> r;
+Number sum(const Number& a, const Number& b, bool subtract = false) {
+  Number r;
   detail::add(r, a, b, subtract);
   return r;
 }
 
-template <int C, int A, int B>
-BigInt<C> product(const BigInt<A>& a, const BigInt<B>& b) {
-  BigInt<C> r;
+Number product(const Number& a, const Number& b) {
+  Number r;
   detail::multiply(r, a, b);
   return r;
 }
 
-Linear difference(double a, double b, int base) {
-  return sum<68>(fixed(a, base), fixed(b, base), true);
+Number difference(double a, double b, int base) {
+  return sum(fixed(a, base), fixed(b, base), true);
 }
 
 template <int A, int B>
@@ -131,20 +127,20 @@ int crossingAgainstMidpoint(const InputSegment& s, const InputSegment& t, int ax
     }
   }
   const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by, c, n});
-  const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
-  const Linear fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
-  const Linear gx = difference(t.ax, s.ax, base), gy = difference(t.ay, s.ay, base);
+  const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Number fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
+  const Number gx = difference(t.ax, s.ax, base), gy = difference(t.ay, s.ay, base);
   // X = a + d * num / den along the axis.
-  Quadratic den = sum<136>(product<136>(dx, fy), product<136>(dy, fx), true);
-  const Quadratic num = sum<136>(product<136>(gx, fy), product<136>(gy, fx), true);
-  const Linear a = fixed(axis == 0 ? s.ax : s.ay, base);
-  Cubic scaled = sum<204>(product<204>(a, den), product<204>(axis == 0 ? dx : dy, num));
+  Number den = sum(product(dx, fy), product(dy, fx), true);
+  const Number num = sum(product(gx, fy), product(gy, fx), true);
+  const Number a = fixed(axis == 0 ? s.ax : s.ay, base);
+  Number scaled = sum(product(a, den), product(axis == 0 ? dx : dy, num));
   if (detail::sign(den) < 0) {
     negate(den);
     negate(scaled);
   }
-  const Cubic twice = sum<204>(scaled, scaled);
-  const Cubic midpoint = product<204>(sum<68>(fixed(c, base), fixed(n, base)), den);
+  const Number twice = sum(scaled, scaled);
+  const Number midpoint = product(sum(fixed(c, base), fixed(n, base)), den);
   return compare(twice, midpoint);
 }
 
@@ -215,14 +211,14 @@ double approximateDistance(const InputSegment& s, double x, double y, double& er
 
 // One end of the interval of t in [0, 1] along s where a coordinate lies in a box.
 struct Bound {
-  Linear numerator, denominator;  // denominator > 0
+  Number numerator, denominator;  // denominator > 0
   bool open;
 };
 
 // -1, 0 or 1 as a/b compares with c/d.
 int compareBounds(const Bound& a, const Bound& b) {
-  return compare(product<136>(a.numerator, b.denominator),
-                 product<136>(b.numerator, a.denominator));
+  return compare(product(a.numerator, b.denominator),
+                 product(b.numerator, a.denominator));
 }
 
 }  // namespace
@@ -238,13 +234,13 @@ void roundedCrossing(const InputSegment& s, const InputSegment& t, double& x, do
   // The estimate comes from the exact numerators and denominator, each to 64 bits: long
   // double alone loses a crossing at 1e-140 on a segment from 1e47 to the cancellation.
   const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by});
-  const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
-  const Linear fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
-  const Linear ox = difference(t.ax, s.ax, base), oy = difference(t.ay, s.ay, base);
-  const Quadratic den = sum<136>(product<136>(dx, fy), product<136>(dy, fx), true);
-  const Quadratic num = sum<136>(product<136>(ox, fy), product<136>(oy, fx), true);
-  const Cubic nx = sum<204>(product<204>(fixed(s.ax, base), den), product<204>(dx, num));
-  const Cubic ny = sum<204>(product<204>(fixed(s.ay, base), den), product<204>(dy, num));
+  const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Number fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
+  const Number ox = difference(t.ax, s.ax, base), oy = difference(t.ay, s.ay, base);
+  const Number den = sum(product(dx, fy), product(dy, fx), true);
+  const Number num = sum(product(ox, fy), product(oy, fx), true);
+  const Number nx = sum(product(fixed(s.ax, base), den), product(dx, num));
+  const Number ny = sum(product(fixed(s.ay, base), den), product(dy, num));
   // Units: den counts 2^(2 base), nx and ny 2^(3 base); scaled apart by 2^base so that
   // neither quotient part overflows long double.
   const long double d = approximate(den, 0);
@@ -275,17 +271,17 @@ bool segmentMeetsCell(const InputSegment& s, double x, double y) {
   if (d - error > far) return false;
 
   const int base = std::min({baseOf({s.ax, s.ay, s.bx, s.by, x, y}), xl, xh, yl, yh});
-  const Linear ax = fixed(s.ax, base), ay = fixed(s.ay, base);
-  const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
-  const Linear px = fixed(x, base), py = fixed(y, base);
+  const Number ax = fixed(s.ax, base), ay = fixed(s.ay, base);
+  const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Number px = fixed(x, base), py = fixed(y, base);
   // a + t d lies in [lo, hi) on each axis, for t in [0, 1].
   Bound lower{integer(0), integer(1), false}, upper{integer(1), integer(1), false};
-  const auto tighten = [&](const Linear& a, const Linear& d, const Linear& p, int l, int h) {
-    const Linear lo = sum<68>(sum<68>(p, power(l, base), true), a, true);  // lo - a
-    const Linear hi = sum<68>(sum<68>(p, power(h, base)), a, true);        // hi - a
+  const auto tighten = [&](const Number& a, const Number& d, const Number& p, int l, int h) {
+    const Number lo = sum(sum(p, power(l, base), true), a, true);  // lo - a
+    const Number hi = sum(sum(p, power(h, base)), a, true);        // hi - a
     const int sd = detail::sign(d);
     if (sd == 0) return detail::sign(lo) <= 0 && detail::sign(hi) > 0;
-    Linear positive = d;
+    Number positive = d;
     positive.negative = false;
     Bound from{lo, positive, false}, to{hi, positive, true};  // d > 0: t in [lo/d, hi/d)
     if (sd < 0) {                                             // d < 0: t in (hi/d, lo/d]
@@ -313,20 +309,20 @@ bool withinDistance(const InputSegment& s, double x, double y, int e) {
   if (d - error > bound) return false;
 
   const int base = std::min(baseOf({s.ax, s.ay, s.bx, s.by, x, y}), e);
-  const Linear dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
-  const Linear wx = difference(x, s.ax, base), wy = difference(y, s.ay, base);
-  const Linear r = power(e, base);
-  const Quadratic r2 = product<136>(r, r);
-  const Quadratic dot = sum<136>(product<136>(wx, dx), product<136>(wy, dy));
-  const Quadratic length2 = sum<136>(product<136>(dx, dx), product<136>(dy, dy));
+  const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Number wx = difference(x, s.ax, base), wy = difference(y, s.ay, base);
+  const Number r = power(e, base);
+  const Number r2 = product(r, r);
+  const Number dot = sum(product(wx, dx), product(wy, dy));
+  const Number length2 = sum(product(dx, dx), product(dy, dy));
   if (detail::sign(dot) <= 0)
-    return compare(sum<136>(product<136>(wx, wx), product<136>(wy, wy)), r2) <= 0;
+    return compare(sum(product(wx, wx), product(wy, wy)), r2) <= 0;
   if (compare(dot, length2) >= 0) {
-    const Linear vx = difference(x, s.bx, base), vy = difference(y, s.by, base);
-    return compare(sum<136>(product<136>(vx, vx), product<136>(vy, vy)), r2) <= 0;
+    const Number vx = difference(x, s.bx, base), vy = difference(y, s.by, base);
+    return compare(sum(product(vx, vx), product(vy, vy)), r2) <= 0;
   }
-  const Quadratic cross = sum<136>(product<136>(dx, wy), product<136>(dy, wx), true);
-  return compare(product<272>(cross, cross), product<272>(r2, length2)) <= 0;
+  const Number cross = sum(product(dx, wy), product(dy, wx), true);
+  return compare(product(cross, cross), product(r2, length2)) <= 0;
 }
 
 int signAlong(const InputSegment& s, double px, double py, double qx, double qy) {
@@ -337,9 +333,9 @@ int signAlong(const InputSegment& s, double px, double py, double qx, double qy)
   if (v > error) return 1;
   if (-v > error) return -1;
   const int base = baseOf({s.ax, s.ay, s.bx, s.by, px, py, qx, qy});
-  const Quadratic dot =
-      sum<136>(product<136>(difference(qx, px, base), difference(s.bx, s.ax, base)),
-               product<136>(difference(qy, py, base), difference(s.by, s.ay, base)));
+  const Number dot =
+      sum(product(difference(qx, px, base), difference(s.bx, s.ax, base)),
+               product(difference(qy, py, base), difference(s.by, s.ay, base)));
   return detail::sign(dot);
 }
 

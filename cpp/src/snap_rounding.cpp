@@ -230,7 +230,7 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   std::vector<std::uint32_t> stamp(fresh.topo.slotCount(),
                                    std::numeric_limits<std::uint32_t>::max());
   std::vector<std::int32_t> found;
-  std::vector<std::pair<std::int32_t, std::uint32_t>> slotSegment;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> slotSegment;  // (triangle, segment)
   std::vector<std::vector<std::uint32_t>> candidates(n);
   std::vector<double> reach(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -240,7 +240,7 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
     trianglesNear(fresh, outOf[i], segments[i], reach[i], static_cast<std::uint32_t>(i), stamp,
                   found);
     for (const std::int32_t t : found) {
-      slotSegment.push_back({t, static_cast<std::uint32_t>(i)});
+      slotSegment.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i)});
       for (int k = 0; k < 3; ++k) candidates[i].push_back(fresh.topo.tri[3 * t + k]);
     }
   }
@@ -274,9 +274,10 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   // Each new crossing joins the candidates of the segments near the triangles holding it;
   // then all are inserted.
   const auto near = [&](std::int32_t t, std::uint32_t v) {
+    const std::uint32_t slot = static_cast<std::uint32_t>(t);
     auto it = std::lower_bound(slotSegment.begin(), slotSegment.end(),
-                               std::pair<std::int32_t, std::uint32_t>{t, 0});
-    for (; it != slotSegment.end() && it->first == t; ++it) candidates[it->second].push_back(v);
+                               std::pair<std::uint32_t, std::uint32_t>{slot, 0});
+    for (; it != slotSegment.end() && it->first == slot; ++it) candidates[it->second].push_back(v);
   };
   std::vector<std::size_t> added;  // indices into crossings
   for (std::size_t c = 0; c < crossings.size(); ++c) {
