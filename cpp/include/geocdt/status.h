@@ -8,11 +8,13 @@ namespace geocdt {
 
 enum class StatusCode {
   Ok = 0,
-  InvalidArgument,       // wrong shape of input (odd length, null pointer with a count)
-  InvalidCoordinate,     // NaN, infinity, or |coordinate| > kMaxCoordinate
-  OutOfMemory,           // an allocation failed; the triangulation is unchanged or cleared
-  ConstraintUnresolved,  // a constraint segment could not be inserted (names polyline/segment)
-  InternalError,         // a broken invariant (walk step bound hit): a bug, reported not hung
+  InvalidArgument,    // wrong shape of input (odd length, null pointer with a count)
+  InvalidCoordinate,  // NaN, infinity, or |coordinate| > kMaxCoordinate
+  OutOfMemory,        // an allocation failed; the triangulation is unchanged or cleared
+  // No longer returned: crossings that cannot be computed are snap-rounded. The value stays
+  // so that the codes after it keep their numbers (the bindings map codes by number).
+  ConstraintUnresolved,
+  InternalError,  // a broken invariant (walk step bound hit): a bug, reported not hung
 };
 
 inline constexpr std::size_t kNoIndex = static_cast<std::size_t>(-1);
