@@ -15,8 +15,10 @@ seconds=${1:-60}
 build=${GEOCDT_FUZZ_BUILD:-$root/build-fuzz}
 targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines}
 
+# (0 would mean no limit to libFuzzer.)
 case $seconds in
-  '' | *[!0-9]*) echo "run-fuzz: seconds must be a whole number, got '$seconds'" >&2; exit 2 ;;
+  '' | *[!0-9]* | 0) echo "run-fuzz: seconds must be a positive whole number, got '$seconds'" >&2
+    exit 2 ;;
 esac
 
 install_or_explain() {

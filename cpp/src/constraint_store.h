@@ -1,10 +1,12 @@
 #pragma once
 // What each constrained edge carries: the input polylines it came from (several where they
-// overlap), one input segment it lies on (to compute crossings from the original geometry),
-// and its net winding, which decides inside and outside, with each polyline's share of it
-// where several overlap (region labels need it: two countries' rings along a shared border
-// run opposite ways and net zero). Keyed by the undirected vertex pair, so it survives the
-// flips and re-triangulations that move half-edges around.
+// overlap), the input segments whose chains hold it (the first to compute crossings from the
+// original geometry, all to check the chains), and its net winding, which decides inside and
+// outside, with each segment's share of it where several overlap (region labels need it: two
+// countries' rings along a shared border run opposite ways and net zero). Keyed by the
+// undirected vertex pair, so it survives the flips and re-triangulations that move half-edges
+// around.
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -14,17 +16,10 @@
 namespace geocdt {
 
 struct EdgeSource {
-  std::uint32_t segment = 0;   // index into ConstraintStore::segments
+  std::uint32_t segment = 0;   // the first input segment: index into ConstraintStore::segments
   std::int32_t winding = 0;    // ring traversals along the edge's direction minus against it
   std::uint32_t polyline = 0;  // the first polyline
-  std::int32_t extra = -1;     // index of more polylines in the store, or -1
-};
-
-// One of an edge's further polylines and its share of the winding, which runs the same way
-// as the winding of the EdgeSource that lists it. The first polyline's share is the rest.
-struct PolylineWinding {
-  std::uint32_t polyline;
-  std::int32_t winding;
+  std::int32_t extra = -1;     // index of more polylines and segments in the store, or -1
 };
 
 struct InputSegment {
@@ -48,6 +43,27 @@ class ConstraintStore {
   std::vector<PendingSegment> pending;
   std::uint32_t polylineCount = 0;
   std::uint64_t polylinePoints = 0;  // points of every polyline inserted so far
+  // Per polyline: the index of its first segment and whether it is a ring, so that snap
+  // rounding can give each segment its source again (a few bytes per polyline).
+  std::vector<std::uint32_t> firstSegment;
+  std::vector<std::uint8_t> ring;
+
+  // Starts polyline polylineCount; returns its id.
+  std::uint32_t startPolyline(bool isRing) {
+    firstSegment.push_back(static_cast<std::uint32_t>(segments.size()));
+    ring.push_back(isRing);
+    return polylineCount++;
+  }
+
+  // What segment i carries when it alone makes an edge: its polyline and winding.
+  EdgeSource sourceOf(std::uint32_t i) const {
+    const auto after = std::upper_bound(firstSegment.begin(), firstSegment.end(), i);
+    EdgeSource src;
+    src.segment = i;
+    src.polyline = static_cast<std::uint32_t>(after - firstSegment.begin() - 1);
+    src.winding = ring[src.polyline] ? 1 : 0;
+    return src;
+  }
 
   static std::uint64_t key(std::uint32_t u, std::uint32_t v) {
     if (u > v) std::swap(u, v);
@@ -66,13 +82,13 @@ class ConstraintStore {
     }
     EdgeSource& e = *entry;
     e.winding += src.winding;
-    std::int32_t first = src.winding;  // src's first polyline: what its extras leave
+    std::int32_t first = src.winding;  // src's first pair's share: what its extras leave
     if (src.extra >= 0)
-      for (const PolylineWinding& p : extras_[src.extra]) first -= sign * p.winding;
-    addPolyline(e, src.polyline, first);
+      for (const Member& m : extras_[src.extra]) first -= sign * m.winding;
+    add(e, {src.polyline, src.segment, first});
     if (src.extra >= 0) {
-      const std::vector<PolylineWinding> more = extras_[src.extra];  // extras_ may grow
-      for (const PolylineWinding& p : more) addPolyline(e, p.polyline, sign * p.winding);
+      const std::vector<Member> more = extras_[src.extra];  // extras_ may grow
+      for (const Member& m : more) add(e, {m.polyline, m.segment, sign * m.winding});
     }
   }
 
@@ -84,7 +100,7 @@ class ConstraintStore {
     if (u > v) {
       src.winding = -src.winding;
       if (src.extra >= 0)
-        for (PolylineWinding& p : extras_[src.extra]) p.winding = -p.winding;
+        for (Member& m : extras_[src.extra]) m.winding = -m.winding;
     }
     return src;
   }
@@ -106,22 +122,39 @@ class ConstraintStore {
     return u < v ? -e->winding : e->winding;
   }
 
+  // Every polyline of the edge, once.
   template <typename F>
   void forEachPolyline(const EdgeSource& e, F&& f) const {
     f(e.polyline);
-    if (e.extra >= 0)
-      for (const PolylineWinding& p : extras_[e.extra]) f(p.polyline);
+    if (e.extra < 0) return;
+    const std::vector<Member>& more = extras_[e.extra];
+    for (std::size_t k = 0; k < more.size(); ++k) {
+      const std::uint32_t p = more[k].polyline;
+      bool seen = p == e.polyline;
+      for (std::size_t j = 0; j < k && !seen; ++j) seen = more[j].polyline == p;
+      if (!seen) f(p);
+    }
   }
 
-  // f(polyline, winding) for each polyline of a stored edge, its share of the winding from
-  // the lower vertex id to the higher.
+  // Every input segment whose chain holds the edge (several where segments overlap or were
+  // routed through the same vertices).
+  template <typename F>
+  void forEachSegment(const EdgeSource& e, F&& f) const {
+    f(e.segment);
+    if (e.extra >= 0)
+      for (const Member& m : extras_[e.extra]) f(m.segment);
+  }
+
+  // f(polyline, winding) for each (polyline, segment) pair of a stored edge, with its share
+  // of the winding from the lower vertex id to the higher (a polyline may come more than
+  // once, its shares adding up).
   template <typename F>
   void forEachPolylineWinding(const EdgeSource& e, F&& f) const {
     std::int32_t first = e.winding;
     if (e.extra >= 0)
-      for (const PolylineWinding& p : extras_[e.extra]) {
-        first -= p.winding;
-        f(p.polyline, p.winding);
+      for (const Member& m : extras_[e.extra]) {
+        first -= m.winding;
+        f(m.polyline, m.winding);
       }
     f(e.polyline, first);
   }
@@ -135,33 +168,44 @@ class ConstraintStore {
     pending.clear();
     polylineCount = 0;
     polylinePoints = 0;
+    firstSegment.clear();
+    ring.clear();
   }
 
  private:
-  // Adds polyline p's share w to e, whose total already includes it.
-  void addPolyline(EdgeSource& e, std::uint32_t p, std::int32_t w) {
-    if (e.polyline == p) return;  // the first polyline's share is what the others leave
+  // What an edge carries beyond its first polyline and segment: more (polyline, segment)
+  // pairs, each with its share of the winding (the first pair's share is what they leave).
+  // One list, allocated when a second pair arrives (shared borders make hundreds of
+  // thousands of them), each pair once.
+  struct Member {
+    std::uint32_t polyline, segment;
+    std::int32_t winding;
+  };
+
+  // Adds pair m with its share to e, whose total already includes it.
+  void add(EdgeSource& e, Member m) {
+    if (m.polyline == e.polyline && m.segment == e.segment) return;
     if (e.extra < 0) {
       e.extra = static_cast<std::int32_t>(extras_.size());
       extras_.emplace_back();
     }
-    std::vector<PolylineWinding>& list = extras_[e.extra];
-    for (PolylineWinding& q : list)
-      if (q.polyline == p) {
-        q.winding += w;
+    std::vector<Member>& list = extras_[e.extra];
+    for (Member& q : list)
+      if (q.polyline == m.polyline && q.segment == m.segment) {
+        q.winding += m.winding;
         return;
       }
-    list.push_back({p, w});
+    list.push_back(m);
   }
   std::int32_t copyExtra(std::int32_t from, std::int32_t sign) {
-    std::vector<PolylineWinding> copy = extras_[from];
-    for (PolylineWinding& p : copy) p.winding *= sign;
+    std::vector<Member> copy = extras_[from];
+    for (Member& m : copy) m.winding *= sign;
     extras_.push_back(std::move(copy));
     return static_cast<std::int32_t>(extras_.size() - 1);
   }
 
   EdgeMap<EdgeSource> edges_;
-  std::vector<std::vector<PolylineWinding>> extras_;
+  std::vector<std::vector<Member>> extras_;
 };
 
 }  // namespace geocdt

@@ -5,8 +5,10 @@
 #include <new>
 #include <string>
 
+#include "chain_check.h"
 #include "geocdt/triangulation.h"
 #include "segment_inserter.h"
+#include "snap_rounding.h"
 #include "triangulation_state.h"
 
 namespace geocdt {
@@ -33,7 +35,7 @@ Status checkPolyline(const PolylineView& line, std::size_t index) {
   return Status::success();
 }
 
-Status unresolved(const Status& s, std::size_t polyline, std::size_t segment) {
+Status located(const Status& s, std::size_t polyline, std::size_t segment) {
   Status out = s;
   out.index = polyline;
   out.segment = segment;
@@ -44,16 +46,21 @@ Status unresolved(const Status& s, std::size_t polyline, std::size_t segment) {
 
 }  // namespace
 
-Status insertPendingSegments(Delaunay& d) {
+Status insertPendingSegments(Delaunay& d, const Options& options) {
   ConstraintStore& store = d.constraints;
   if (!d.built() || store.pending.empty()) return Status::success();
   std::vector<PendingSegment> pending;
   pending.swap(store.pending);
+  const std::uint32_t keep = d.vertexCount();  // crossings come after
+  if (options.snapRounding == SnapRounding::Always) return snapRoundConstraints(d, keep, options);
   SegmentInserter inserter(d);
   for (const PendingSegment& s : pending) {
-    const Status status = inserter.insert(s.u, s.v, s.src);
-    if (!status.ok()) return unresolved(status, s.polyline, s.index);
+    const Outcome outcome = inserter.insert(s.u, s.v, s.src);
+    if (outcome == Outcome::Broken) return located(inserter.error(), s.polyline, s.index);
+    if (outcome == Outcome::GaveUp) return snapRoundConstraints(d, keep, options);
   }
+  if (!chainsKeepTheGuarantee(d, inserter.touchedSegments()))
+    return snapRoundConstraints(d, keep, options);
   return Status::success();
 }
 
@@ -98,15 +105,19 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
 
     SegmentInserter inserter(d);
     const Progress& progress = d.options().progress;
-    std::size_t offset = 0, segmentsTried = 0;
+    std::size_t segmentsTried = 0;
+    const std::uint32_t keep = d.vertexCount();  // crossings come after
+    // Whether snap rounding takes over the segments.
+    bool snap = state_->options.snapRounding == SnapRounding::Always && d.built();
+    std::size_t offset = 0;
     for (std::size_t i = 0; i < count; ++i) {
       const PolylineView& line = polylines[i];
       const std::uint32_t* lineIds = ids + offset;
       offset += line.count;
-      const std::uint32_t id = store.polylineCount++;
       const std::uint64_t firstPoint = store.polylinePoints;
       store.polylinePoints += line.count;
       const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
+      const std::uint32_t id = store.startPolyline(ring);
       ++d.stats.polylines;
       for (std::size_t k = 0; k + 1 < line.count; ++k) {
         if ((++segmentsTried & 255) == 0)
@@ -126,9 +137,17 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
               {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
           continue;
         }
-        const Status status = inserter.insert(u, v, src);
-        if (!status.ok()) return unresolved(status, i, k);
+        if (snap) continue;  // stored: snap rounding inserts it with all the others
+        const Outcome outcome = inserter.insert(u, v, src);
+        if (outcome == Outcome::Broken) return located(inserter.error(), i, k);
+        snap = outcome == Outcome::GaveUp;
       }
+    }
+    // Computed crossings stay where every chain that met one keeps the guarantee.
+    if (!snap && d.built()) snap = !chainsKeepTheGuarantee(d, inserter.touchedSegments());
+    if (snap) {
+      const Status s = snapRoundConstraints(d, keep, state_->options);
+      if (!s.ok()) return s;
     }
     progress(Phase::Constraints, total, total);
   } catch (const std::bad_alloc&) {
@@ -137,7 +156,7 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     return {StatusCode::OutOfMemory,
             "out of memory: the input is too large for the available memory"};
   }
-  return insertPendingSegments(d);
+  return insertPendingSegments(d, state_->options);
 }
 
 }  // namespace geocdt

@@ -13,13 +13,35 @@
 
 namespace geocdt {
 
+// How a constrained edge that the segment crosses is met.
+enum class Crossings : std::uint8_t {
+  // At the crossing of the two input segments, computed and checked to fit (the usual way,
+  // which can get lost in tangles of vertices a few ulps apart: it then gives up).
+  Computed,
+  // At the snap-rounded crossing of the two edges: for the links of snap-rounded chains,
+  // which should never cross, so this only mends what the rounding grid's seams leave.
+  Snapped,
+};
+
+// What insert() did.
+enum class Outcome : std::uint8_t {
+  Inserted,
+  GaveUp,  // the Computed way went round in circles: the caller snap-rounds instead
+  Broken,  // a broken invariant: error() says which
+};
+
 class SegmentInserter {
  public:
-  explicit SegmentInserter(Delaunay& d) : d_(d) {}
+  explicit SegmentInserter(Delaunay& d, Crossings crossings = Crossings::Computed)
+      : d_(d), crossings_(crossings) {}
 
-  // Inserts u -> v carrying src. On failure the status names nothing: the caller adds the
-  // polyline and segment.
-  Status insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
+  // Inserts u -> v carrying src.
+  Outcome insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
+  const Status& error() const { return error_; }
+  // The input segments whose constraints met a crossing since the last clearTouchedSegments(): the
+  // only ones whose chains may have left their segment.
+  const std::vector<std::uint32_t>& touchedSegments() const { return touchedSegments_; }
+  void clearTouchedSegments() { touchedSegments_.clear(); }
 
  private:
   struct Piece {
@@ -37,11 +59,42 @@ class SegmentInserter {
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v);  // half-edge u -> v, or -1
   void markConstrained(std::int32_t e, const EdgeSource& src);
   bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);
-  // Resolves a crossing with constrained half-edge h; returns the vertex where the piece
-  // must now pass, or kGhost when the crossed constraint was re-routed instead.
+  // A piece crossing constrained half-edge h = r -> l, whose triangles' apexes are c1 and c2,
+  // and the input segments ab and cd of the two.
+  struct Crossing {
+    Piece piece;
+    std::int32_t h;
+    std::uint32_t r, l, c1, c2;
+    InputSegment ab, cd;
+    std::uint64_t pair;  // the two input segments' key
+
+    // Whether (x, y) lies beyond vertex u along g's direction (sign), between lo and hi.
+    static int beyond(const double* p, const InputSegment& g, double x, double y, std::uint32_t u);
+    static bool between(const double* p, const InputSegment& g, double x, double y,
+                        std::uint32_t lo, std::uint32_t hi);
+    // Whether (x, y) lies between the piece's ends along ab and the edge's along cd.
+    bool fits(const double* p, double x, double y) const;
+  };
+  // Resolves a crossing with constrained half-edge h (computed_crossing.cpp); returns the
+  // vertex where the piece must now pass, or kGhost when the crossed constraint was
+  // re-routed instead. Its steps: split the crossed edge at the rounded crossing, route
+  // both through one vertex, or meet at an end (whose (x, y) is the crossing last tried).
   std::uint32_t resolveCrossing(const Piece& piece, std::int32_t h);
+  std::uint32_t split(const Crossing& c, double x, double y);
+  std::uint32_t meetAtAnEnd(const Crossing& c, double x, double y);
+  // The same in Crossings::Snapped mode (snap_rounding.cpp); kGhost with error_ set when no
+  // vertex keeps the guarantee (never seen).
+  std::uint32_t snapCrossing(const Piece& piece, std::int32_t h, bool& failed);
+  // A vertex at (x, y): a new one, or the one already there; failed when location failed.
+  std::uint32_t addCrossingVertex(double x, double y, bool& failed);
+  // The constrained edge r-l, if it still is one, becomes the pieces r -> w -> l to insert.
+  void bendThrough(std::uint32_t r, std::uint32_t l, std::uint32_t w);
+  Outcome broken(const char* what);
 
   Delaunay& d_;
+  Crossings crossings_;
+  Status error_;
+  std::vector<std::uint32_t> touchedSegments_;
   std::vector<Piece> pieces_;
   struct QueuedEdge {
     std::uint32_t u, v;
@@ -49,9 +102,8 @@ class SegmentInserter {
   };
   std::vector<std::int32_t> crossed_, touched_;
   std::deque<QueuedEdge> queue_;
-  std::int32_t hint_ = -1;
-  EdgeMap<std::uint32_t> met_;  // input segment pair -> the vertex where they cross  // a half-edge
-                                // out of where the next piece likely starts
+  std::int32_t hint_ = -1;      // a half-edge out of where the next piece likely starts
+  EdgeMap<std::uint32_t> met_;  // input segment pair -> the vertex where they cross
 };
 
 }  // namespace geocdt

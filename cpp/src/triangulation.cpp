@@ -88,7 +88,7 @@ Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
     state.slotMapValid = false;
     s = adopt ? d.insertBatch(std::move(*adopt), ids)
               : d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
-    if (s.ok()) s = insertPendingSegments(d);
+    if (s.ok()) s = insertPendingSegments(d, state.options);
   } catch (const std::bad_alloc&) {
     d.clear();
     state.slotMapValid = false;

@@ -9,7 +9,8 @@
 namespace geocdt {
 
 struct Triangulation::State {
-  explicit State(const Options& options) : delaunay(options) {}
+  explicit State(const Options& options) : options(options), delaunay(options) {}
+  Options options;    // for snap rounding, which builds the triangulation again
   Delaunay delaunay;  // owns the constraints too
   // Slot -> index in mesh().triangles / 3, rebuilt on demand after a change.
   std::vector<std::int32_t> slotToTriangle;
@@ -20,7 +21,7 @@ struct Triangulation::State {
 // consume, the arrays are moved out and compacted in place, leaving delaunay to be cleared.
 Mesh exportMesh(Delaunay& delaunay, const MeshOptions& options, bool consume);
 // Inserts the segments that waited for the triangulation to have triangles.
-Status insertPendingSegments(Delaunay& delaunay);
+Status insertPendingSegments(Delaunay& delaunay, const Options& options);
 // Index of each slot among the exported triangles, or -1 for ghost triangles.
 std::vector<std::int32_t> slotIndices(const Topology& topo);
 

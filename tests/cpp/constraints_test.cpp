@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
 
 #include "constraint_invariants.h"
 #include "geocdt/triangulation.h"
@@ -437,6 +440,222 @@ TEST(Constraints, FuzzSubnormalCrossingGetsItsOwnVertex) {
   const Result r = run({}, lines);
   ASSERT_TRUE(r.status.ok());
   EXPECT_EQ(r.mesh.points.size() / 2, 5u);
+}
+
+// Tangles: segments among vertices a few ulps apart, where every crossing rounds onto the
+// same few doubles. Computed crossings go round in circles there, or would break the
+// guarantee; snap rounding takes over, and the checker holds the result to the bound, the
+// order along each segment and the crossings.
+
+// Inserts each polyline by its own call (or all in one), checks everything, and returns how
+// often the triangulation was snap-rounded (-1 when a call failed).
+int snapRoundings(const Polylines& lines, const Options& options, bool oneCall,
+                  std::string& broken) {
+  Triangulation t(options);
+  std::vector<std::uint32_t> ids;
+  std::vector<PolylineView> views;
+  for (const auto& l : lines) views.push_back({l.data(), l.size() / 2});
+  ids.resize(std::accumulate(lines.begin(), lines.end(), std::size_t{0},
+                             [](std::size_t n, const auto& l) { return n + l.size() / 2; }));
+  std::size_t offset = 0;
+  for (std::size_t i = 0; i < views.size(); offset += views[i++].count) {
+    if (oneCall) {
+      if (!t.insertPolylines(views.data(), views.size(), ids.data()).ok()) return -1;
+      break;
+    }
+    if (!t.insertPolyline(views[i].xy, views[i].count, ids.data() + offset).ok()) return -1;
+  }
+  MeshOptions mo;
+  mo.insideFlags = true;
+  const Mesh m = t.mesh(mo);
+  std::vector<double> input;
+  for (const auto& l : lines) input.insert(input.end(), l.begin(), l.end());
+  testing::CheckOptions c;
+  c.inputXY = &input;
+  c.inputToVertex = &ids;
+  broken = testing::checkTriangulation(m, c);
+  if (broken.empty()) broken = testing::checkConstraints(m, lines, ids);
+  return static_cast<int>(t.stats().snapRoundings);
+}
+
+TEST(Constraints, FuzzTangleOfRingsAroundOneAndMinus12345) {
+  // Rings and lines within 3e-11 of (1, -12345.678), one call each: re-routed constraints
+  // kept pushing each other back (ConstraintUnresolved before snap rounding).
+  const Polylines lines = {
+      {1.0000000000191722,
+       -12345.677999999965,
+       1.0000000000268119,
+       -12345.677999999991,
+       1,
+       -12345.678,
+       1.0000000000043656,
+       -12345.677999999998,
+       1.0000000000009823,
+       -12345.677999999996,
+       0.99999999999818101,
+       -12345.677999999987,
+       1.0000000000021101,
+       -12345.677999999998,
+       1.0000000000086766,
+       -12345.677999999976,
+       1.0000000000023648,
+       -12345.677999999998,
+       0.99999999999949063,
+       -12345.677999999998,
+       1.0000000000040017,
+       -12345.677999999978,
+       1.0000000000192086,
+       -12345.677999999994,
+       1.0000000000137153,
+       -12345.677999999994,
+       1.0000000000008002,
+       -12345.677999999998,
+       0.99999999999818101,
+       -12345.677999999987,
+       1.0000000000026739,
+       -12345.677999999996,
+       1.0000000000191722,
+       -12345.677999999965},
+      {1.0000000000043656, -12345.677999999998, 0.99999999999770806, -12345.677999999993, 1,
+       -12345.678, 1.0000000000006184, -12345.677999999998, 1.0000000000043656,
+       -12345.677999999998},
+      {1, -12345.678},
+      {1, -12345.678},
+      {1, -12345.678, 1, -12345.678, 1, -12345.678, 0.99999999999898137, -12345.677999999996,
+       0.99999999999210554, -12345.677999999973, 1.0000000000073488, -12345.677999999996,
+       1.0000000000043656, -12345.677999999998},
+      {1.0000000000004274,
+       -12345.677999999993,
+       1.0000000000147429,
+       -12345.677999999993,
+       1.0000000000139244,
+       -12345.677999999971,
+       1.0000000000082991,
+       -12345.677999999984,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1.0000000000174623,
+       -12345.677999999994,
+       1.0000000000008731,
+       -12345.678,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1.0000000000021827,
+       -12345.678,
+       1.0000000000003091,
+       -12345.678,
+       1.0000000000201907,
+       -12345.677999999969,
+       1,
+       -12345.678,
+       1.0000000000004274,
+       -12345.677999999993}};
+  Options o;
+  o.start = LocateStart::Grid;
+  std::string broken;
+  EXPECT_GE(snapRoundings(lines, o, false, broken), 1);
+  EXPECT_EQ(broken, "");
+}
+
+TEST(Constraints, TangleWhereComputedCrossingsWouldCrossChains) {
+  // Four segments within 4 ulps of (-3.5e-7, -12345.678): computed crossings made the chains
+  // of two segments that do not meet cross.
+  const Polylines lines = {
+      {-3.500000000000001e-07, -12345.677999999998, -3.4999999999999993e-07, -12345.678000000004},
+      {-3.500000000000001e-07, -12345.678000000004, -3.5e-07, -12345.678},
+      {-3.4999999999999993e-07, -12345.678, -3.500000000000001e-07, -12345.678000000002},
+      {-3.5000000000000004e-07, -12345.677999999998, -3.499999999999999e-07, -12345.678000000002}};
+  std::string broken;
+  EXPECT_EQ(snapRoundings(lines, {}, true, broken), 1);
+  EXPECT_EQ(broken, "");
+}
+
+TEST(Constraints, TangleWhereComputedCrossingsWouldGoBack) {
+  // Within 2 ulps of (1e100, -12345.678): a computed crossing routed a chain back along its
+  // segment.
+  const Polylines lines = {
+      {1.0000000000000002e+100, -12345.678000000002, 1e+100, -12345.677999999996},
+      {9.999999999999998e+99, -12345.678, 1.0000000000000004e+100, -12345.678},
+      {1.0000000000000002e+100, -12345.678, 1e+100, -12345.678000000004}};
+  std::string broken;
+  EXPECT_EQ(snapRoundings(lines, {}, true, broken), 1);
+  EXPECT_EQ(broken, "");
+}
+
+TEST(Constraints, FuzzCrossingOfBentPiecesCrossesChains) {
+  // A ring among subnormals: a piece bent through one crossing met a segment that its input
+  // segment misses, and the crossing of the two pieces fit: the chains crossed.
+  const double u = std::numeric_limits<double>::denorm_min();
+  const Polylines lines = {{-2 * u, -u, 3 * u, 4 * u, u, 0, 2 * u, 0, -3 * u, -3 * u, -u, -3 * u,
+                            4 * u, 4 * u, -3 * u, -3 * u}};
+  Options o;
+  o.order = InsertionOrder::Input;
+  o.gridDensity = 2;
+  std::string broken;
+  EXPECT_EQ(snapRoundings(lines, o, true, broken), 1);
+  EXPECT_EQ(broken, "");
+}
+
+TEST(Constraints, SnapRoundingAcrossBinadeEnds) {
+  // Where the spacing of doubles doubles (at 1 and at 2^24), rounding cells are uneven; a
+  // vertex left between a segment and its chain joins the chain. Subnormal steps on the
+  // other axis.
+  const double u = std::numeric_limits<double>::denorm_min(), one = 1, big = 0x1p24;
+  const auto below = [](double v, int k) {
+    for (; k > 0; --k) v = std::nextafter(v, 0.0);
+    return v;
+  };
+  const auto above = [](double v, int k) {
+    for (; k > 0; --k) v = std::nextafter(v, 2 * v);
+    return v;
+  };
+  const Polylines atOne = {{above(one, 2), 2 * u, below(one, 1), -2 * u, above(one, 1), 2 * u},
+                           {below(one, 2), -2 * u, above(one, 1), u},
+                           {above(one, 1), u, above(one, 1), -u},
+                           {above(one, 1), -u, below(one, 2), -u}};
+  const Polylines atBig = {{0, below(big, 2), 2 * u, big},
+                           {2 * u, big, -2 * u, below(big, 2)},
+                           {-2 * u, below(big, 2), -u, below(big, 1)},
+                           {-2 * u, below(big, 1), u, below(big, 2)}};
+  Options always;
+  always.snapRounding = SnapRounding::Always;
+  for (const Polylines* lines : {&atOne, &atBig}) {
+    std::string broken;
+    EXPECT_EQ(snapRoundings(*lines, always, true, broken), 1);
+    EXPECT_EQ(broken, "");
+  }
+}
+
+TEST(Constraints, SnapRoundingEverywhereKeepsTheGuarantee) {
+  // Snap rounding of every call, on inputs that computed crossings handle: the guarantee
+  // holds all the same, and rings still decide inside and outside.
+  Options always;
+  always.snapRounding = SnapRounding::Always;
+  testing::Random r(12);
+  Polylines random;
+  for (int i = 0; i < 200; ++i)
+    random.push_back({r.uniform(), r.uniform(), r.uniform(), r.uniform()});
+  const Polylines lines = {{0, 0, 10, 0}, {2, 0, 5, 0, 12, 0},  {-3, 0, 1, 0, 1, 0, 7, 0},
+                           {5, -5, 5, 5}, {0, 0, 5, 5, 10, 10}, {3, 3, 8, 8}};
+  EXPECT_EQ(check(testing::uniformPoints(300, 13), random, always), "");
+  EXPECT_EQ(check({-5, -5, 15, 8, 4, 7, 6, -2}, lines, always), "");
+  EXPECT_EQ(check({}, scaled(random, 1e-300, 0, 0), always), "");
+  EXPECT_EQ(check({}, scaled(random, 3, 1.6e7, -1e9), always), "");
+  MeshOptions mo;
+  mo.insideFlags = true;
+  const Polylines rings = nestedRings();
+  Result res =
+      run(testing::transformed(testing::uniformPoints(400, 6), 20, -3, -5), rings, mo, always);
+  ASSERT_TRUE(res.status.ok());
+  expectInsideMatchesOracle(rings, res.mesh);
 }
 
 TEST(Constraints, ConstraintsBeforeAnyTriangle) {

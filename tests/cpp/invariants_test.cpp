@@ -1,6 +1,10 @@
 // The checker must fail on broken meshes, or every other test proves nothing.
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <string>
+
+#include "constraint_invariants.h"
 #include "geocdt/triangulation.h"
 #include "invariants.h"
 #include "point_generators.h"
@@ -78,6 +82,62 @@ TEST(Invariants, RejectsDuplicateVertices) {
   m.points.push_back(1);
   m.points.push_back(1);
   EXPECT_NE(testing::checkTriangulation(m), "");
+}
+
+// Constrained edges alone, each as a degenerate triangle (u, v, v) whose first half-edge is
+// constrained: the constraint checker reads nothing else.
+Mesh edgesOnly(const std::vector<double>& points,
+               const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges) {
+  Mesh m;
+  m.points = points;
+  for (const auto& [u, v] : edges) {
+    m.triangles.insert(m.triangles.end(), {u, v, v});
+    m.halfedges.insert(m.halfedges.end(), {-1, -1, -1});
+    m.constrained.insert(m.constrained.end(), {1, 0, 0});
+  }
+  return m;
+}
+
+TEST(ConstraintInvariants, BoundIsTwoUlpsOfTheLargestCoordinate) {
+  // Segment (0, 0)-(4, 0): ulp(4) = 2^-50, so the bound is 2^-49 = 1.78e-15.
+  EXPECT_EQ(testing::chainBound(0, 0, 4, 0), 0x1p-49);
+  EXPECT_EQ(testing::chainBound(-1e-320, 0, 0, 0), 2 * std::numeric_limits<double>::denorm_min());
+  const testing::Polylines line = {{0, 0, 4, 0}};
+  const Mesh near = edgesOnly({0, 0, 4, 0, 2, 1.7e-15}, {{0, 2}, {2, 1}});
+  EXPECT_EQ(testing::checkConstraints(near, line, {0, 1}), "");
+  const Mesh far = edgesOnly({0, 0, 4, 0, 2, 1.8e-15}, {{0, 2}, {2, 1}});
+  EXPECT_NE(testing::checkConstraints(far, line, {0, 1}).find("bound"), std::string::npos);
+}
+
+TEST(ConstraintInvariants, RejectsAChainOutOfOrder) {
+  // On the segment, but from 3 back to 2.
+  const Mesh m = edgesOnly({0, 0, 4, 0, 3, 0, 2, 0}, {{0, 2}, {2, 3}, {3, 1}});
+  EXPECT_NE(testing::checkConstraints(m, {{0, 0, 4, 0}}, {0, 1}).find("in order"),
+            std::string::npos);
+}
+
+TEST(ConstraintInvariants, RejectsANewCrossing) {
+  // t lies strictly above s; both chains pass through c, within the bound (1.78e-15) of
+  // each, but s's chain passes above t's start and below t's end: a crossing the segments
+  // lack.
+  const testing::Polylines lines = {{0, 0, 4, 0}, {1, 0.2e-15, 4, 1.1e-15}};
+  const std::vector<double> points = {0, 0, 4, 0, 1, 0.2e-15, 4, 1.1e-15, 2, 1.6e-15};
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> edges = {
+      {0, 4}, {4, 1}, {2, 4}, {4, 3}};
+  EXPECT_NE(testing::checkConstraints(edgesOnly(points, edges), lines, {0, 1, 2, 3})
+                .find("cross 1 times"),
+            std::string::npos);
+  // Through a point below t's start instead, s's chain stays below t's: they touch.
+  std::vector<double> below = points;
+  below[9] = 0.3e-15;
+  EXPECT_EQ(testing::checkConstraints(edgesOnly(below, edges), lines, {0, 1, 2, 3}), "");
+}
+
+TEST(ConstraintInvariants, RejectsALostCrossing) {
+  const testing::Polylines lines = {{0, 0, 4, 0}, {2, -1, 2, 1}};
+  const Mesh m = edgesOnly({0, 0, 4, 0, 2, -1, 2, 1}, {{0, 1}, {2, 3}});
+  EXPECT_NE(testing::checkConstraints(m, lines, {0, 1, 2, 3}).find("share no vertex"),
+            std::string::npos);
 }
 
 }  // namespace

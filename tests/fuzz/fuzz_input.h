@@ -55,6 +55,10 @@ enum class PointMode : std::uint8_t {
   Folded,     // 16 bytes: two doubles folded into the valid range
   SmallGrid,  // 1 byte: a point of the 16 x 16 integer grid
   Lattice,    // 2 bytes: a point of a 32 x 32 lattice, or an earlier point reused
+  // 1 byte: a point of an 8 x 8 grid of neighbouring doubles, a few ulps wide, around an
+  // offset: where every crossing rounds onto the same few doubles (snap rounding's ground).
+  // Chosen by SmallGrid's mode bits with bit 2 set, so older seeds keep their meaning.
+  TinyGrid,
 };
 
 class PointDecoder {
@@ -65,6 +69,32 @@ class PointDecoder {
   explicit PointDecoder(ByteReader& in) {
     const std::uint8_t b = in.byte();
     mode_ = static_cast<PointMode>(b & 3);
+    if (mode_ == PointMode::SmallGrid && (b & 4)) {
+      mode_ = PointMode::TinyGrid;
+      // Offsets on each axis: zero (subnormal steps), binade ends (1, 2^24, the smallest
+      // normal double), and large, small, huge and geographic values.
+      static constexpr double kOffsets[16] = {0,
+                                              1,
+                                              0x1p24,
+                                              16000000.25,
+                                              -12345.678,
+                                              1e-300,
+                                              0x1p-1022,
+                                              1e100,
+                                              -3.5e-7,
+                                              6378137.0,
+                                              -1e150,
+                                              0.5,
+                                              179.99999999999997,
+                                              -2.0,
+                                              1e-5,
+                                              0x1p-1074};
+      const std::uint8_t o = in.byte(), w = in.byte();
+      originX_ = kOffsets[o & 15];
+      originY_ = kOffsets[o >> 4];
+      ulps_ = 1 << (w & 3);  // the grid's step, in ulps
+      return;
+    }
     if (mode_ != PointMode::Lattice) return;
     static constexpr double kOrigins[8] = {0,           1,      -12345.678, 1.6e7 + 0.25,
                                            179.9999999, 1e-300, 1e100,      0};
@@ -99,6 +129,12 @@ class PointDecoder {
         break;
       }
       case PointMode::Lattice: nextLattice(in, x, y); break;
+      case PointMode::TinyGrid: {
+        const std::uint8_t b = in.byte();
+        x = stepped(originX_, (b & 7) - 3);
+        y = stepped(originY_, ((b >> 3) & 7) - 3);
+        break;
+      }
     }
     history_.push_back(x);
     history_.push_back(y);
@@ -128,23 +164,33 @@ class PointDecoder {
     }  // op 5: an exact duplicate
   }
 
+  // v moved by k grid steps of ulps_ neighbouring doubles each.
+  double stepped(double v, int k) const {
+    for (int i = 0; i < std::abs(k) * ulps_; ++i)
+      v = std::nextafter(v, k > 0 ? INFINITY : -INFINITY);
+    return clamp(v);
+  }
+
   static double clamp(double v) {
     return std::fabs(v) <= kMaxCoordinate ? v : std::copysign(kMaxCoordinate, v);
   }
 
   PointMode mode_ = PointMode::SmallGrid;
   double originX_ = 0, originY_ = 0, step_ = 1, cos_ = 1, sin_ = 0;
+  int ulps_ = 1;
   std::vector<double> history_;
 };
 
-// Triangulation options from one byte: every order, both location starts, and grid
-// densities that make the grid grow early or late.
+// Triangulation options from one byte: every order, both location starts, grid densities
+// that make the grid grow early or late, and (bit 7, unset in older seeds) snap rounding of
+// every call.
 inline Options decodeOptions(std::uint8_t b) {
   static constexpr double kDensities[4] = {2.0, 0.25, 1.0, 8.0};
   Options o;
   o.order = static_cast<InsertionOrder>(b % 3);
   o.start = (b >> 2) & 1 ? LocateStart::Grid : LocateStart::LastTriangle;
   o.gridDensity = kDensities[(b >> 3) & 3];
+  o.snapRounding = b & 0x80 ? SnapRounding::Always : SnapRounding::WhenNeeded;
   return o;
 }
 
@@ -152,7 +198,8 @@ inline std::string describeOptions(const Options& o) {
   static const char* kOrders[3] = {"Input", "Hilbert", "Brio"};
   return std::string("order=") + kOrders[static_cast<int>(o.order)] +
          " start=" + (o.start == LocateStart::Grid ? "Grid" : "LastTriangle") +
-         " gridDensity=" + std::to_string(o.gridDensity);
+         " gridDensity=" + std::to_string(o.gridDensity) +
+         (o.snapRounding == SnapRounding::Always ? " snapRounding=Always" : "");
 }
 
 // Coordinates printed so that they read back bit for bit.

@@ -120,6 +120,65 @@ test('insertPolyline on a Triangulation, then results with inside flags', () => 
   t.dispose();
 });
 
+test('a tangle a few ulps wide: every chain within two ulps of its segment, in order', () => {
+  // Rings and lines within 3e-11 of (1, -12345.678), where every crossing rounds onto the
+  // same few doubles: snap-rounded, and held to the bound exactly. (Inside flags follow the
+  // snap-rounded rings; triangles an ulp wide cannot be compared with the input's.)
+  const polylines = [
+    [
+      1.0000000000191722, -12345.677999999965, 1.0000000000268119, -12345.677999999991, 1,
+      -12345.678, 1.0000000000043656, -12345.677999999998, 1.0000000000009823, -12345.677999999996,
+      0.99999999999818101, -12345.677999999987, 1.0000000000021101, -12345.677999999998,
+      1.0000000000086766, -12345.677999999976, 1.0000000000023648, -12345.677999999998,
+      0.99999999999949063, -12345.677999999998, 1.0000000000040017, -12345.677999999978,
+      1.0000000000192086, -12345.677999999994, 1.0000000000137153, -12345.677999999994,
+      1.0000000000008002, -12345.677999999998, 0.99999999999818101, -12345.677999999987,
+      1.0000000000026739, -12345.677999999996, 1.0000000000191722, -12345.677999999965
+    ],
+    [
+      1.0000000000043656, -12345.677999999998, 0.99999999999770806, -12345.677999999993, 1,
+      -12345.678, 1.0000000000006184, -12345.677999999998, 1.0000000000043656, -12345.677999999998
+    ],
+    [1, -12345.678],
+    [1, -12345.678],
+    [
+      1, -12345.678, 1, -12345.678, 1, -12345.678, 0.99999999999898137, -12345.677999999996,
+      0.99999999999210554, -12345.677999999973, 1.0000000000073488, -12345.677999999996,
+      1.0000000000043656, -12345.677999999998
+    ],
+    [
+      1.0000000000004274, -12345.677999999993, 1.0000000000147429, -12345.677999999993,
+      1.0000000000139244, -12345.677999999971, 1.0000000000082991, -12345.677999999984, 1,
+      -12345.678, 1, -12345.678, 1, -12345.678, 1.0000000000174623, -12345.677999999994,
+      1.0000000000008731, -12345.678, 1, -12345.678, 1, -12345.678, 1, -12345.678,
+      1.0000000000021827, -12345.678, 1.0000000000003091, -12345.678, 1.0000000000201907,
+      -12345.677999999969, 1, -12345.678, 1.0000000000004274, -12345.677999999993
+    ],
+  ];
+  const input = { polylines };
+  const r = triangulate(input);
+  checkMesh(r, input);
+  checkConstraints(r, input);
+  const t = new Triangulation();
+  for (const line of polylines) t.insertPolyline(line);
+  checkMesh(t.results());
+  t.dispose();
+});
+
+test('the checker refuses a chain beyond the bound', () => {
+  // Segment (0, 0)-(4, 0) has the bound 2^-49 (two spacings at 4); its crossing with
+  // x = 2 moved up by more than that no longer passes.
+  const input = { polylines: [[0, 0, 4, 0], [2, -1, 2, 1]] };
+  const r = triangulate(input);
+  checkConstraints(r, input);
+  const crossing = r.points.findIndex((v, i) => i % 2 === 0 && v === 2 && r.points[i + 1] === 0);
+  const moved = { ...r, points: Float64Array.from(r.points) };
+  moved.points[crossing + 1] = 2 ** -49;
+  checkConstraints(moved, input);
+  moved.points[crossing + 1] = 1.1 * 2 ** -49;
+  assert.throws(() => checkConstraints(moved, input), /bound/);
+});
+
 test('constraint calls leave the heap at its baseline', () => {
   const input = {
     points: uniform(50, 1),

@@ -8,12 +8,14 @@ namespace geocdt {
 
 enum class StatusCode {
   Ok = 0,
-  InvalidArgument,       // wrong shape of input (odd length, null pointer with a count)
-  InvalidCoordinate,     // NaN, infinity, or |coordinate| > kMaxCoordinate
-  OutOfMemory,           // an allocation failed; the triangulation is unchanged or cleared
-  ConstraintUnresolved,  // a constraint segment could not be inserted (names polyline/segment)
-  InternalError,         // a broken invariant (say, point location or a segment walk that
-                         // finds no way on): a bug, reported rather than hung on
+  InvalidArgument,    // wrong shape of input (odd length, null pointer with a count)
+  InvalidCoordinate,  // NaN, infinity, or |coordinate| > kMaxCoordinate
+  OutOfMemory,        // an allocation failed; the triangulation is unchanged or cleared
+  // No longer returned: crossings that cannot be computed are snap-rounded. The value stays
+  // so that the codes after it keep their numbers (the bindings map codes by number).
+  ConstraintUnresolved,
+  InternalError,  // a broken invariant (say, point location or a segment walk that finds no
+                  // way on): a bug, reported rather than hung on
 };
 
 inline constexpr std::size_t kNoIndex = static_cast<std::size_t>(-1);

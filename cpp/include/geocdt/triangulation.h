@@ -50,6 +50,12 @@ struct Progress {
   }
 };
 
+// When constraint crossings are snap-rounded (see snapRounding below).
+enum class SnapRounding : std::uint8_t {
+  WhenNeeded,  // only where computed crossings would break the guarantee (tangles)
+  Always,      // every call: each call then rebuilds the triangulation (for tests, mostly)
+};
+
 struct Options {
   // Brio flips less than Hilbert (3.2 flips a point on 1M uniform points, against 4.8): in
   // Hilbert order each point lands next to the empty part of the domain, where the hull's
@@ -61,6 +67,10 @@ struct Options {
   // per 4-8 points, about 1 byte per point.
   double gridDensity = 8.0;
   Progress progress;
+  // Crossings are computed from the input segments and checked to fit; where that would
+  // move a constraint farther than the guarantee allows, the constraints are snap-rounded
+  // instead (README, "How it works").
+  SnapRounding snapRounding = SnapRounding::WhenNeeded;
 };
 
 enum class FillRule : std::uint8_t { EvenOdd, NonZero };
@@ -145,6 +155,9 @@ struct Stats {
   std::uint64_t crossings = 0;      // vertices added where constraints cross
   std::uint64_t polylines = 0;
   std::uint64_t segments = 0;  // constraint segments inserted
+  // Times the constraints were snap-rounded because computed crossings would have broken
+  // the guarantee (tangles of vertices a few ulps apart; never on real data so far).
+  std::uint64_t snapRoundings = 0;
 };
 
 // One Triangulation serves one thread at a time. Its const functions leave the mesh as it

@@ -1,9 +1,14 @@
 #include "constraint_invariants.h"
 
+#include <gmpxx.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
+
+#include "geocdt/predicates.h"
 
 namespace geocdt::testing {
 
@@ -13,31 +18,73 @@ struct Segment {
   double ax, ay, bx, by;
 };
 
-// In long double: its exponent range keeps squares of subnormal lengths from underflowing.
-double distanceToSegment(const Segment& s, double x, double y) {
+template <typename... Args>
+std::string describe(Args&&... args) {
+  std::ostringstream out;
+  out.precision(17);
+  (out << ... << args);
+  return out.str();
+}
+
+// In long double: its exponent range keeps squares of subnormal lengths from underflowing,
+// and its 64-bit significand keeps the error far below the bound (2^-51 of the magnitude).
+long double distanceToSegment(const Segment& s, double x, double y) {
   const long double dx = (long double)s.bx - s.ax, dy = (long double)s.by - s.ay;
   const long double len2 = dx * dx + dy * dy;
   long double t =
       len2 > 0 ? (((long double)x - s.ax) * dx + ((long double)y - s.ay) * dy) / len2 : 0;
   t = std::clamp(t, 0.0L, 1.0L);
   const long double ex = s.ax + t * dx - x, ey = s.ay + t * dy - y;
-  return static_cast<double>(std::sqrt(ex * ex + ey * ey));
+  return std::sqrt(ex * ex + ey * ey);
 }
 
-// Rounding of crossing points: a few ulps of the coordinates plus a tiny part of the length.
-// Among subnormals an ulp is the smallest double, however small the coordinates.
-double tolerance(const Segment& s) {
-  const double magnitude =
-      std::max({std::fabs(s.ax), std::fabs(s.ay), std::fabs(s.bx), std::fabs(s.by)});
-  const double ulp = std::max(magnitude * std::numeric_limits<double>::epsilon(),
-                              std::numeric_limits<double>::denorm_min());
-  return 1e-9 * std::hypot(s.bx - s.ax, s.by - s.ay) + 64 * ulp;
+// The spacing of doubles at |v|.
+double spacing(double v) { return std::nextafter(std::fabs(v), INFINITY) - std::fabs(v); }
+
+// Whether (x, y) lies within `bound` of the closed segment, in rationals.
+bool withinExactly(const Segment& s, double x, double y, double bound) {
+  const mpq_class ax(s.ax), ay(s.ay), bx(s.bx), by(s.by), px(x), py(y);
+  const mpq_class dx = bx - ax, dy = by - ay, wx = px - ax, wy = py - ay;
+  const mpq_class dot = wx * dx + wy * dy, length2 = dx * dx + dy * dy;
+  mpq_class distance2;
+  if (dot <= 0) {
+    distance2 = wx * wx + wy * wy;
+  } else if (dot >= length2) {
+    const mpq_class ex = px - bx, ey = py - by;
+    distance2 = ex * ex + ey * ey;
+  } else {
+    const mpq_class cross = dx * wy - dy * wx;
+    distance2 = cross * cross / length2;
+  }
+  const mpq_class b(bound);
+  return distance2 <= b * b;
 }
 
-// Segments bucketed on a uniform grid by their bounding boxes.
+bool within(const Segment& s, double x, double y, double bound) {
+  const long double d = distanceToSegment(s, x, y);
+  if (d <= 0.9L * bound) return true;
+  if (d >= 1.1L * bound) return false;
+  return withinExactly(s, x, y, bound);
+}
+
+// The sign of (q - p) . (b - a): whether q lies beyond p along the segment's direction.
+int alongSign(const Segment& s, double px, double py, double qx, double qy) {
+  const long double ux = (long double)qx - px, uy = (long double)qy - py;
+  const long double dx = (long double)s.bx - s.ax, dy = (long double)s.by - s.ay;
+  const long double v = ux * dx + uy * dy;
+  const long double error = 0x1p-58L * (std::fabs(ux * dx) + std::fabs(uy * dy));
+  if (v > error) return 1;
+  if (-v > error) return -1;
+  const mpq_class exact = (mpq_class(qx) - mpq_class(px)) * (mpq_class(s.bx) - mpq_class(s.ax)) +
+                          (mpq_class(qy) - mpq_class(py)) * (mpq_class(s.by) - mpq_class(s.ay));
+  return sgn(exact);
+}
+
+// Segments bucketed on a uniform grid by their bounding boxes, widened by their bounds.
 class SegmentGrid {
  public:
-  explicit SegmentGrid(const std::vector<Segment>& segments) : segments_(segments) {
+  SegmentGrid(const std::vector<Segment>& segments, const std::vector<double>& bounds)
+      : segments_(segments), bounds_(bounds) {
     minX_ = minY_ = std::numeric_limits<double>::infinity();
     double maxX = -minX_, maxY = -minY_;
     for (const Segment& s : segments) {
@@ -52,7 +99,7 @@ class SegmentGrid {
     cells_.resize(side_ * side_);
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const Segment& s = segments[i];
-      const double t = tolerance(s);
+      const double t = bounds[i];
       const std::size_t x0 = column(std::min(s.ax, s.bx) - t),
                         x1 = column(std::max(s.ax, s.bx) + t);
       const std::size_t y0 = row(std::min(s.ay, s.by) - t), y1 = row(std::max(s.ay, s.by) + t);
@@ -60,15 +107,14 @@ class SegmentGrid {
         for (std::size_t x = x0; x <= x1; ++x) cells_[y * side_ + x].push_back(i);
     }
   }
-  // Index of a segment that both points lie on, or -1.
-  long find(double x0, double y0, double x1, double y1) const {
-    const double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1);
+  // Whether some segment has both points within its bound.
+  bool covers(double x0, double y0, double x1, double y1) const {
+    const double mx = 0.5 * x0 + 0.5 * x1, my = 0.5 * y0 + 0.5 * y1;
     for (const std::size_t i : cells_[row(my) * side_ + column(mx)]) {
       const Segment& s = segments_[i];
-      const double t = tolerance(s);
-      if (distanceToSegment(s, x0, y0) <= t && distanceToSegment(s, x1, y1) <= t) return long(i);
+      if (within(s, x0, y0, bounds_[i]) && within(s, x1, y1, bounds_[i])) return true;
     }
-    return -1;
+    return false;
   }
 
  private:
@@ -79,31 +125,124 @@ class SegmentGrid {
     return c >= double(side_) ? side_ - 1 : static_cast<std::size_t>(c);
   }
   const std::vector<Segment>& segments_;
+  const std::vector<double>& bounds_;
   double minX_, minY_, cellX_, cellY_;
   std::size_t side_;
   std::vector<std::vector<std::size_t>> cells_;
 };
 
+// How two input segments meet: not at all, in one point interior to both, or otherwise
+// (at an end, or overlapping), where a crossing of their chains is not defined.
+enum class Meeting { Apart, Crossing, Touching };
+
+Meeting meeting(const Segment& s, const Segment& t) {
+  const int o1 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.ax, t.ay));
+  const int o2 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.bx, t.by));
+  const int o3 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.ax, s.ay));
+  const int o4 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.bx, s.by));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return Meeting::Crossing;
+  if (o1 * o2 > 0 || o3 * o4 > 0) return Meeting::Apart;
+  // A zero: an end on the other's line. It meets the other segment when it lies within
+  // that segment's box (then it is on the segment).
+  const auto inBox = [](const Segment& g, double x, double y) {
+    return std::min(g.ax, g.bx) <= x && x <= std::max(g.ax, g.bx) && std::min(g.ay, g.by) <= y &&
+           y <= std::max(g.ay, g.by);
+  };
+  if ((o1 == 0 && inBox(s, t.ax, t.ay)) || (o2 == 0 && inBox(s, t.bx, t.by)) ||
+      (o3 == 0 && inBox(t, s.ax, s.ay)) || (o4 == 0 && inBox(t, s.bx, s.by)))
+    return Meeting::Touching;
+  return Meeting::Apart;
+}
+
+// Whether ray a->w lies strictly inside the counter-clockwise sector from ray a->u to a->v.
+bool inSector(const std::vector<double>& p, std::uint32_t a, std::uint32_t u, std::uint32_t v,
+              std::uint32_t w) {
+  const auto turn = [&](std::uint32_t from, std::uint32_t to) {
+    return int(
+        orient2d(p[2 * a], p[2 * a + 1], p[2 * from], p[2 * from + 1], p[2 * to], p[2 * to + 1]));
+  };
+  const int uv = turn(u, v);
+  if (uv > 0) return turn(u, w) > 0 && turn(w, v) > 0;
+  if (uv < 0) return !(turn(v, w) >= 0 && turn(w, u) >= 0);
+  return turn(u, w) > 0;  // u and v opposite: a half-plane
+}
+
+// How often chain q crosses chain p, counted over the stretches they share; `undefined`
+// tells whether a stretch holds an end of either chain (where a crossing is not defined).
+using Positions = std::vector<std::pair<std::uint32_t, std::size_t>>;  // (vertex, index)
+
+// A chain's vertices with their indices, sorted for lookup.
+Positions positionsOf(const std::vector<std::uint32_t>& chain) {
+  Positions out;
+  for (std::size_t k = 0; k < chain.size(); ++k) out.push_back({chain[k], k});
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+int crossings(const std::vector<double>& p, const std::vector<std::uint32_t>& P,
+              const std::vector<std::uint32_t>& Q, const Positions& inQ, bool& undefined) {
+  const std::size_t m = P.size(), n = Q.size();
+  int count = 0;
+  undefined = false;
+  for (std::size_t i = 0; i < m; ++i) {
+    const auto found =
+        std::lower_bound(inQ.begin(), inQ.end(), std::pair<std::uint32_t, std::size_t>{P[i], 0});
+    if (found == inQ.end() || found->first != P[i]) continue;
+    const std::size_t k = found->second;
+    // The shared stretch P[i..j] = Q[k..l], with Q running forward or backward along it.
+    int step = 0;
+    if (i + 1 < m && k + 1 < n && P[i + 1] == Q[k + 1]) step = 1;
+    if (i + 1 < m && k >= 1 && P[i + 1] == Q[k - 1]) step = -1;
+    std::size_t j = i, l = k;
+    while (step != 0 && j + 1 < m && l + step < n && P[j + 1] == Q[l + step]) {
+      ++j;
+      l += step;
+    }
+    if (i == 0 || j + 1 == m || std::min(k, l) == 0 || std::max(k, l) + 1 == n) {
+      undefined = true;
+    } else {
+      // Q's neighbours off the stretch at its two ends, each on the left or the right of P.
+      const std::uint32_t qi = step >= 0 ? Q[k - 1] : Q[k + 1];
+      const std::uint32_t qj = step >= 0 ? Q[l + 1] : Q[l - 1];
+      const bool leftAtI = inSector(p, P[i], P[i + 1], P[i - 1], qi);
+      const bool leftAtJ = inSector(p, P[j], P[j + 1], P[j - 1], qj);
+      count += leftAtI != leftAtJ;
+    }
+    i = j;
+  }
+  return count;
+}
+
 }  // namespace
+
+double chainBound(double ax, double ay, double bx, double by) {
+  const double m = std::max({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by)});
+  return 2 * (std::nextafter(m, INFINITY) - m);
+}
 
 std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
                              const std::vector<std::uint32_t>& inputToVertex) {
   const std::vector<double>& p = mesh.points;
   std::vector<Segment> segments;
+  std::vector<double> bounds;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
+  std::vector<std::uint32_t> polylineOf;
   std::size_t offset = 0;
-  for (const auto& line : polylines) {
+  for (std::size_t i = 0; i < polylines.size(); ++i) {
+    const std::vector<double>& line = polylines[i];
     const std::size_t n = line.size() / 2;
     for (std::size_t k = 0; k + 1 < n; ++k) {
       const std::uint32_t u = inputToVertex[offset + k], v = inputToVertex[offset + k + 1];
       if (u == v) continue;
       segments.push_back({line[2 * k], line[2 * k + 1], line[2 * k + 2], line[2 * k + 3]});
+      bounds.push_back(chainBound(line[2 * k], line[2 * k + 1], line[2 * k + 2], line[2 * k + 3]));
       ends.push_back({u, v});
+      polylineOf.push_back(static_cast<std::uint32_t>(i));
     }
     offset += n;
   }
   if (segments.empty()) return "";
-  const SegmentGrid grid(segments);
+  const SegmentGrid grid(segments, bounds);
 
   // Constrained neighbours of each vertex.
   std::vector<std::vector<std::uint32_t>> next(p.size() / 2);
@@ -112,41 +251,198 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
     const std::uint32_t u = mesh.triangles[e], v = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
     next[u].push_back(v);
     if (mesh.halfedges[e] < 0) next[v].push_back(u);  // a hull edge has no twin to list it
-    if (grid.find(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]) < 0) {
-      std::ostringstream out;
-      out << "constrained edge " << u << "-" << v << " (" << p[2 * u] << ", " << p[2 * u + 1]
-          << ")-(" << p[2 * v] << ", " << p[2 * v + 1] << ") lies on no input segment";
-      return out.str();
-    }
+    if (!grid.covers(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]))
+      return describe("constrained edge ", u, "-", v, " (", p[2 * u], ", ", p[2 * u + 1], ")-(",
+                      p[2 * v], ", ", p[2 * v + 1], ") lies within the bound of no input segment");
   }
 
-  // From each segment's start, constrained edges lying on it lead to its end: a search
-  // over those edges (several vertices may lie on a segment within rounding).
-  std::vector<std::uint32_t> seenAt(p.size() / 2, 0xFFFFFFFFu);
-  std::vector<std::uint32_t> frontier;
-  for (std::size_t i = 0; i < segments.size(); ++i) {
+  // The polylines each constrained edge names, when the mesh has provenance: a chain only
+  // uses edges that name its polyline (with coordinates of very different sizes the bound is
+  // wide across the smaller axis, and other segments' edges would fit it too).
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> named;
+  for (std::size_t i = 0; i < mesh.constraintEdges.size(); ++i) {
+    const std::uint32_t e = mesh.constraintEdges[i];
+    const std::uint32_t u = mesh.triangles[e], v = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
+    const std::uint64_t key = std::uint64_t{std::min(u, v)} << 32 | std::max(u, v);
+    named[key].assign(mesh.sources.begin() + mesh.sourceOffsets[i],
+                      mesh.sources.begin() + mesh.sourceOffsets[i + 1]);
+  }
+  const auto names = [&](std::uint32_t u, std::uint32_t v, std::uint32_t polyline) {
+    if (named.empty()) return true;
+    const auto it = named.find(std::uint64_t{std::min(u, v)} << 32 | std::max(u, v));
+    return it != named.end() &&
+           std::find(it->second.begin(), it->second.end(), polyline) != it->second.end();
+  };
+
+  // How far v strays from segment i in units of the spacing of doubles on each axis there
+  // (snap rounding keeps a chain within one such unit).
+  const auto stray = [&](std::size_t i, std::uint32_t v) {
     const Segment& s = segments[i];
-    const double t = tolerance(s);
-    const std::uint32_t goal = ends[i].second;
-    frontier.assign(1, ends[i].first);
-    seenAt[ends[i].first] = static_cast<std::uint32_t>(i);
-    bool found = false;
-    for (std::size_t k = 0; k < frontier.size() && !found; ++k) {
-      for (const std::uint32_t n : next[frontier[k]]) {
-        if (seenAt[n] == i || distanceToSegment(s, p[2 * n], p[2 * n + 1]) > t) continue;
-        seenAt[n] = static_cast<std::uint32_t>(i);
-        if (n == goal) found = true;
-        frontier.push_back(n);
+    const double gx = spacing(std::max(std::fabs(s.ax), std::fabs(s.bx)));
+    const double gy = spacing(std::max(std::fabs(s.ay), std::fabs(s.by)));
+    return distanceToSegment({s.ax / gx, s.ay / gy, s.bx / gx, s.by / gy}, p[2 * v] / gx,
+                             p[2 * v + 1] / gy);
+  };
+  // From each segment's start, constrained edges to vertices within the bound and further
+  // along lead to its end (a graph without cycles: positions increase). Where several chains
+  // would do, the one that strays least is the segment's: the chain snap rounding gives.
+  std::vector<std::uint32_t> seenAt(p.size() / 2, 0xFFFFFFFFu), from(p.size() / 2);
+  struct Step {
+    long double cost;  // the most a chain to here strays
+    std::uint32_t at, before;
+  };
+  std::vector<Step> queue;
+  std::vector<std::vector<std::uint32_t>> chains(segments.size());
+  std::uint32_t searches = 0;
+  const auto search = [&](std::size_t i, double bound, bool ordered) {
+    const Segment& s = segments[i];
+    const std::uint32_t goal = ends[i].second, mark = searches++;
+    queue.assign(1, {0.0L, ends[i].first, ends[i].first});
+    const auto later = [](const Step& a, const Step& b) { return a.cost > b.cost; };
+    while (!queue.empty()) {
+      std::pop_heap(queue.begin(), queue.end(), later);
+      const Step step = queue.back();
+      queue.pop_back();
+      const std::uint32_t at = step.at;
+      if (seenAt[at] == mark) continue;
+      seenAt[at] = mark;
+      from[at] = step.before;
+      if (at == goal) return true;
+      for (const std::uint32_t n : next[at]) {
+        if (seenAt[n] == mark || !names(at, n, polylineOf[i]) ||
+            !within(s, p[2 * n], p[2 * n + 1], bound))
+          continue;
+        if (ordered && alongSign(s, p[2 * at], p[2 * at + 1], p[2 * n], p[2 * n + 1]) <= 0)
+          continue;
+        queue.push_back({std::max(step.cost, stray(i, n)), n, at});
+        std::push_heap(queue.begin(), queue.end(), later);
       }
     }
-    if (!found) {
-      std::ostringstream out;
-      out << "input segment " << i << " (" << s.ax << ", " << s.ay << ")-(" << s.bx << ", " << s.by
-          << ") is not covered by a chain of constrained edges lying on it";
-      return out.str();
+    return false;
+  };
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& s = segments[i];
+    if (search(i, bounds[i], true)) {
+      std::vector<std::uint32_t>& chain = chains[i];
+      for (std::uint32_t v = ends[i].second; v != ends[i].first; v = from[v]) chain.push_back(v);
+      chain.push_back(ends[i].first);
+      std::reverse(chain.begin(), chain.end());
+      continue;
+    }
+    const std::string what = describe("input segment ", i, " (", s.ax, ", ", s.ay, ")-(", s.bx,
+                                      ", ", s.by, ") is not covered by a chain of constrained ");
+    if (search(i, bounds[i], false))
+      return what + "edges in order along it (within the bound, it goes back and forth)";
+    const double loose = 1e-6 * std::hypot(s.bx - s.ax, s.by - s.ay) + 1e6 * bounds[i];
+    if (search(i, loose, false))
+      return what + "edges within " + describe(bounds[i]) + " of it (only farther away)";
+    return what + "edges lying near it";
+  }
+
+  // The output names polylines, not segments: in a tangle a few ulps wide, a segment's chain
+  // can borrow edges of a neighbouring segment of its polyline, or pass one of its own
+  // vertices by, and still keep the bound. So a pair of chains that seems to cross is checked
+  // again with every chain of the two segments (up to 64 each): it fails only when every
+  // choice crosses.
+  const auto everyChain = [&](std::size_t i) {
+    const Segment& s = segments[i];
+    const std::uint32_t a = ends[i].first, b = ends[i].second;
+    std::vector<std::vector<std::uint32_t>> found;
+    std::vector<std::uint32_t> path(1, a);
+    std::vector<std::size_t> choice(1, 0);
+    while (!path.empty() && found.size() < 64) {
+      const std::uint32_t at = path.back();
+      if (at == b) {
+        found.push_back(path);
+        path.pop_back();
+        choice.pop_back();
+        continue;
+      }
+      std::size_t& k = choice.back();
+      while (k < next[at].size()) {
+        const std::uint32_t n = next[at][k];
+        if (names(at, n, polylineOf[i]) && within(s, p[2 * n], p[2 * n + 1], bounds[i]) &&
+            alongSign(s, p[2 * at], p[2 * at + 1], p[2 * n], p[2 * n + 1]) > 0)
+          break;
+        ++k;
+      }
+      if (k == next[at].size()) {
+        path.pop_back();
+        choice.pop_back();
+        continue;
+      }
+      path.push_back(next[at][k++]);
+      choice.push_back(0);
+    }
+    return found;
+  };
+
+  // No new crossings: pairs of chains that share a vertex, and, for inputs small enough to
+  // compare every pair, pairs of crossing segments whose chains share none.
+  std::vector<std::vector<std::uint32_t>> through(p.size() / 2);
+  for (std::size_t i = 0; i < chains.size(); ++i)
+    for (const std::uint32_t v : chains[i]) through[v].push_back(static_cast<std::uint32_t>(i));
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (const auto& list : through)
+    for (std::size_t a = 0; a < list.size(); ++a)
+      for (std::size_t b = a + 1; b < list.size(); ++b)
+        pairs.push_back({std::min(list[a], list[b]), std::max(list[a], list[b])});
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  // A crossing within the bound of an end may be kept as a touch at that end.
+  const auto crossingNearAnEnd = [&](std::size_t i, std::size_t j) {
+    const Segment &s = segments[i], &t = segments[j];
+    return within(t, s.ax, s.ay, bounds[j]) || within(t, s.bx, s.by, bounds[j]) ||
+           within(s, t.ax, t.ay, bounds[i]) || within(s, t.bx, t.by, bounds[i]);
+  };
+  std::vector<Positions> positions(chains.size());
+  for (std::size_t i = 0; i < chains.size(); ++i) positions[i] = positionsOf(chains[i]);
+  for (const auto& [i, j] : pairs) {
+    const Meeting how = meeting(segments[i], segments[j]);
+    if (how == Meeting::Touching || (how == Meeting::Crossing && crossingNearAnEnd(i, j))) continue;
+    int count = 0;
+    const auto wrong = [&](const std::vector<std::uint32_t>& P, const std::vector<std::uint32_t>& Q,
+                           const Positions& inQ) {
+      if (P.empty() || Q.empty()) return true;
+      bool undefined = false;
+      count = crossings(p, P, Q, inQ, undefined);
+      return how == Meeting::Apart ? count > 0 : count > 1 || (!undefined && count != 1);
+    };
+    if (wrong(chains[i], chains[j], positions[j])) {
+      const std::vector<std::vector<std::uint32_t>> is = everyChain(i), js = everyChain(j);
+      bool some = false;
+      for (const auto& Q : js) {
+        const Positions inQ = positionsOf(Q);
+        for (const auto& P : is) some = some || !wrong(P, Q, inQ);
+      }
+      if (some) continue;
+      wrong(chains[i], chains[j], positions[j]);
+      return describe("the chains of input segments ", i, " and ", j, " cross ", count,
+                      " times, but the segments ",
+                      how == Meeting::Apart ? "do not meet" : "cross once");
     }
   }
+  if (segments.size() <= 2000) {
+    for (std::size_t i = 0; i < segments.size(); ++i)
+      for (std::size_t j = i + 1; j < segments.size(); ++j)
+        if (meeting(segments[i], segments[j]) == Meeting::Crossing && !crossingNearAnEnd(i, j) &&
+            !std::binary_search(pairs.begin(), pairs.end(),
+                                std::pair<std::uint32_t, std::uint32_t>(i, j)))
+          return describe("input segments ", i, " and ", j,
+                          " cross but their chains share no vertex");
+  }
   return "";
+}
+
+bool withinBoundOfPolyline(const std::vector<double>& line, double x0, double y0, double x1,
+                           double y1) {
+  for (std::size_t k = 0; k + 3 < line.size(); k += 2) {
+    const Segment s{line[k], line[k + 1], line[k + 2], line[k + 3]};
+    if (s.ax == s.bx && s.ay == s.by) continue;
+    const double bound = chainBound(s.ax, s.ay, s.bx, s.by);
+    if (within(s, x0, y0, bound) && within(s, x1, y1, bound)) return true;
+  }
+  return false;
 }
 
 bool insideEvenOdd(const Polylines& polylines, double x, double y) {
@@ -167,8 +463,8 @@ double distanceToPolylines(const Polylines& polylines, double x, double y) {
   double best = std::numeric_limits<double>::infinity();
   for (const auto& line : polylines)
     for (std::size_t k = 0; k + 3 < line.size(); k += 2)
-      best =
-          std::min(best, distanceToSegment({line[k], line[k + 1], line[k + 2], line[k + 3]}, x, y));
+      best = std::min(best, static_cast<double>(distanceToSegment(
+                                {line[k], line[k + 1], line[k + 2], line[k + 3]}, x, y)));
   return best;
 }
 

@@ -1,8 +1,11 @@
 // Constraint invariants on the JS output: each input segment is a chain of constrained edges
-// lying on it (up to the rounding of crossing points), no constrained edge lies off every
-// input segment, provenance names the polylines an edge came from, and inside flags follow
-// the fill rule over the rings.
+// whose vertices lie within the documented bound of it (two spacings of doubles at its
+// largest coordinate, decided exactly) in order along it, no constrained edge lies beyond the
+// bound of every input segment, provenance names the polylines an edge came from, and inside
+// flags follow the fill rule over the rings.
 import assert from 'node:assert/strict';
+import { chainBound, signAlong, withinDistance } from './exact.js';
+import { orient } from './predicates.js';
 
 const next = (e) => (e % 3 === 2 ? e - 2 : e + 1);
 
@@ -27,17 +30,15 @@ function segmentsOf(line) {
   return out;
 }
 
-// Where (x, y) projects on segment s as t in [0, 1], and whether it lies on it, up to a
-// relative tolerance (crossing points are rounded to doubles).
-function onSegment([px, py, qx, qy], x, y, relative = 1e-9) {
-  const dx = qx - px, dy = qy - py;
-  const len2 = dx * dx + dy * dy;
-  const t = ((x - px) * dx + (y - py) * dy) / len2;
-  const distance = Math.abs((x - px) * dy - (y - py) * dx) / Math.sqrt(len2);
-  const tol =
-    relative * (Math.abs(px) + Math.abs(py) + Math.abs(qx) + Math.abs(qy) + Math.sqrt(len2));
-  const along = tol / Math.sqrt(len2);
-  return { t, on: distance <= tol && t >= -along && t <= 1 + along, along };
+// Whether (x, y) lies within the documented bound of segment s.
+function withinBound(s, x, y) {
+  return withinDistance(s, x, y, chainBound(s));
+}
+
+// Whether (x, y) lies exactly on segment s: on its line, within its box.
+function exactlyOn([ax, ay, bx, by], x, y) {
+  return orient(ax, ay, bx, by, x, y) === 0 && Math.min(ax, bx) <= x && x <= Math.max(ax, bx)
+    && Math.min(ay, by) <= y && y <= Math.max(ay, by);
 }
 
 export function isRing(line) {
@@ -65,7 +66,9 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     }
   }
 
-  // Every input segment is covered by a chain of constrained edges along it.
+  // Every input segment is covered by a chain of constrained edges whose vertices lie within
+  // the bound of it, each further along it than the one before: a search from its first
+  // vertex (several vertices can lie within the bound where vertices are a few ulps apart).
   let pointBase = (input.points?.length ?? 0) / 2;
   polylines.forEach((line, j) => {
     for (let k = 0; keepAll && k + 3 < line.length; k += 2) {
@@ -73,19 +76,18 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
       const from = r.inputToVertex[pointBase + k / 2];
       const to = r.inputToVertex[pointBase + k / 2 + 1];
       if (from === to) continue;
-      let at = from, t = 0;
-      for (let steps = 0; at !== to; steps++) {
-        assert.ok(steps <= points.length, `polyline ${j} segment ${k / 2}: no end to the chain`);
-        let best = -1, bestT = Infinity;
+      const seen = new Set([from]), frontier = [from];
+      for (let i = 0; i < frontier.length && !seen.has(to); i++) {
+        const at = frontier[i];
         for (const w of neighbours.get(at) ?? []) {
-          const hit = onSegment(s, x(w), y(w));
-          if (hit.on && hit.t > t + hit.along * 0.5 && hit.t < bestT) { best = w; bestT = hit.t; }
+          if (seen.has(w) || !withinBound(s, x(w), y(w))) continue;
+          if (signAlong(s, x(at), y(at), x(w), y(w)) <= 0) continue;
+          seen.add(w);
+          frontier.push(w);
         }
-        assert.ok(best >= 0, `polyline ${j} segment ${k / 2} is not covered by constrained `
-          + `edges (stuck at vertex ${at})`);
-        at = best;
-        t = bestT;
       }
+      assert.ok(seen.has(to), `polyline ${j} segment ${k / 2} is not covered by a chain of`
+        + ' constrained edges within the bound, in order');
     }
     pointBase += line.length / 2;
   });
@@ -107,28 +109,20 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     listed.add(key);
     const a = triangles[e], b = triangles[next(e)];
     const [ax, ay, bx, by] = [x(a), y(a), x(b), y(b)];
-    // Loosely on a segment (it may be named), and tightly on it (it must be named).
+    // Within the bound of a segment (it may be named), exactly on one (it must be named).
     const may = [], must = [];
     segments.forEach((list, j) => {
       const [minX, minY, maxX, maxY] = boxes[j];
-      if (Math.min(ax, bx) < minX || Math.max(ax, bx) > maxX
-        || Math.min(ay, by) < minY || Math.max(ay, by) > maxY) return;
-      const on = (relative) => list.some((s) => {
-        const pad = 1e-9 * (Math.abs(s[0]) + Math.abs(s[1]) + Math.abs(s[2]) + Math.abs(s[3]) + 1);
-        const outside = Math.max(ax, bx) < Math.min(s[0], s[2]) - pad
-          || Math.min(ax, bx) > Math.max(s[0], s[2]) + pad
-          || Math.max(ay, by) < Math.min(s[1], s[3]) - pad
-          || Math.min(ay, by) > Math.max(s[1], s[3]) + pad;
-        return !outside && onSegment(s, ax, ay, relative).on && onSegment(s, bx, by, relative).on;
-      });
-      if (on(1e-9)) may.push(j);
-      if (on(1e-14)) must.push(j);
+      if (Math.min(ax, bx) < minX || Math.max(ax, bx) > maxX) return;
+      if (Math.min(ay, by) < minY || Math.max(ay, by) > maxY) return;
+      if (list.some((s) => withinBound(s, ax, ay) && withinBound(s, bx, by))) may.push(j);
+      if (list.some((s) => exactlyOn(s, ax, ay) && exactlyOn(s, bx, by))) must.push(j);
     });
     const named = Array.from(sources.subarray(sourceOffsets[i], sourceOffsets[i + 1]));
     const where = `edge ${e} (${ax},${ay})-(${bx},${by})`;
-    assert.ok(may.length > 0, `constrained ${where} lies on no input segment`);
+    assert.ok(may.length > 0, `constrained ${where} lies within the bound of no input segment`);
     for (const j of named) {
-      assert.ok(may.includes(j), `${where} names polyline ${j} but lies on none of its segments`);
+      assert.ok(may.includes(j), `${where} names polyline ${j}, beyond its segments' bound`);
     }
     for (const j of must) {
       assert.ok(named.includes(j), `${where} lies on polyline ${j} but names only ${named}`);

@@ -1,0 +1,229 @@
+#include "chain_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "edge_map.h"
+#include "exact_geometry.h"
+#include "geocdt/predicates.h"
+
+namespace geocdt {
+
+namespace {
+
+// How two input segments meet: not at all, in one point inside both, or otherwise (at an
+// end, or overlapping), where a crossing of their chains means nothing.
+enum class Meeting { Apart, Crossing, Touching };
+
+Meeting meeting(const InputSegment& s, const InputSegment& t) {
+  const int o1 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.ax, t.ay));
+  const int o2 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.bx, t.by));
+  const int o3 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.ax, s.ay));
+  const int o4 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.bx, s.by));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return Meeting::Crossing;
+  if (o1 * o2 > 0 || o3 * o4 > 0) return Meeting::Apart;
+  // An end on the other's line meets the other when it lies within its box.
+  const auto inBox = [](const InputSegment& g, double x, double y) {
+    return std::min(g.ax, g.bx) <= x && x <= std::max(g.ax, g.bx) && std::min(g.ay, g.by) <= y &&
+           y <= std::max(g.ay, g.by);
+  };
+  if ((o1 == 0 && inBox(s, t.ax, t.ay)) || (o2 == 0 && inBox(s, t.bx, t.by)) ||
+      (o3 == 0 && inBox(t, s.ax, s.ay)) || (o4 == 0 && inBox(t, s.bx, s.by)))
+    return Meeting::Touching;
+  return Meeting::Apart;
+}
+
+// Whether an end of one segment lies within the bound of the other: a crossing there may
+// be kept as a touch at that end.
+bool crossingNearAnEnd(const InputSegment& s, const InputSegment& t) {
+  const int es = chainBoundExponent(s), et = chainBoundExponent(t);
+  return withinDistance(t, s.ax, s.ay, et) || withinDistance(t, s.bx, s.by, et) ||
+         withinDistance(s, t.ax, t.ay, es) || withinDistance(s, t.bx, t.by, es);
+}
+
+// The chains of the segments checked, found on demand. Maps keyed by vertex or segment, not
+// arrays over all vertices: a call into a large triangulation checks a few chains.
+class Chains {
+ public:
+  explicit Chains(Delaunay& d) : d_(d) {}
+
+  // The chain of segment i, empty when it has none; cached.
+  const std::vector<std::uint32_t>& of(std::uint32_t i) {
+    if (const std::uint32_t* k = index_.find(i)) return chains_[*k];
+    index_.insert(i, static_cast<std::uint32_t>(chains_.size()));
+    chains_.emplace_back();
+    search(i, chains_.back());
+    return chains_.back();
+  }
+
+  // A half-edge out of each vertex of the chains found so far.
+  std::int32_t edgeOutOf(std::uint32_t v) { return *out_.find(v); }
+
+ private:
+  struct Step {
+    double cost;  // the most a chain to here strays
+    std::uint32_t at, before;
+    std::int32_t out;  // a half-edge out of `at`
+  };
+
+  bool names(std::uint32_t u, std::uint32_t v, std::uint32_t polyline) const {
+    const EdgeSource* src = d_.constraints.find(u, v);
+    if (!src) return false;
+    bool found = false;
+    d_.constraints.forEachPolyline(*src, [&](std::uint32_t p) { found = found || p == polyline; });
+    return found;
+  }
+
+  // The least-straying chain from the segment's first vertex to its last, as the checker
+  // finds it: a search by the most any vertex so far strays, in units of the spacing of
+  // doubles on each axis.
+  void search(std::uint32_t i, std::vector<std::uint32_t>& chain) {
+    const InputSegment& s = d_.constraints.segments[i];
+    const std::uint32_t polyline = d_.constraints.sourceOf(i).polyline;
+    const int bound = chainBoundExponent(s);
+    const Hit a = d_.locate(s.ax, s.ay, true), b = d_.locate(s.bx, s.by, true);
+    if (a.kind != Hit::Kind::Vertex || b.kind != Hit::Kind::Vertex) return;
+    const std::uint32_t first = d_.topo.tri[a.edge], last = d_.topo.tri[b.edge];
+    // Spacings are powers of two: dividing by them is exact.
+    const double gx = spacingAt(std::fmax(std::fabs(s.ax), std::fabs(s.bx)));
+    const double gy = spacingAt(std::fmax(std::fabs(s.ay), std::fabs(s.by)));
+    const double dx = (s.bx - s.ax) / gx, dy = (s.by - s.ay) / gy;
+    const double length2 = dx * dx + dy * dy;
+    const double* p = d_.xy.data();
+    const auto stray = [&](std::uint32_t v) {
+      const double wx = (p[2 * v] - s.ax) / gx, wy = (p[2 * v + 1] - s.ay) / gy;
+      const double t = std::clamp((wx * dx + wy * dy) / length2, 0.0, 1.0);
+      return std::hypot(wx - t * dx, wy - t * dy);
+    };
+    EdgeMap<std::uint32_t> settled;  // vertex -> the one before it on the chain
+    std::vector<Step> queue(1, {0, first, first, a.edge});
+    const auto later = [](const Step& x, const Step& y) { return x.cost > y.cost; };
+    const Topology& topo = d_.topo;
+    while (!queue.empty()) {
+      std::pop_heap(queue.begin(), queue.end(), later);
+      const Step step = queue.back();
+      queue.pop_back();
+      if (!settled.insert(step.at, step.before).second) continue;
+      out_.insert(step.at, step.out);
+      if (step.at == last) {
+        for (std::uint32_t v = last; v != first; v = *settled.find(v)) chain.push_back(v);
+        chain.push_back(first);
+        std::reverse(chain.begin(), chain.end());
+        return;
+      }
+      std::int32_t e = step.out;
+      do {
+        const std::uint32_t n = topo.tri[nextEdge(e)];
+        if (topo.fixed[e] && n != kGhost && !settled.find(n) && names(step.at, n, polyline) &&
+            withinDistance(s, p[2 * n], p[2 * n + 1], bound) &&
+            signAlong(s, p[2 * step.at], p[2 * step.at + 1], p[2 * n], p[2 * n + 1]) > 0) {
+          queue.push_back({std::max(step.cost, stray(n)), n, step.at, topo.adj[e]});
+          std::push_heap(queue.begin(), queue.end(), later);
+        }
+        e = topo.adj[prevEdge(e)];
+      } while (e != step.out);
+    }
+  }
+
+  Delaunay& d_;
+  EdgeMap<std::int32_t> out_;
+  EdgeMap<std::uint32_t> index_;  // segment -> its chain in chains_
+  std::vector<std::vector<std::uint32_t>> chains_;
+};
+
+// Whether ray a->w lies strictly inside the counter-clockwise sector from ray a->u to a->v.
+bool inSector(const double* p, std::uint32_t a, std::uint32_t u, std::uint32_t v, std::uint32_t w) {
+  const auto turn = [&](std::uint32_t from, std::uint32_t to) {
+    return int(
+        orient2d(p[2 * a], p[2 * a + 1], p[2 * from], p[2 * from + 1], p[2 * to], p[2 * to + 1]));
+  };
+  const int uv = turn(u, v);
+  if (uv > 0) return turn(u, w) > 0 && turn(w, v) > 0;
+  if (uv < 0) return !(turn(v, w) >= 0 && turn(w, u) >= 0);
+  return turn(u, w) > 0;  // u and v opposite: a half-plane
+}
+
+// How often chain Q crosses chain P over the stretches they share; `undefined` tells whether
+// a stretch holds an end of either (where crossing and touching are the same).
+int crossings(const double* p, const std::vector<std::uint32_t>& P,
+              const std::vector<std::uint32_t>& Q, bool& undefined) {
+  const std::size_t m = P.size(), n = Q.size();
+  const auto indexInQ = [&](std::uint32_t v) {
+    return static_cast<std::size_t>(std::find(Q.begin(), Q.end(), v) - Q.begin());
+  };
+  int count = 0;
+  undefined = false;
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t k = indexInQ(P[i]);
+    if (k == n) continue;
+    // The shared stretch P[i..j] = Q[k..l], Q running forward or backward along it.
+    int step = 0;
+    if (i + 1 < m && k + 1 < n && P[i + 1] == Q[k + 1]) step = 1;
+    if (i + 1 < m && k >= 1 && P[i + 1] == Q[k - 1]) step = -1;
+    std::size_t j = i, l = k;
+    while (step != 0 && j + 1 < m && l + step < n && P[j + 1] == Q[l + step]) {
+      ++j;
+      l += step;
+    }
+    if (i == 0 || j + 1 == m || std::min(k, l) == 0 || std::max(k, l) + 1 == n) {
+      undefined = true;
+    } else {
+      // Q's neighbours off the stretch at its two ends, each on the left or right of P.
+      const std::uint32_t qi = step >= 0 ? Q[k - 1] : Q[k + 1];
+      const std::uint32_t qj = step >= 0 ? Q[l + 1] : Q[l - 1];
+      count +=
+          inSector(p, P[i], P[i + 1], P[i - 1], qi) != inSector(p, P[j], P[j + 1], P[j - 1], qj);
+    }
+    i = j;
+  }
+  return count;
+}
+
+}  // namespace
+
+bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments) {
+  if (segments.empty()) return true;
+  std::sort(segments.begin(), segments.end());
+  segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+  const ConstraintStore& store = d.constraints;
+  Chains chains(d);
+  std::vector<std::uint32_t> others;
+  for (const std::uint32_t i : segments) {
+    const std::vector<std::uint32_t> P = chains.of(i);
+    if (P.empty()) return false;
+    // The segments whose constrained edges meet this chain's vertices.
+    others.clear();
+    for (const std::uint32_t v : P) {
+      const std::int32_t out = chains.edgeOutOf(v);
+      std::int32_t e = out;
+      do {
+        if (d.topo.fixed[e]) {
+          const EdgeSource* src = store.find(v, d.topo.tri[nextEdge(e)]);
+          if (src)
+            store.forEachSegment(*src, [&](std::uint32_t j) {
+              if (j != i) others.push_back(j);
+            });
+        }
+        e = d.topo.adj[prevEdge(e)];
+      } while (e != out);
+    }
+    std::sort(others.begin(), others.end());
+    others.erase(std::unique(others.begin(), others.end()), others.end());
+    const InputSegment& s = store.segments[i];
+    for (const std::uint32_t j : others) {
+      const InputSegment& t = store.segments[j];
+      const Meeting how = meeting(s, t);
+      if (how == Meeting::Touching || (how == Meeting::Crossing && crossingNearAnEnd(s, t)))
+        continue;
+      const std::vector<std::uint32_t>& Q = chains.of(j);
+      if (Q.empty()) return false;
+      bool undefined = false;
+      const int count = crossings(d.xy.data(), P, Q, undefined);
+      if (how == Meeting::Apart ? count > 0 : count > 1 || (!undefined && count != 1)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace geocdt

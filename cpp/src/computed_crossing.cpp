@@ -1,0 +1,250 @@
+// Crossings::Computed: where a piece of the segment being inserted crosses a constrained
+// edge, the crossing of the two input segments is computed, rounded, and checked to fit.
+// Three outcomes, tried in order:
+//
+//  1. Split: the rounded crossing x lies strictly inside the two triangles of the crossed
+//     edge r-l (and is no vertex): x splits r-l, and the piece a-b becomes a-x, x-b.
+//
+//              b                          b
+//         c1   :                     c1   :
+//        /  \  :                    /  \  |
+//       r----+--l        ==>       r----x--l
+//        \  / :                     \  /  |
+//         c2  :                      c2   :
+//             a                           a
+//
+//  2. Through a vertex: x rounds next to a vertex (within 1e-12 of the shorter piece), or
+//     lies outside the two triangles (thin ones): both constraints pass through one vertex
+//     w, that one or a new vertex at x, unless that would make one double back.
+//
+//              b                     b
+//              :                     |
+//       r------+-w---l   ==>    r----w----l
+//              :                     |
+//              a                     a
+//
+//  3. Meet at an end: no crossing point fits (the two are collinear within rounding, so
+//     the crossing of their lines means nothing): one constraint bends through the end of
+//     the other that lies within its span and nearest to its line.
+//
+//       a ················ b           a ····· r ····· b
+//             r ─────────────── l  ==>         r ─────────── l
+//
+// A tangle of vertices a few ulps apart can send these round in circles, or leave a chain
+// beyond the guarantee: the caller then snap-rounds (snap_rounding.h).
+#include <cmath>
+#include <utility>
+
+#include "geocdt/predicates.h"
+#include "segment_inserter.h"
+
+namespace geocdt {
+
+namespace {
+
+using Long = long double;
+
+// Where the lines through (a, b) and (c, d) meet, in floating point. In long double, whose
+// exponent range keeps the products of tiny coordinates (1e-171 squared) from underflowing.
+// The point is p + s * (direction of p's segment) for an end p of one segment, with s
+// found from an end q of the other. Rounding moves it by about |q - p| (through the
+// cancellation in s's numerator) plus |s| times the direction (through the step from p),
+// so the pair (p, q) that makes the least of both is used: from the far end of a
+// 1e67-long segment, one rounding of s moved the point by 1e47.
+bool lineCrossing(const InputSegment& ab, const InputSegment& cd, double& x, double& y) {
+  const Long ex = (Long)ab.bx - ab.ax, ey = (Long)ab.by - ab.ay, fx = (Long)cd.bx - cd.ax,
+             fy = (Long)cd.by - cd.ay;
+  const Long denominator = ex * fy - ey * fx;
+  const Long lengthE = std::hypot(ex, ey), lengthF = std::hypot(fx, fy);
+  Long bestError = 0, bestX = 0, bestY = 0;
+  bool found = false;
+  // p moves along (dx, dy); q is on the other line, whose direction is (gx, gy).
+  const auto tryPair = [&](Long px, Long py, Long dx, Long dy, Long length, Long qx, Long qy,
+                           Long gx, Long gy, Long sign) {
+    const Long u = (qx - px) * gy, v = (qy - py) * gx;
+    const Long s = sign * (u - v) / denominator;
+    const Long error =
+        (std::fabs(u) + std::fabs(v)) / std::fabs(denominator) * length + std::fabs(s) * length;
+    if (!(found && bestError <= error)) {
+      found = true;
+      bestError = error;
+      bestX = px + s * dx;
+      bestY = py + s * dy;
+    }
+  };
+  for (const auto& [qx, qy] :
+       {std::pair<Long, Long>{cd.ax, cd.ay}, std::pair<Long, Long>{cd.bx, cd.by}}) {
+    tryPair(ab.ax, ab.ay, ex, ey, lengthE, qx, qy, fx, fy, 1);
+    tryPair(ab.bx, ab.by, ex, ey, lengthE, qx, qy, fx, fy, 1);
+  }
+  for (const auto& [qx, qy] :
+       {std::pair<Long, Long>{ab.ax, ab.ay}, std::pair<Long, Long>{ab.bx, ab.by}}) {
+    tryPair(cd.ax, cd.ay, fx, fy, lengthF, qx, qy, ex, ey, -1);
+    tryPair(cd.bx, cd.by, fx, fy, lengthF, qx, qy, ex, ey, -1);
+  }
+  x = static_cast<double>(bestX);
+  y = static_cast<double>(bestY);
+  return std::isfinite(x) && std::isfinite(y);
+}
+
+}  // namespace
+
+// Where (x, y) lies along g's direction, compared with vertex u: the sign of the projection
+// of their difference. Differences, not positions: near the end of a segment 1e-63 long, a
+// vertex 1e-182 away must still compare apart. In long double, whose exponent range keeps
+// products of subnormal differences from underflowing.
+int SegmentInserter::Crossing::beyond(const double* p, const InputSegment& g, double x, double y,
+                                      std::uint32_t u) {
+  const Long t =
+      ((Long)x - p[2 * u]) * ((Long)g.bx - g.ax) + ((Long)y - p[2 * u + 1]) * ((Long)g.by - g.ay);
+  return (t > 0) - (t < 0);
+}
+
+// Between lo and hi along g's direction: beyond one and short of the other.
+bool SegmentInserter::Crossing::between(const double* p, const InputSegment& g, double x, double y,
+                                        std::uint32_t lo, std::uint32_t hi) {
+  return beyond(p, g, x, y, lo) * beyond(p, g, x, y, hi) < 0;
+}
+
+bool SegmentInserter::Crossing::fits(const double* p, double x, double y) const {
+  return between(p, ab, x, y, piece.a, piece.b) && between(p, cd, x, y, r, l);
+}
+
+std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t h) {
+  const Topology& topo = d_.topo;
+  const ConstraintStore& store = d_.constraints;
+  const double* p = d_.xy.data();
+  Crossing c;
+  c.piece = piece;
+  c.h = h;
+  c.r = topo.tri[h];
+  c.l = topo.tri[nextEdge(h)];
+  c.c1 = topo.tri[prevEdge(h)];
+  c.c2 = topo.tri[prevEdge(topo.adj[h])];
+  const EdgeSource* crossedSource = store.find(c.r, c.l);
+  const InputSegment edge{p[2 * c.r], p[2 * c.r + 1], p[2 * c.l], p[2 * c.l + 1]};
+  c.ab = store.segments[piece.src.segment];
+  c.cd = crossedSource ? store.segments[crossedSource->segment] : edge;
+  // Two input segments meet at one vertex: once their crossing has one, later crossings of
+  // their pieces (after rounding bent them) go there too, so no run of ever new vertices.
+  c.pair = ConstraintStore::key(piece.src.segment, crossedSource ? crossedSource->segment : kGhost);
+  // Both chains may now leave their segments, unless the crossing splits (see split).
+  const std::size_t untouched = touchedSegments_.size();
+  const auto touch = [&](std::uint32_t i) { touchedSegments_.push_back(i); };
+  store.forEachSegment(piece.src, touch);
+  if (crossedSource) store.forEachSegment(*crossedSource, touch);
+
+  // The crossing point: where the pair met before; else the crossing of the two input
+  // segments, unless rounding and earlier bends put it outside the two pieces that cross
+  // here; then the crossing of the pieces.
+  double x = 0, y = 0;
+  bool ofPieces = false;  // found from the pieces: the input segments may not cross at all
+  std::uint32_t w = kGhost;
+  if (const std::uint32_t* met = met_.find(c.pair); met && *met < d_.vertexCount()) {
+    w = *met;
+    x = p[2 * w];
+    y = p[2 * w + 1];
+  } else if (!lineCrossing(c.ab, c.cd, x, y) || !c.fits(p, x, y)) {
+    const InputSegment part{p[2 * piece.a], p[2 * piece.a + 1], p[2 * piece.b], p[2 * piece.b + 1]};
+    if (!lineCrossing(part, edge, x, y) || !c.fits(p, x, y)) return meetAtAnEnd(c, x, y);
+    ofPieces = true;
+  }
+
+  // Snapping is for rounding, relative to the shorter of the two pieces that cross here
+  // (an input segment can be 1e76 long and still cross a short one).
+  const auto distance = [&](std::uint32_t v) { return std::hypot(p[2 * v] - x, p[2 * v + 1] - y); };
+  const auto length = [&](std::uint32_t u, std::uint32_t v) {
+    return std::hypot(p[2 * v] - p[2 * u], p[2 * v + 1] - p[2 * u + 1]);
+  };
+  const double snapDistance = 1e-12 * std::min(length(piece.a, piece.b), length(c.r, c.l));
+  std::uint32_t nearest = c.r;
+  for (const std::uint32_t v : {c.l, piece.a, piece.b})
+    if (distance(v) < distance(nearest)) nearest = v;
+  const bool near = distance(nearest) <= snapDistance;
+  const auto strictlyLeft = [&](std::uint32_t u, std::uint32_t v) {
+    return orient2d(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], x, y) == Sign::Positive;
+  };
+  if (w == kGhost && !near && strictlyLeft(c.c1, c.r) && strictlyLeft(c.r, c.c2) &&
+      strictlyLeft(c.l, c.c1) && strictlyLeft(c.c2, c.l)) {
+    // The crossed constraint bends inside its own two triangles, where no vertex lies, and
+    // (found from them) the two segments cross at x: nothing for chainsKeepTheGuarantee to
+    // check here.
+    if (!ofPieces) touchedSegments_.resize(untouched);
+    return split(c, x, y);
+  }
+
+  // Through a vertex: the one x is (nearly) equal to, or a new one wherever x lies.
+  if (w == kGhost && near) w = nearest;
+  if (w == kGhost) {
+    bool failed = false;
+    w = addCrossingVertex(x, y, failed);
+    if (failed) return kGhost;
+    met_.insert(c.pair, w);
+    p = d_.xy.data();  // the push may have moved the coordinates
+  }
+  const double wx = p[2 * w], wy = p[2 * w + 1];
+  const bool pieceEnd = w == piece.a || w == piece.b;
+  const bool crossedEnd = w == c.r || w == c.l;
+  // w would make a constraint double back: meet at an end instead.
+  if (!(pieceEnd || Crossing::between(p, c.ab, wx, wy, piece.a, piece.b)) ||
+      !(crossedEnd || Crossing::between(p, c.cd, wx, wy, c.r, c.l)))
+    return meetAtAnEnd(c, x, y);
+  if (!crossedEnd) bendThrough(c.r, c.l, w);
+  return pieceEnd ? kGhost : w;
+}
+
+std::uint32_t SegmentInserter::split(const Crossing& c, double x, double y) {
+  const std::uint32_t v = d_.vertexCount();
+  met_.insert(c.pair, v);
+  d_.xy.push_back(x);
+  d_.xy.push_back(y);
+  d_.constraints.split(c.r, c.l, v);
+  // The rounded point is near the edge, not on it: the spokes to the two apexes may need
+  // flips that a point exactly on the edge would never need.
+  const std::int32_t spoke = d_.splitEdge(c.h, v);
+  for (std::int32_t e = spoke;;) {
+    d_.flipStack().push_back(e);
+    e = d_.topo.adj[prevEdge(e)];
+    if (e == spoke) break;
+  }
+  d_.restoreDelaunay();
+  ++d_.stats.crossings;
+  ++d_.stats.inserted;
+  return v;
+}
+
+std::uint32_t SegmentInserter::meetAtAnEnd(const Crossing& c, double x, double y) {
+  const double* p = d_.xy.data();
+  const auto offLine = [&](std::uint32_t v, std::uint32_t u0, std::uint32_t u1) {
+    const Long dx = (Long)p[2 * u1] - p[2 * u0], dy = (Long)p[2 * u1 + 1] - p[2 * u0 + 1];
+    const Long cross =
+        dx * ((Long)p[2 * v + 1] - p[2 * u0 + 1]) - dy * ((Long)p[2 * v] - p[2 * u0]);
+    return std::fabs(cross) / std::sqrt(dx * dx + dy * dy);
+  };
+  std::uint32_t best = kGhost;
+  Long bestOff = 0;
+  const auto consider = [&](std::uint32_t v, const InputSegment& g, std::uint32_t u0,
+                            std::uint32_t u1) {
+    // Ends count as within: ends that nearly coincide must be able to meet.
+    if (Crossing::beyond(p, g, p[2 * v], p[2 * v + 1], u0) *
+            Crossing::beyond(p, g, p[2 * v], p[2 * v + 1], u1) >
+        0)
+      return;
+    const Long off = offLine(v, u0, u1);
+    if (best == kGhost || off < bestOff) {
+      best = v;
+      bestOff = off;
+    }
+  };
+  consider(c.piece.a, c.cd, c.r, c.l);
+  consider(c.piece.b, c.cd, c.r, c.l);
+  consider(c.r, c.ab, c.piece.a, c.piece.b);
+  consider(c.l, c.ab, c.piece.a, c.piece.b);
+  const auto distance = [&](std::uint32_t v) { return std::hypot(p[2 * v] - x, p[2 * v + 1] - y); };
+  if (best == kGhost) best = distance(c.r) <= distance(c.l) ? c.r : c.l;
+  if (best == c.r || best == c.l) return best;  // the piece bends through it
+  bendThrough(c.r, c.l, best);                  // the crossed constraint bends through a piece end
+  return kGhost;
+}
+
+}  // namespace geocdt

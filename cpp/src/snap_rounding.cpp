@@ -1,0 +1,331 @@
+#include "snap_rounding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "exact_geometry.h"
+#include "geocdt/predicates.h"
+#include "segment_inserter.h"
+
+namespace geocdt {
+
+namespace {
+
+// The half-sizes 2^ex, 2^ey of the boxes a segment is tested against: half the largest
+// spacing of doubles on each axis over the segment's extent.
+void boxExponents(const InputSegment& s, int& ex, int& ey) {
+  ex = spacingExponent(std::fmax(std::fabs(s.ax), std::fabs(s.bx))) - 1;
+  ey = spacingExponent(std::fmax(std::fabs(s.ay), std::fabs(s.by))) - 1;
+}
+
+// Whether triangle (p, q, r) may meet the rectangle of points within `reach` of s: false only
+// when the three corners lie clearly beyond one side of it (a separating-axis test on the
+// rectangle's two axes, with a margin: it may say yes to a few more). In a frame scaled by a
+// power of two (exactly) to put s's coordinates near 1, so that nothing underflows; corners
+// far out may become infinite there, which only puts them further beyond.
+bool mayMeet(const InputSegment& s, double reach, const double* p, const double* q,
+             const double* r) {
+  int exponent = 0;
+  std::frexp(std::fmax(std::fmax(std::fabs(s.ax), std::fabs(s.ay)),
+                       std::fmax(std::fabs(s.bx), std::fabs(s.by))),
+             &exponent);
+  const auto scaled = [&](double v) { return std::ldexp(v, -exponent); };
+  const double ax = scaled(s.ax), ay = scaled(s.ay);
+  const double dx = scaled(s.bx) - ax, dy = scaled(s.by) - ay;
+  const double length = std::sqrt(dx * dx + dy * dy);
+  if (!(length > 0x1p-900)) return true;
+  // A difference of two doubles errs by eps/2 of itself, products and sums by a few eps of
+  // theirs, so the distances across and along err by a few eps of |w|: 32 eps with room,
+  // plus what underflow in the scaling can take.
+  const double reachHere = std::ldexp(reach, -exponent);
+  int above = 0, below = 0, before = 0, after = 0;
+  for (const double* v : {p, q, r}) {
+    const double wx = scaled(v[0]) - ax, wy = scaled(v[1]) - ay;
+    const double across = (dx * wy - dy * wx) / length, along = (dx * wx + dy * wy) / length;
+    const double margin =
+        reachHere + 32 * std::numeric_limits<double>::epsilon() * (std::fabs(wx) + std::fabs(wy)) +
+        0x1p-1000;
+    above += across > margin;
+    below += across < -margin;
+    before += along < -margin;
+    after += along > length + margin;
+  }
+  return above < 3 && below < 3 && before < 3 && after < 3;
+}
+
+// The real triangles that may meet the points within `reach` of s, found by a search from
+// the triangles around s's first end (the region is convex, so its triangles are connected).
+void trianglesNear(const Delaunay& d, std::int32_t out, const InputSegment& s, double reach,
+                   std::uint32_t mark, std::vector<std::uint32_t>& stamp,
+                   std::vector<std::int32_t>& found) {
+  const Topology& topo = d.topo;
+  const double* xy = d.xy.data();
+  found.clear();
+  const auto consider = [&](std::int32_t t) {
+    if (stamp[t] == mark || topo.isGhost(t)) return;
+    stamp[t] = mark;
+    const std::uint32_t* v = &topo.tri[3 * t];
+    if (mayMeet(s, reach, xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2])) found.push_back(t);
+  };
+  std::int32_t e = out;
+  do {
+    consider(e / 3);
+    e = topo.adj[prevEdge(e)];
+  } while (e != out);
+  for (std::size_t k = 0; k < found.size(); ++k)
+    for (int i = 0; i < 3; ++i) consider(topo.adj[3 * found[k] + i] / 3);
+}
+
+// Whether s and t cross in one point inside both.
+bool crossProperly(const InputSegment& s, const InputSegment& t) {
+  const int o1 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.ax, t.ay));
+  const int o2 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.bx, t.by));
+  const int o3 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.ax, s.ay));
+  const int o4 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.bx, s.by));
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+// The chain of segment s from vertex a to vertex b among the candidate vertices near it:
+// those whose rounding cells s meets, strictly between a and b along s, in order along it.
+// Where the spacing of doubles changes along s (a binade's end), a cell can be smaller than
+// the distance from s at which a link passes, so a vertex could end up strictly between s
+// and a link: it joins the chain too, until none does (iterated snap rounding), so that no
+// vertex changes sides. Each such vertex lies nearer to s than the link's ends.
+void chainOf(const InputSegment& s, std::uint32_t a, std::uint32_t b,
+             const std::vector<std::uint32_t>& candidates, const double* xy,
+             std::vector<std::uint32_t>& chain) {
+  const auto along = [&](std::uint32_t u, std::uint32_t v) {
+    return signAlong(s, xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1]);
+  };
+  const auto side = [&](std::uint32_t u, std::uint32_t v, std::uint32_t w) {
+    return int(
+        orient2d(xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1], xy[2 * w], xy[2 * w + 1]));
+  };
+  chain.clear();
+  std::vector<std::uint32_t> others;
+  for (const std::uint32_t v : candidates) {
+    if (v == a || v == b) continue;
+    if (along(a, v) <= 0 || along(v, b) <= 0) continue;
+    (segmentMeetsCell(s, xy[2 * v], xy[2 * v + 1]) ? chain : others).push_back(v);
+  }
+  std::sort(chain.begin(), chain.end(), [&](std::uint32_t u, std::uint32_t v) {
+    const int order = along(u, v);
+    if (order != 0) return order > 0;
+    return xy[2 * u] != xy[2 * v] ? xy[2 * u] < xy[2 * v] : xy[2 * u + 1] < xy[2 * v + 1];
+  });
+  chain.insert(chain.begin(), a);
+  chain.push_back(b);
+  // Where the spacing is even along s, no vertex lies strictly between s and a link (every
+  // point there lies within a cell's reach of s, so its own cell meets s). Elsewhere, a
+  // vertex strictly between s and link u -> v is strictly between them along s, off s's line
+  // on one side, and on the other side of the link (which runs forward along s).
+  const auto even = [](double a, double b) {
+    const double nearest = (a < 0) != (b < 0) ? 0 : std::fmin(std::fabs(a), std::fabs(b));
+    return spacingAt(nearest) == spacingAt(std::fmax(std::fabs(a), std::fabs(b)));
+  };
+  if (even(s.ax, s.bx) && even(s.ay, s.by)) return;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t k = 0; k + 1 < chain.size() && !grew; ++k) {
+      const std::uint32_t u = chain[k], v = chain[k + 1];
+      for (std::size_t m = 0; m < others.size(); ++m) {
+        const std::uint32_t w = others[m];
+        if (along(u, w) <= 0 || along(w, v) <= 0) continue;
+        const int offLine = side(a, b, w);
+        if (offLine == 0 || side(u, v, w) != -offLine) continue;
+        chain.insert(chain.begin() + static_cast<std::ptrdiff_t>(k + 1), w);
+        others.erase(others.begin() + static_cast<std::ptrdiff_t>(m));
+        grew = true;
+        break;
+      }
+    }
+  }
+}
+
+struct Crossing {
+  double x, y;
+  bool operator<(const Crossing& o) const { return x != o.x ? x < o.x : y < o.y; }
+};
+
+}  // namespace
+
+// Crossings::Snapped: links of snap-rounded chains never cross where the spacing of doubles
+// is even; where it is not, two links may. Then both pass through the vertex of the
+// rounding cell of their crossing (ISR's step), which must keep the guarantee for both input
+// segments, or this is a bug to report.
+std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, bool& failed) {
+  const ConstraintStore& store = d_.constraints;
+  const std::uint32_t r = d_.topo.tri[h], l = d_.topo.tri[nextEdge(h)];
+  const EdgeSource* crossed = store.find(r, l);
+  if (!crossed) {
+    failed = true;
+    error_ = {StatusCode::InternalError, "a constrained edge without a source"};
+    return kGhost;
+  }
+  const std::uint32_t crossedSegment = crossed->segment;
+  const double* p = d_.xy.data();
+  const InputSegment link{p[2 * piece.a], p[2 * piece.a + 1], p[2 * piece.b], p[2 * piece.b + 1]};
+  const InputSegment edge{p[2 * r], p[2 * r + 1], p[2 * l], p[2 * l + 1]};
+  double x, y;
+  roundedCrossing(link, edge, x, y);
+  const std::uint32_t w = addCrossingVertex(x, y, failed);
+  if (failed) {
+    error_ = d_.lastError();
+    return kGhost;
+  }
+  p = d_.xy.data();
+  const double wx = p[2 * w], wy = p[2 * w + 1];
+  const auto keeps = [&](const InputSegment& g, std::uint32_t from, std::uint32_t to) {
+    if (!withinDistance(g, wx, wy, chainBoundExponent(g))) return false;
+    if (w == from || w == to) return true;
+    return signAlong(g, p[2 * from], p[2 * from + 1], wx, wy) *
+               signAlong(g, wx, wy, p[2 * to], p[2 * to + 1]) >
+           0;
+  };
+  if (!keeps(store.segments[piece.src.segment], piece.a, piece.b) ||
+      !keeps(store.segments[crossedSegment], r, l)) {
+    failed = true;
+    error_ = {StatusCode::InternalError,
+              "snap rounding found no vertex within the bound where two links cross"};
+    return kGhost;
+  }
+  // The crossed link bends through w, unless w split it already (it lay on it).
+  if (w != r && w != l) bendThrough(r, l, w);
+  return w == piece.a || w == piece.b ? kGhost : w;
+}
+
+Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& options) {
+  Delaunay fresh(options);
+  std::vector<std::uint32_t> ids(keep);
+  Status status = fresh.insertBatch(d.xy.data(), keep, ids.data());
+  if (!status.ok()) return status;
+  for (std::uint32_t i = 0; i < keep; ++i)
+    if (ids[i] != i) return {StatusCode::InternalError, "snap rounding renumbered a vertex"};
+  ConstraintStore& store = fresh.constraints;
+  store.segments = std::move(d.constraints.segments);
+  store.segmentStarts = std::move(d.constraints.segmentStarts);
+  store.polylinePoints = d.constraints.polylinePoints;
+  store.firstSegment = std::move(d.constraints.firstSegment);
+  store.ring = std::move(d.constraints.ring);
+  store.polylineCount = d.constraints.polylineCount;
+  const std::vector<InputSegment>& segments = store.segments;
+  const std::size_t n = segments.size();
+
+  // The ends of each segment, and a half-edge out of its first.
+  std::vector<std::uint32_t> ends(2 * n);
+  std::vector<std::int32_t> outOf(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const InputSegment& s = segments[i];
+    const Hit a = fresh.locate(s.ax, s.ay, true), b = fresh.locate(s.bx, s.by, true);
+    if (a.kind != Hit::Kind::Vertex || b.kind != Hit::Kind::Vertex)
+      return {StatusCode::InternalError, "snap rounding lost the end of a segment"};
+    ends[2 * i] = fresh.topo.tri[a.edge];
+    ends[2 * i + 1] = fresh.topo.tri[b.edge];
+    outOf[i] = a.edge;
+  }
+
+  // The triangles near each segment: their corners are the vertices it may pass through,
+  // and two segments that cross share one of them.
+  std::vector<std::uint32_t> stamp(fresh.topo.slotCount(),
+                                   std::numeric_limits<std::uint32_t>::max());
+  std::vector<std::int32_t> found;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> slotSegment;  // (triangle, segment)
+  std::vector<std::vector<std::uint32_t>> candidates(n);
+  std::vector<double> reach(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    int ex, ey;
+    boxExponents(segments[i], ex, ey);
+    reach[i] = std::hypot(std::ldexp(1.0, ex), std::ldexp(1.0, ey));
+    trianglesNear(fresh, outOf[i], segments[i], reach[i], static_cast<std::uint32_t>(i), stamp,
+                  found);
+    for (const std::int32_t t : found) {
+      slotSegment.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i)});
+      for (int k = 0; k < 3; ++k) candidates[i].push_back(fresh.topo.tri[3 * t + k]);
+    }
+  }
+  std::sort(slotSegment.begin(), slotSegment.end());
+
+  // Rounded crossings of the segments that cross properly.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t from = 0; from < slotSegment.size();) {
+    std::size_t to = from;
+    while (to < slotSegment.size() && slotSegment[to].first == slotSegment[from].first) ++to;
+    for (std::size_t a = from; a < to; ++a)
+      for (std::size_t b = a + 1; b < to; ++b)
+        pairs.push_back({slotSegment[a].second, slotSegment[b].second});
+    from = to;
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::vector<Crossing> crossings;
+  for (const auto& [i, j] : pairs) {
+    if (!crossProperly(segments[i], segments[j])) continue;
+    Crossing c{};
+    roundedCrossing(segments[i], segments[j], c.x, c.y);
+    crossings.push_back(c);
+  }
+  std::sort(crossings.begin(), crossings.end());
+  crossings.erase(
+      std::unique(crossings.begin(), crossings.end(),
+                  [](const Crossing& a, const Crossing& b) { return a.x == b.x && a.y == b.y; }),
+      crossings.end());
+
+  // Each new crossing joins the candidates of the segments near the triangles holding it;
+  // then all are inserted.
+  const auto near = [&](std::int32_t t, std::uint32_t v) {
+    const std::uint32_t slot = static_cast<std::uint32_t>(t);
+    auto it = std::lower_bound(slotSegment.begin(), slotSegment.end(),
+                               std::pair<std::uint32_t, std::uint32_t>{slot, 0});
+    for (; it != slotSegment.end() && it->first == slot; ++it) candidates[it->second].push_back(v);
+  };
+  std::vector<std::size_t> added;  // indices into crossings
+  for (std::size_t c = 0; c < crossings.size(); ++c) {
+    const Hit h = fresh.locate(crossings[c].x, crossings[c].y, true);
+    if (h.kind == Hit::Kind::Vertex) continue;  // an existing vertex: already a candidate
+    const std::uint32_t v = keep + static_cast<std::uint32_t>(added.size());
+    added.push_back(c);
+    near(h.edge / 3, v);
+    if (h.kind == Hit::Kind::Edge) near(fresh.topo.adj[h.edge] / 3, v);
+  }
+  for (const std::size_t c : added) {
+    const std::uint32_t v = fresh.vertexCount();
+    fresh.xy.push_back(crossings[c].x);
+    fresh.xy.push_back(crossings[c].y);
+    if (fresh.insertVertex(v) != v)
+      return {StatusCode::InternalError, "snap rounding could not insert a rounded crossing"};
+  }
+
+  // Each chain, inserted link by link.
+  SegmentInserter inserter(fresh, Crossings::Snapped);
+  std::vector<std::uint32_t> chain;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::uint32_t>& list = candidates[i];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    chainOf(segments[i], ends[2 * i], ends[2 * i + 1], list, fresh.xy.data(), chain);
+    const EdgeSource src = store.sourceOf(static_cast<std::uint32_t>(i));
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+      if (inserter.insert(chain[k], chain[k + 1], src) == Outcome::Broken) return inserter.error();
+  }
+
+  // The old triangulation's counts, less the crossings it added in the attempt that failed,
+  // plus those snap rounding added.
+  const std::uint32_t dropped = d.vertexCount() - keep, rounded = fresh.vertexCount() - keep;
+  Stats stats = d.stats;
+  stats.inserted = stats.inserted - dropped + rounded;
+  stats.crossings = stats.crossings - dropped + rounded;
+  stats.walkSteps += fresh.stats.walkSteps;
+  stats.locates += fresh.stats.locates;
+  stats.flips += fresh.stats.flips;
+  stats.walkFallbacks += fresh.stats.walkFallbacks;
+  stats.segments += fresh.stats.segments;
+  ++stats.snapRoundings;
+  fresh.stats = stats;
+  d = std::move(fresh);
+  return Status::success();
+}
+
+}  // namespace geocdt

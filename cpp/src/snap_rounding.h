@@ -1,0 +1,26 @@
+#pragma once
+// Snap rounding of the constraints, for the tangles where computing each crossing and
+// checking that it fits gets lost: vertices a few ulps apart, every crossing rounding onto
+// the same few doubles.
+//
+// Every vertex (input point or rounded crossing) owns the box of points that round to it;
+// a segment passes through the vertex of every box it meets, in order along it. For a
+// segment whose doubles are evenly spaced (the usual case: within one binade on each axis)
+// the box is the rounding box itself; otherwise it is widened to the largest spacing the
+// segment spans, so that whatever lies between a segment and its chain is a box the
+// segment meets, hence on the chain: a vertex never changes sides, which is what keeps the
+// crossings (Hobby; Guibas and Marimont; the widening is what makes uneven spacing work).
+// Each vertex of a chain lies within sqrt(2)/2 spacings of its segment, each link between
+// two of them too, well inside the documented bound of two spacings.
+#include <cstdint>
+
+#include "delaunay.h"
+
+namespace geocdt {
+
+// Rebuilds d from its first `keep` vertices and every segment in its constraint store:
+// the vertices keep their ids, rounded crossings come after them, and each segment becomes
+// its snap-rounded chain. Vertices from `keep` on (crossings added since) are dropped.
+Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& options);
+
+}  // namespace geocdt
