@@ -69,7 +69,10 @@ class Delaunay {
   bool isLocallyDelaunay(std::int32_t e) const;  // e's quad, whatever the fixed flags
   void setLastTriangle(std::int32_t t) { last_ = t; }
   const Status& lastError() const { return error_; }
-  std::uint32_t gridSize() const { return grid_.size(); }
+  // The grid's side as sized for the points inserted (a stale grid is resized on first use).
+  std::uint32_t gridSize() const {
+    return gridStale_ ? grid_.sizeFor(stats.inserted) : grid_.size();
+  }
   void dropGrid() { grid_ = PointGrid(); }  // its memory, before the arrays are handed out
   void clear();
 

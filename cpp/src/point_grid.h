@@ -45,10 +45,13 @@ class PointGrid {
   // The size grow() would have reached after `inserted` insertions, with every cell empty
   // (-1): for rebuild() after a batch that did not keep the grid up to date.
   void resizeFor(std::uint64_t inserted) {
+    m_ = sizeFor(inserted);
+    cells_.assign(static_cast<std::size_t>(m_) * m_, -1);
+  }
+  std::uint32_t sizeFor(std::uint64_t inserted) const {
     std::uint32_t m = m_;
     while (static_cast<double>(inserted) > density_ * m * m && m < kMaxSize) m *= 2;
-    m_ = m;
-    cells_.assign(static_cast<std::size_t>(m) * m, -1);
+    return m;
   }
 
   void fill(std::int32_t triangle) { std::fill(cells_.begin(), cells_.end(), triangle); }
