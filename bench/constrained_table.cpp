@@ -45,8 +45,9 @@ void printConstrainedTable(const BenchConfig& config) {
                    uniformPoints(100000, 8),
                    randomSegments(1000, 9),
                    {}});
-  cases.push_back(
-      fileCase(config, "GSHHG region", "gshhg_region.gpl", "scripts/datasets/gshhg_region.sh"));
+  const std::string gshhg = "scripts/datasets/all.sh";
+  cases.push_back(fileCase(config, "GSHHG Europe", "gshhg_region.gpl", gshhg));
+  cases.push_back(fileCase(config, "GSHHG Asia", "gshhg_asia.gpl", gshhg));
 
   const int reps = config.quick ? 1 : 3;
   MarkdownTable table({"dataset", "engine", ">points", ">segments", ">insert points ms",
