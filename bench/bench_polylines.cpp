@@ -65,9 +65,8 @@ int main(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();
   geocdt::Triangulation t;
   std::vector<std::uint32_t> ids(set.pointCount());
-  const geocdt::Status s = pointsOnly
-                               ? t.insertPoints(set.xy.data(), set.pointCount(), ids.data())
-                               : t.insertPolylines(views.data(), views.size(), ids.data());
+  const geocdt::Status s = pointsOnly ? t.insertPoints(set.xy.data(), set.pointCount(), ids.data())
+                                      : t.insertPolylines(views.data(), views.size(), ids.data());
   const geocdt::Stats stats = t.stats();
   const geocdt::Mesh mesh = s.ok() ? t.release(meshOptions) : geocdt::Mesh();
   const double ms =
