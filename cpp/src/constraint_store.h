@@ -220,7 +220,7 @@ class ConstraintStore {
     return static_cast<std::int32_t>(extras_.size() - 1);
   }
 
-  EdgeMap<EdgeSource> edges_;
+  EdgeMap<EdgeSource, EdgeSlot> edges_;
   std::vector<std::vector<Member>> extras_;
 };
 
