@@ -45,13 +45,15 @@ void printConstrainedTable(const BenchConfig& config) {
                    uniformPoints(100000, 8),
                    randomSegments(1000, 9),
                    {}});
-  cases.push_back(
-      fileCase(config, "GSHHG region", "gshhg_region.gpl", "scripts/datasets/gshhg_region.sh"));
+  const std::string gshhg = "scripts/datasets/all.sh";
+  cases.push_back(fileCase(config, "GSHHG Europe", "gshhg_region.gpl", gshhg));
+  cases.push_back(fileCase(config, "GSHHG Asia", "gshhg_asia.gpl", gshhg));
 
   const int reps = config.quick ? 1 : 3;
   MarkdownTable table({"dataset", "engine", ">points", ">segments", ">insert points ms",
-                       ">insert edges ms", ">total ms", ">crossings found", ">triangles",
-                       ">flipped", ">zero-area", ">peak MB", ">total vs CGAL Epick", "result"});
+                       ">insert edges ms", ">total ms", ">crossings found", ">steps/locate",
+                       ">flips/pt", ">triangles", ">flipped", ">zero-area", ">peak MB",
+                       ">total vs CGAL Epick", "result"});
   std::vector<std::string> notes;
   for (const PolylineCase& c : cases) {
     if (!c.missing.empty()) {
@@ -80,6 +82,12 @@ void printConstrainedTable(const BenchConfig& config) {
                          return geocdtConstrained(c.freePoints, c.polylines,
                                                   ConstrainedCalls::OneCall, s, e);
                        }});
+    // The same points with no constraints: what the constraints cost on top of them.
+    std::vector<double> allPoints = c.freePoints;
+    allPoints.insert(allPoints.end(), c.polylines.xy.begin(), c.polylines.xy.end());
+    engines.push_back({"geocdt points alone", false, [&](Sample& s, std::string& e) {
+                         return geocdtDelaunay(allPoints, geocdt::Options(), s, e);
+                       }});
     std::fprintf(stderr, "  constrained: %s (%d repetitions)\n", c.name.c_str(), reps);
     std::vector<RunOnce> runs;
     for (const Engine& engine : engines) runs.push_back(engine.once);
@@ -100,10 +108,16 @@ void printConstrainedTable(const BenchConfig& config) {
       auto phase = [&](double seconds) {
         return engines[i].split ? cell(milliseconds(seconds)) : "-";
       };
+      // Walk and flip figures only where they describe the whole run.
+      const bool geocdtWhole = std::string(engines[i].name).rfind("geocdt ", 0) == 0;
+      auto per = [&](std::uint64_t what, std::uint64_t of) {
+        return geocdtWhole && of ? cell(fixed(static_cast<double>(what) / of, 2)) : "-";
+      };
       table.addRow(
           {c.name, engines[i].name, count(points), segments, phase(s.pointSeconds),
            phase(s.edgeSeconds), cell(milliseconds(s.totalSeconds())), cell(count(s.crossings)),
-           cell(count(s.triangles)), cell(count(s.flipped)), cell(count(s.zeroArea)),
+           per(s.walkSteps, s.locates), per(s.flips, points), cell(count(s.triangles)),
+           cell(count(s.flipped)), cell(count(s.zeroArea)),
            cell(fixed(1e-6 * static_cast<double>(s.peakBytes), 0)),
            m.ok && haveReference ? ratio(s.totalSeconds(), results[0].median.totalSeconds()) : "-",
            status(m, s)});
@@ -114,7 +128,10 @@ void printConstrainedTable(const BenchConfig& config) {
       "(Exact_predicates_tag)\n\n"
       "Medians of %d repetitions. geocdt: insertPoints of all points, then insertPolylines "
       "(which finds the points again); geocdt one call: insertPolylines alone (after "
-      "insertPoints of the free points). Crossings found: vertices added by the edge phase. "
+      "insertPoints of the free points); geocdt points alone: insertPoints of the same points, "
+      "no constraints. Steps/locate: triangles visited per point location (segment ends "
+      "are not located); flips/pt: flips per input point, both for the one-call and "
+      "points-alone runs. Crossings found: vertices added by the edge phase. "
       "Flipped "
       "and zero-area: triangles of the output, on its double coordinates, by exact "
       "orientation. Peak MB: peak extra heap through operator new (GMP's own allocations in "

@@ -123,7 +123,11 @@ bool geocdtConstrained(const std::vector<double>& freePoints,
     error = "insertPolylines: " + describe(status);
     return false;
   }
-  sample.crossings = triangulation.stats().crossings;
+  const geocdt::Stats& stats = triangulation.stats();
+  sample.crossings = stats.crossings;
+  sample.walkSteps = stats.walkSteps;
+  sample.locates = stats.locates;
+  sample.flips = stats.flips;
   sample.vertices = triangulation.vertexCount();
   const geocdt::Mesh mesh = triangulation.mesh();
   sample.triangles = mesh.triangles.size() / 3;

@@ -46,7 +46,7 @@ bool crossingNearAnEnd(const InputSegment& s, const InputSegment& t) {
 // arrays over all vertices: a call into a large triangulation checks a few chains.
 class Chains {
  public:
-  explicit Chains(Delaunay& d) : d_(d) {}
+  Chains(Delaunay& d, VertexEdges& ends) : d_(d), ends_(ends) {}
 
   // The chain of segment i, empty when it has none; cached.
   const std::vector<std::uint32_t>& of(std::uint32_t i) {
@@ -79,12 +79,12 @@ class Chains {
   // finds it: a search by the most any vertex so far strays, in units of the spacing of
   // doubles on each axis.
   void search(std::uint32_t i, std::vector<std::uint32_t>& chain) {
-    const InputSegment& s = d_.constraints.segments[i];
+    const InputSegment s = d_.constraints.geometry(i, d_.xy);
     const std::uint32_t polyline = d_.constraints.sourceOf(i).polyline;
     const int bound = chainBoundExponent(s);
-    const Hit a = d_.locate(s.ax, s.ay, true), b = d_.locate(s.bx, s.by, true);
-    if (a.kind != Hit::Kind::Vertex || b.kind != Hit::Kind::Vertex) return;
-    const std::uint32_t first = d_.topo.tri[a.edge], last = d_.topo.tri[b.edge];
+    const std::uint32_t first = d_.constraints.segments[i].a, last = d_.constraints.segments[i].b;
+    const std::int32_t out = ends_.find(d_, first);
+    if (out < 0) return;
     // Spacings are powers of two: dividing by them is exact.
     const double gx = spacingAt(std::fmax(std::fabs(s.ax), std::fabs(s.bx)));
     const double gy = spacingAt(std::fmax(std::fabs(s.ay), std::fabs(s.by)));
@@ -97,7 +97,7 @@ class Chains {
       return std::hypot(wx - t * dx, wy - t * dy);
     };
     EdgeMap<std::uint32_t> settled;  // vertex -> the one before it on the chain
-    std::vector<Step> queue(1, {0, first, first, a.edge});
+    std::vector<Step> queue(1, {0, first, first, out});
     const auto later = [](const Step& x, const Step& y) { return x.cost > y.cost; };
     const Topology& topo = d_.topo;
     while (!queue.empty()) {
@@ -127,6 +127,7 @@ class Chains {
   }
 
   Delaunay& d_;
+  VertexEdges& ends_;
   EdgeMap<std::int32_t> out_;
   EdgeMap<std::uint32_t> index_;  // segment -> its chain in chains_
   std::vector<std::vector<std::uint32_t>> chains_;
@@ -182,12 +183,12 @@ int crossings(const double* p, const std::vector<std::uint32_t>& P,
 
 }  // namespace
 
-bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments) {
+bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments, VertexEdges& ends) {
   if (segments.empty()) return true;
   std::sort(segments.begin(), segments.end());
   segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
   const ConstraintStore& store = d.constraints;
-  Chains chains(d);
+  Chains chains(d, ends);
   std::vector<std::uint32_t> others;
   for (const std::uint32_t i : segments) {
     const std::vector<std::uint32_t> P = chains.of(i);
@@ -210,9 +211,9 @@ bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments) {
     }
     std::sort(others.begin(), others.end());
     others.erase(std::unique(others.begin(), others.end()), others.end());
-    const InputSegment& s = store.segments[i];
+    const InputSegment s = store.geometry(i, d.xy);
     for (const std::uint32_t j : others) {
-      const InputSegment& t = store.segments[j];
+      const InputSegment t = store.geometry(j, d.xy);
       const Meeting how = meeting(s, t);
       if (how == Meeting::Touching || (how == Meeting::Crossing && crossingNearAnEnd(s, t)))
         continue;

@@ -12,11 +12,12 @@
 #include <vector>
 
 #include "delaunay.h"
+#include "vertex_edges.h"
 
 namespace geocdt {
 
 // Whether the chains of the given input segments (indices into the constraint store, in any
-// order, repeats allowed) keep the guarantee.
-bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments);
+// order, repeats allowed) keep the guarantee. Chains start from ends' half-edges.
+bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments, VertexEdges& ends);
 
 }  // namespace geocdt

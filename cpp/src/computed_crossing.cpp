@@ -123,8 +123,8 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   c.c2 = topo.tri[prevEdge(topo.adj[h])];
   const EdgeSource* crossedSource = store.find(c.r, c.l);
   const InputSegment edge{p[2 * c.r], p[2 * c.r + 1], p[2 * c.l], p[2 * c.l + 1]};
-  c.ab = store.segments[piece.src.segment];
-  c.cd = crossedSource ? store.segments[crossedSource->segment] : edge;
+  c.ab = store.geometry(piece.src.segment, d_.xy);
+  c.cd = crossedSource ? store.geometry(crossedSource->segment, d_.xy) : edge;
   // Two input segments meet at one vertex: once their crossing has one, later crossings of
   // their pieces (after rounding bent them) go there too, so no run of ever new vertices.
   c.pair = ConstraintStore::key(piece.src.segment, crossedSource ? crossedSource->segment : kGhost);
@@ -202,6 +202,7 @@ std::uint32_t SegmentInserter::split(const Crossing& c, double x, double y) {
   // The rounded point is near the edge, not on it: the spokes to the two apexes may need
   // flips that a point exactly on the edge would never need.
   const std::int32_t spoke = d_.splitEdge(c.h, v);
+  ends_.set(v, spoke);
   for (std::int32_t e = spoke;;) {
     d_.flipStack().push_back(e);
     e = d_.topo.adj[prevEdge(e)];

@@ -22,8 +22,18 @@ struct EdgeSource {
   std::int32_t extra = -1;     // index of more polylines and segments in the store, or -1
 };
 
+// An input segment's geometry: what crossings are computed from and chains are checked
+// against. Built when needed from its end vertices (ConstraintStore::geometry).
 struct InputSegment {
   double ax, ay, bx, by;
+};
+
+// An input segment as the store keeps it: its end vertices. Input vertices keep their ids
+// and coordinates for the triangulation's life (crossings only add vertices after them, and
+// snap rounding rebuilds with the same ids), so their coordinates are the segment's exact
+// input geometry: 8 bytes a segment instead of the 32 of its coordinates.
+struct SegmentEnds {
+  std::uint32_t a, b;
 };
 
 // A segment given before the triangulation had triangles (all points collinear so far).
@@ -35,7 +45,7 @@ struct PendingSegment {
 
 class ConstraintStore {
  public:
-  std::vector<InputSegment> segments;
+  std::vector<SegmentEnds> segments;
   // Where each segment starts among the points of every polyline inserted, numbered across
   // polylines in insertion order (segment i runs from that point to the next), or kNoSegment
   // past 2^32 - 2.
@@ -53,6 +63,12 @@ class ConstraintStore {
     firstSegment.push_back(static_cast<std::uint32_t>(segments.size()));
     ring.push_back(isRing);
     return polylineCount++;
+  }
+
+  // Segment i's input geometry, from the coordinates xy of the vertices.
+  InputSegment geometry(std::uint32_t i, const std::vector<double>& xy) const {
+    const SegmentEnds& s = segments[i];
+    return {xy[2 * s.a], xy[2 * s.a + 1], xy[2 * s.b], xy[2 * s.b + 1]};
   }
 
   // What segment i carries when it alone makes an edge: its polyline and winding.
@@ -204,7 +220,7 @@ class ConstraintStore {
     return static_cast<std::int32_t>(extras_.size() - 1);
   }
 
-  EdgeMap<EdgeSource> edges_;
+  EdgeMap<EdgeSource, EdgeSlot> edges_;
   std::vector<std::vector<Member>> extras_;
 };
 

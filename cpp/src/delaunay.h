@@ -68,6 +68,7 @@ class Delaunay {
 
   bool isLocallyDelaunay(std::int32_t e) const;  // e's quad, whatever the fixed flags
   void setLastTriangle(std::int32_t t) { last_ = t; }
+  std::int32_t lastTriangle() const { return last_; }  // holds the vertex inserted last
   const Status& lastError() const { return error_; }
   // The grid's side as sized for the points inserted (a stale grid is resized on first use).
   std::uint32_t gridSize() const {

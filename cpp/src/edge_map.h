@@ -8,7 +8,28 @@
 
 namespace geocdt {
 
-template <typename Value>
+// Where a key's probe starts: a multiplicative hash, for keys with no useful order.
+struct HashedSlot {
+  std::size_t operator()(std::uint64_t key) const {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32);
+  }
+};
+
+// For keys (u << 32 | v) of edges with u < v: edges between nearby vertex ids start their
+// probes in nearby slots, so that a run of edges along a polyline (whose vertices are
+// numbered in input order) touches a few cache lines instead of one each. The ids are hashed
+// in blocks of 8 (u's block and v's), which spreads the edges of one vertex to many others
+// (a hub) and ids far apart; within a block, u picks a pair of slots.
+struct EdgeSlot {
+  std::size_t operator()(std::uint64_t key) const {
+    const std::uint64_t u = key >> 32, v = key & 0xFFFFFFFFu;
+    const std::uint64_t block =
+        ((u >> 3) * 0x9E3779B97F4A7C15ull) ^ ((v >> 3) * 0xC2B2AE3D27D4EB4Full);
+    return static_cast<std::size_t>((block >> 32) << 4 | (u & 7) << 1);
+  }
+};
+
+template <typename Value, typename Slot = HashedSlot>
 class EdgeMap {
  public:
   static constexpr std::uint64_t kEmpty = ~0ull;
@@ -67,9 +88,7 @@ class EdgeMap {
   }
 
  private:
-  std::size_t slot(std::uint64_t key) const {
-    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
-  }
+  std::size_t slot(std::uint64_t key) const { return Slot()(key) & mask_; }
 
   void grow() {
     std::vector<std::uint64_t> keys(keys_.empty() ? 64 : 2 * keys_.size(), kEmpty);

@@ -10,6 +10,7 @@
 #include "segment_inserter.h"
 #include "snap_rounding.h"
 #include "triangulation_state.h"
+#include "vertex_edges.h"
 
 namespace geocdt {
 
@@ -44,6 +45,15 @@ Status located(const Status& s, std::size_t polyline, std::size_t segment) {
   return out;
 }
 
+// The half-edges out of every vertex, for a call of many segments: one pass over the
+// triangles costs less than locating their ends. A few segments in a large triangulation
+// (a line drawn on a map) locate theirs instead.
+VertexEdges endsFor(const Delaunay& d, std::size_t segments) {
+  VertexEdges ends;
+  if (d.built() && 8 * static_cast<std::uint64_t>(segments) >= d.vertexCount()) ends.build(d);
+  return ends;
+}
+
 }  // namespace
 
 Status insertPendingSegments(Delaunay& d, const Options& options) {
@@ -53,13 +63,14 @@ Status insertPendingSegments(Delaunay& d, const Options& options) {
   pending.swap(store.pending);
   const std::uint32_t keep = d.vertexCount();  // crossings come after
   if (options.snapRounding == SnapRounding::Always) return snapRoundConstraints(d, keep, options);
-  SegmentInserter inserter(d);
+  VertexEdges ends = endsFor(d, pending.size());
+  SegmentInserter inserter(d, ends);
   for (const PendingSegment& s : pending) {
     const Outcome outcome = inserter.insert(s.u, s.v, s.src);
     if (outcome == Outcome::Broken) return located(inserter.error(), s.polyline, s.index);
     if (outcome == Outcome::GaveUp) return snapRoundConstraints(d, keep, options);
   }
-  if (!chainsKeepTheGuarantee(d, inserter.touchedSegments()))
+  if (!chainsKeepTheGuarantee(d, inserter.touchedSegments(), ends))
     return snapRoundConstraints(d, keep, options);
   return Status::success();
 }
@@ -103,7 +114,8 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     if (!s.ok()) return s;
     state_->slotMapValid = false;
 
-    SegmentInserter inserter(d);
+    VertexEdges ends = endsFor(d, total);
+    SegmentInserter inserter(d, ends);
     const Progress& progress = d.options().progress;
     std::size_t segmentsTried = 0;
     const std::uint32_t keep = d.vertexCount();  // crossings come after
@@ -128,8 +140,7 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
         src.segment = static_cast<std::uint32_t>(store.segments.size());
         src.winding = ring ? 1 : 0;
         src.polyline = id;
-        store.segments.push_back(
-            {line.xy[2 * k], line.xy[2 * k + 1], line.xy[2 * k + 2], line.xy[2 * k + 3]});
+        store.segments.push_back({u, v});
         store.segmentStarts.push_back(
             static_cast<std::uint32_t>(std::min<std::uint64_t>(firstPoint + k, kNoSegment)));
         if (!d.built()) {
@@ -144,7 +155,7 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
       }
     }
     // Computed crossings stay where every chain that met one keeps the guarantee.
-    if (!snap && d.built()) snap = !chainsKeepTheGuarantee(d, inserter.touchedSegments());
+    if (!snap && d.built()) snap = !chainsKeepTheGuarantee(d, inserter.touchedSegments(), ends);
     if (snap) {
       const Status s = snapRoundConstraints(d, keep, state_->options);
       if (!s.ok()) return s;

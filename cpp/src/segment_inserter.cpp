@@ -66,14 +66,14 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
 std::int32_t SegmentInserter::edgeOutOf(std::uint32_t a) {
   // The piece before usually ended at a: its edge's twin starts here.
   if (hint_ >= 0 && hint_ < 3 * d_.topo.slotCount() && d_.topo.tri[hint_] == a) return hint_;
-  // Pieces follow each other, so the last triangle is usually next to a.
-  const Hit h = d_.locate(d_.xy[2 * a], d_.xy[2 * a + 1], false);
-  return h.kind == Hit::Kind::Vertex ? h.edge : -1;
+  return ends_.find(d_, a);
 }
 
 void SegmentInserter::markConstrained(std::int32_t e, const EdgeSource& src) {
   Topology& t = d_.topo;
   hint_ = t.adj[e];  // starts at the far end, where the next piece starts
+  ends_.set(t.tri[e], e);
+  ends_.set(t.tri[hint_], hint_);
   t.fixed[e] = 1;
   t.fixed[t.adj[e]] = 1;
   d_.constraints.mark(t.tri[e], t.tri[nextEdge(e)], src);
@@ -182,6 +182,8 @@ bool SegmentInserter::flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource&
       continue;
     }
     topo.flip(h);
+    ends_.set(x, nextEdge(f));  // x and y lose half-edges h and f (see Topology::flip)
+    ends_.set(y, nextEdge(h));
     touched_.push_back(h / 3);
     touched_.push_back(f / 3);
     // The new diagonal v-d (now prevEdge(h)) crosses a-w when v and d lie strictly apart.
@@ -208,6 +210,7 @@ std::uint32_t SegmentInserter::addCrossingVertex(double x, double y, bool& faile
   d_.xy.push_back(y);
   const std::uint32_t got = d_.insertVertex(w);
   if (got == w) {
+    ends_.setFromTriangle(d_.topo, w, d_.lastTriangle());
     ++d_.stats.crossings;
     return w;
   }

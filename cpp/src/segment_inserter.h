@@ -10,6 +10,7 @@
 
 #include "delaunay.h"
 #include "edge_map.h"
+#include "vertex_edges.h"
 
 namespace geocdt {
 
@@ -32,8 +33,10 @@ enum class Outcome : std::uint8_t {
 
 class SegmentInserter {
  public:
-  explicit SegmentInserter(Delaunay& d, Crossings crossings = Crossings::Computed)
-      : d_(d), crossings_(crossings) {}
+  // Segments start from their end vertices' half-edges in ends, which the inserter keeps
+  // up to date where it changes the triangles.
+  SegmentInserter(Delaunay& d, VertexEdges& ends, Crossings crossings = Crossings::Computed)
+      : d_(d), ends_(ends), crossings_(crossings) {}
 
   // Inserts u -> v carrying src.
   Outcome insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
@@ -92,6 +95,7 @@ class SegmentInserter {
   Outcome broken(const char* what);
 
   Delaunay& d_;
+  VertexEdges& ends_;
   Crossings crossings_;
   Status error_;
   std::vector<std::uint32_t> touchedSegments_;

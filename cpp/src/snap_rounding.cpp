@@ -185,8 +185,8 @@ std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, 
                signAlong(g, wx, wy, p[2 * to], p[2 * to + 1]) >
            0;
   };
-  if (!keeps(store.segments[piece.src.segment], piece.a, piece.b) ||
-      !keeps(store.segments[crossedSegment], r, l)) {
+  if (!keeps(store.geometry(piece.src.segment, d_.xy), piece.a, piece.b) ||
+      !keeps(store.geometry(crossedSegment, d_.xy), r, l)) {
     failed = true;
     error_ = {StatusCode::InternalError,
               "snap rounding found no vertex within the bound where two links cross"};
@@ -211,20 +211,19 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   store.firstSegment = std::move(d.constraints.firstSegment);
   store.ring = std::move(d.constraints.ring);
   store.polylineCount = d.constraints.polylineCount;
-  const std::vector<InputSegment>& segments = store.segments;
-  const std::size_t n = segments.size();
+  const std::size_t n = store.segments.size();
+  // The geometry of segment i (its ends keep their ids and coordinates in fresh).
+  const auto segment = [&](std::size_t i) {
+    return store.geometry(static_cast<std::uint32_t>(i), fresh.xy);
+  };
 
-  // The ends of each segment, and a half-edge out of its first.
-  std::vector<std::uint32_t> ends(2 * n);
+  // A half-edge out of each segment's first vertex.
+  VertexEdges ends;
+  ends.build(fresh);
   std::vector<std::int32_t> outOf(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const InputSegment& s = segments[i];
-    const Hit a = fresh.locate(s.ax, s.ay, true), b = fresh.locate(s.bx, s.by, true);
-    if (a.kind != Hit::Kind::Vertex || b.kind != Hit::Kind::Vertex)
-      return {StatusCode::InternalError, "snap rounding lost the end of a segment"};
-    ends[2 * i] = fresh.topo.tri[a.edge];
-    ends[2 * i + 1] = fresh.topo.tri[b.edge];
-    outOf[i] = a.edge;
+    outOf[i] = ends.find(fresh, store.segments[i].a);
+    if (outOf[i] < 0) return {StatusCode::InternalError, "snap rounding lost the end of a segment"};
   }
 
   // The triangles near each segment: their corners are the vertices it may pass through,
@@ -237,10 +236,10 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   std::vector<double> reach(n);
   for (std::size_t i = 0; i < n; ++i) {
     int ex, ey;
-    boxExponents(segments[i], ex, ey);
+    const InputSegment s = segment(i);
+    boxExponents(s, ex, ey);
     reach[i] = std::hypot(std::ldexp(1.0, ex), std::ldexp(1.0, ey));
-    trianglesNear(fresh, outOf[i], segments[i], reach[i], static_cast<std::uint32_t>(i), stamp,
-                  found);
+    trianglesNear(fresh, outOf[i], s, reach[i], static_cast<std::uint32_t>(i), stamp, found);
     for (const std::int32_t t : found) {
       slotSegment.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i)});
       for (int k = 0; k < 3; ++k) candidates[i].push_back(fresh.topo.tri[3 * t + k]);
@@ -262,9 +261,10 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   std::vector<Crossing> crossings;
   for (const auto& [i, j] : pairs) {
-    if (!crossProperly(segments[i], segments[j])) continue;
+    const InputSegment s = segment(i), t = segment(j);
+    if (!crossProperly(s, t)) continue;
     Crossing c{};
-    roundedCrossing(segments[i], segments[j], c.x, c.y);
+    roundedCrossing(s, t, c.x, c.y);
     crossings.push_back(c);
   }
   std::sort(crossings.begin(), crossings.end());
@@ -299,13 +299,14 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   }
 
   // Each chain, inserted link by link.
-  SegmentInserter inserter(fresh, Crossings::Snapped);
+  ends.build(fresh);  // with the rounded crossings
+  SegmentInserter inserter(fresh, ends, Crossings::Snapped);
   std::vector<std::uint32_t> chain;
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<std::uint32_t>& list = candidates[i];
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
-    chainOf(segments[i], ends[2 * i], ends[2 * i + 1], list, fresh.xy.data(), chain);
+    chainOf(segment(i), store.segments[i].a, store.segments[i].b, list, fresh.xy.data(), chain);
     const EdgeSource src = store.sourceOf(static_cast<std::uint32_t>(i));
     for (std::size_t k = 0; k + 1 < chain.size(); ++k)
       if (inserter.insert(chain[k], chain[k + 1], src) == Outcome::Broken) return inserter.error();
