@@ -83,7 +83,11 @@ class NaturalNeighbours {
  public:
   explicit NaturalNeighbours(const Delaunay& d) : d_(d) {}
 
-  void operator()(std::int32_t e, double x, double y, const Blender& blend, double* out) {
+  // false when q sees a border edge of its cavity at an angle within 1e-6 of a straight one
+  // (q next to a constrained or hull edge): the new Voronoi vertex of that edge lies out
+  // where its digits cancel (a relative error of about 1e-16 over the sine of that angle),
+  // and the caller falls back to linear, which has the same limit on the edge.
+  bool operator()(std::int32_t e, double x, double y, const Blender& blend, double* out) {
     const Topology& topo = d_.topo;
     const double* p = d_.xy.data();
     cavity_.assign(1, e / 3);
@@ -111,7 +115,9 @@ class NaturalNeighbours {
         std::int32_t f = 3 * t + k;
         if (!isBorder(f)) continue;
         const std::uint32_t u = topo.tri[f];
-        Vec first = circumcentre(rel(u), rel(topo.tri[nextEdge(f)]));
+        const Vec ru = rel(u), rw = rel(topo.tri[nextEdge(f)]);
+        if (cross(ru, rw) < kFlat * std::hypot(ru.x, ru.y) * std::hypot(rw.x, rw.y)) return false;
+        Vec first = circumcentre(ru, rw);
         Vec last = first;
         double area = 0;
         for (int guard = 0; guard < 1 << 20; ++guard) {
@@ -132,7 +138,9 @@ class NaturalNeighbours {
         total += area;
         blend.add(out, u, area);
       }
+    if (!(total > 0) || !std::isfinite(total)) return false;
     for (double* o = out; o != out + kValues_; ++o) *o /= total;
+    return true;
   }
 
   void setValuesPerPoint(std::uint32_t k) { kValues_ = k; }
@@ -141,6 +149,7 @@ class NaturalNeighbours {
   bool inCavity(std::int32_t t) const {
     return std::find(cavity_.begin(), cavity_.end(), t) != cavity_.end();
   }
+  static constexpr double kFlat = 1e-6;
   bool isBorder(std::int32_t f) const {
     return d_.topo.fixed[f] || d_.topo.isGhost(d_.topo.adj[f] / 3) || !inCavity(d_.topo.adj[f] / 3);
   }
@@ -172,18 +181,13 @@ void interpolateValues(Delaunay& d, const std::vector<double>& values, std::uint
       case Hit::Kind::Edge: {
         const std::int32_t e = h.edge;
         const bool border = topo.fixed[e] || topo.isGhost(e / 3) || topo.isGhost(topo.adj[e] / 3);
-        if (border || method == Interpolation::Linear) {
+        if (border || method == Interpolation::Linear || !natural(e, x, y, blend, o))
           alongEdge(p, topo.tri[e], topo.tri[nextEdge(e)], x, y, blend, o);
-        } else {
-          natural(e, x, y, blend, o);
-        }
         break;
       }
       case Hit::Kind::Face:
-        if (method == Interpolation::Linear)
+        if (method == Interpolation::Linear || !natural(h.edge, x, y, blend, o))
           barycentric(p, &topo.tri[h.edge - h.edge % 3], x, y, blend, o);
-        else
-          natural(h.edge, x, y, blend, o);
         break;
       default: blend.nan(o); break;
     }

@@ -305,5 +305,32 @@ TEST(Values, LinearPrecisionWithConstraints) {
   }
 }
 
+// Queries a hair's breadth from a constrained edge, at huge and tiny scales: finite values
+// between the neighbours' (natural falls back to linear where its areas overflow).
+TEST(Values, NaturalNextToConstrainedEdges) {
+  for (double scale : {1e-150, 1.0, 1e140}) {
+    const std::vector<double> xy =
+        testing::transformed(testing::uniformPoints(300, 10), scale, 0, 0);
+    Triangulation t;
+    std::vector<double> f(xy.size() / 2);
+    for (std::size_t i = 0; i < f.size(); ++i) f[i] = static_cast<double>(i % 7);
+    ASSERT_TRUE(t.insertPoints(xy.data(), f.size(), nullptr, f.data()).ok());
+    const double line[] = {0.2 * scale, 0.3 * scale, 0.8 * scale, 0.6 * scale};
+    const double fl[] = {1, 5};
+    ASSERT_TRUE(t.insertPolyline(line, 2, nullptr, fl).ok());
+    for (double u : {0.25, 0.5, 0.75}) {
+      const double x = line[0] + u * (line[2] - line[0]), y = line[1] + u * (line[3] - line[1]);
+      const double q[] = {x, std::nextafter(y, 2 * y), x, std::nextafter(y, 0.0), x, y};
+      double out[3];
+      t.interpolate(q, 3, Interpolation::Natural, out);
+      for (double v : out) {
+        EXPECT_TRUE(std::isfinite(v)) << scale << " at " << u;
+        EXPECT_GE(v, 0);
+        EXPECT_LE(v, 6);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace geocdt

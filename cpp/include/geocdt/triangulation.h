@@ -240,9 +240,10 @@ class Triangulation {
   // were given. Linear is exact at vertices and continuous everywhere; Natural too, and has
   // linear precision (it reproduces linear functions). Natural neighbours are those the query
   // sees without crossing a constrained edge; on a constrained or hull edge both methods
-  // interpolate linearly along the edge. Queries are located from the grid's cell hint, which
-  // each query moves to the triangle found: consecutive nearby queries walk a step or two.
-  // Not a pure read, like locate().
+  // interpolate linearly along the edge, and Natural gives Linear's value where the query sees
+  // such an edge at an angle within 1e-6 of a straight one (digits would cancel there). Queries are
+  // located from the grid's cell hint, which each query moves to the triangle found: consecutive
+  // nearby queries walk a step or two. Not a pure read, like locate().
   void interpolate(const double* xy, std::size_t count, Interpolation method, double* out) const;
   // The surface sampled on a raster: out receives width * height * valuesPerPoint() floats,
   // row by row from the top, NaN outside the convex hull. Linear scan-converts triangle by
