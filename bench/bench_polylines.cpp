@@ -55,7 +55,6 @@ int main(int argc, char** argv) {
   geocdt::MeshOptions meshOptions;
   if (hash) {
     meshOptions.insideFlags = true;
-    meshOptions.vertexSegments = true;
     meshOptions.regions = true;
     for (std::size_t i = 0; i < views.size(); ++i)
       meshOptions.polylinePolygons.push_back(static_cast<std::int32_t>(i));
@@ -96,7 +95,6 @@ int main(int argc, char** argv) {
     h.add(mesh.sources);
     h.add(mesh.inside);
     h.add(mesh.regions);
-    h.add(mesh.vertexSegments);
     h.add(ids);
     std::printf("hash %016llx\n", static_cast<unsigned long long>(h.value()));
   }
