@@ -30,10 +30,10 @@ struct StatField {
 #field, [](const Stats& s) { return static_cast<double>(s.field); } \
   }
 constexpr StatField kStatFields[] = {
-    GEOCDT_STAT(inserted), GEOCDT_STAT(duplicates), GEOCDT_STAT(walkSteps),
-    GEOCDT_STAT(locates),  GEOCDT_STAT(flips),      GEOCDT_STAT(walkFallbacks),
-    GEOCDT_STAT(gridSize), GEOCDT_STAT(crossings),  GEOCDT_STAT(polylines),
-    GEOCDT_STAT(segments),
+    GEOCDT_STAT(inserted), GEOCDT_STAT(duplicates),    GEOCDT_STAT(walkSteps),
+    GEOCDT_STAT(locates),  GEOCDT_STAT(flips),         GEOCDT_STAT(walkFallbacks),
+    GEOCDT_STAT(gridSize), GEOCDT_STAT(crossings),     GEOCDT_STAT(polylines),
+    GEOCDT_STAT(segments), GEOCDT_STAT(snapRoundings),
 };
 #undef GEOCDT_STAT
 // Every counter takes 8 bytes (gridSize with its padding): a counter added to Stats and not

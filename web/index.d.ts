@@ -99,6 +99,11 @@ export interface CoreStats {
   polylines: number;
   /** Constraint segments inserted. */
   segments: number;
+  /**
+   * Times the constraints were snap-rounded because computed crossings would have broken the
+   * guarantee (tangles of vertices a few ulps apart; never seen on real data).
+   */
+  snapRoundings: number;
 }
 
 /** The counters of a call: the core's, and what the call returned and took. */
