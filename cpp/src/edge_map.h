@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "chunks.h"
+
 namespace geocdt {
 
 template <typename Value>
@@ -78,8 +80,10 @@ class EdgeMap {
     values.swap(values_);
     mask_ = keys_.size() - 1;
     size_ = 0;
-    for (std::size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] != kEmpty) insert(keys[i], values[i]);
+    forChunks(0, keys.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (keys[i] != kEmpty) insert(keys[i], values[i]);
+    });
   }
 
   std::vector<std::uint64_t> keys_;
