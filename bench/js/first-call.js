@@ -11,7 +11,7 @@ import { readFileSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { extname, join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { median } from './timing.js';
+import { median, threadCpuClock } from './timing.js';
 
 function option(name, fallback) {
   const i = process.argv.indexOf(name);
@@ -99,17 +99,6 @@ function loader(library, geocdtUrl, delaunatorUrl) {
 }
 
 // --- Node: one fresh process per run. ---
-
-// The main thread's CPU time in ms, from Linux's scheduler statistics (ns on the CPU).
-function threadCpuClock() {
-  const file = `/proc/self/task/${process.pid}/schedstat`;
-  try {
-    readFileSync(file);
-  } catch {
-    return undefined;
-  }
-  return () => Number(readFileSync(file, 'utf8').split(' ')[0]) / 1e6;
-}
 
 async function child(library, dataset) {
   const bytes = encode(await makeDataset(dataset));

@@ -8,7 +8,7 @@ import { existsSync } from 'node:fs';
 import { join } from 'node:path';
 import Delaunator from 'delaunator';
 import { init, triangulate } from 'geocdt';
-import { alternate, median } from './timing.js';
+import { median, threadCpuClock } from './timing.js';
 import { countryRings, flatPolylines, readGpl, uniform } from './datasets.js';
 
 function option(name, fallback) {
@@ -20,25 +20,46 @@ const quick = process.argv.includes('--quick');
 const data = option('--data', null);
 const n = (x) => x.toLocaleString('en-US');
 
+// Runs geocdt and delaunator in alternation on a row; medians of wall and main-thread CPU ms.
+function alternateRow(row, cpuClock) {
+  const runs = { geocdt: { wall: [], cpu: [] }, delaunator: { wall: [], cpu: [] } };
+  const outside = [];
+  const contenders = [
+    ['geocdt', () => {
+      const { stats } = triangulate(row.input);
+      outside.push(1 - stats.coreMilliseconds / stats.milliseconds);
+    }],
+    ['delaunator', () => new Delaunator(row.points)],
+  ];
+  for (let round = 0; round < row.rounds; round++) {
+    for (let k = 0; k < 2; k++) {
+      const [name, run] = contenders[(k + round) % 2];
+      globalThis.gc?.();
+      const started = performance.now();
+      const cpuStarted = cpuClock?.();
+      run();
+      if (cpuClock) runs[name].cpu.push(cpuClock() - cpuStarted);
+      runs[name].wall.push(performance.now() - started);
+    }
+  }
+  return { runs, outside: median(outside) };
+}
+
 // rows: [{ name, input, points (the coordinates delaunator gets), target, rounds }]
-async function measure(rows) {
-  console.log('| input | points | geocdt ms | delaunator ms | geocdt / delaunator | target | '
-    + 'outside the core |');
-  console.log('| --- | --: | --: | --: | --: | --: | --: |');
+function measure(rows) {
+  const cpuClock = threadCpuClock();
+  const cpu = cpuClock !== undefined;
+  console.log('| input | points | geocdt ms | delaunator ms | geocdt / delaunator | '
+    + `${cpu ? 'main-thread CPU ratio | ' : ''}target | outside the core |`);
+  console.log(`| --- | --: | --: | --: | --: | ${cpu ? '--: | ' : ''}--: | --: |`);
   for (const row of rows) {
-    const outside = [];
-    const results = await alternate([
-      {
-        name: 'geocdt',
-        run: () => triangulate(row.input),
-        describe: ({ stats }) => outside.push(1 - stats.coreMilliseconds / stats.milliseconds),
-      },
-      { name: 'delaunator', run: () => new Delaunator(row.points), describe: () => '' },
-    ], row.rounds);
-    const g = results.geocdt.ms, d = results.delaunator.ms;
+    const { runs, outside } = alternateRow(row, cpuClock);
+    const g = median(runs.geocdt.wall), d = median(runs.delaunator.wall);
+    const cpuRatio = cpu ? `${(median(runs.geocdt.cpu) / median(runs.delaunator.cpu))
+      .toFixed(2)}× | ` : '';
     console.log(`| ${row.name} | ${n(row.points.length / 2)} | ${g.toFixed(0)} | `
-      + `${d.toFixed(0)} | ${(g / d).toFixed(2)}× | ${row.target} | `
-      + `${(100 * median(outside)).toFixed(1)}% |`);
+      + `${d.toFixed(0)} | ${(g / d).toFixed(2)}× | ${cpuRatio}${row.target} | `
+      + `${(100 * outside).toFixed(1)}% |`);
   }
   console.log();
 }
@@ -64,7 +85,7 @@ if (!quick) {
 }
 console.log('## geocdt (constrained where there are polylines) vs delaunator (the same points, '
   + `unconstrained), warm, alternating, medians; ${new Date().toISOString().slice(0, 10)}\n`);
-await measure(rows);
+measure(rows);
 if (!quick && !(data && existsSync(join(data, 'gshhg_region.gpl')))) {
   console.log('(GSHHG region skipped: pass --data DIR with gshhg_region.gpl in it.)');
 }
