@@ -4,7 +4,9 @@
 // for its later calls once it has run enough; a loop that runs to its end inside one call
 // never gets that code (engines have no on-stack replacement for wasm), so in the first call
 // in a process such loops ran at baseline speed throughout. A chunk is a few thousand
-// iterations: its call costs nothing measurable natively.
+// iterations; natively the chunks cost 0.5% more instructions on 1M uniform points (callgrind).
+// Binaryen would inline the chunk functions back (one caller each) without the link flag in
+// bindings/CMakeLists.txt.
 #include <algorithm>
 #include <cstddef>
 
