@@ -66,11 +66,23 @@ void barycentric(const double* p, const std::uint32_t* v, double x, double y, co
   const Vec ac{p[2 * v[2]] - a.x, p[2 * v[2] + 1] - a.y};
   const Vec aq{x - a.x, y - a.y};
   const double area = cross(ab, ac);
-  const double wb = cross(aq, ac) / area, wc = cross(ab, aq) / area;
+  // q lies in the triangle (located exactly): weights below 0 or above 1 are rounding, which
+  // in a sliver can be large. Clamped and normalised, the value stays between the corners'.
+  const double wb = std::max(0.0, cross(aq, ac) / area), wc = std::max(0.0, cross(ab, aq) / area);
+  const double wa = std::max(0.0, 1 - wb - wc), sum = wa + wb + wc;
+  if (!(area > 0) || !std::isfinite(sum)) {
+    // A sliver whose area rounds to nothing: q lies along its longest edge.
+    const Vec bc{ac.x - ab.x, ac.y - ab.y};
+    const double lab = ab.x * ab.x + ab.y * ab.y, lac = ac.x * ac.x + ac.y * ac.y,
+                 lbc = bc.x * bc.x + bc.y * bc.y;
+    if (lab >= lac && lab >= lbc) return alongEdge(p, v[0], v[1], x, y, blend, out);
+    if (lac >= lbc) return alongEdge(p, v[0], v[2], x, y, blend, out);
+    return alongEdge(p, v[1], v[2], x, y, blend, out);
+  }
   blend.clear(out);
-  blend.add(out, v[0], 1 - wb - wc);
-  blend.add(out, v[1], wb);
-  blend.add(out, v[2], wc);
+  blend.add(out, v[0], wa / sum);
+  blend.add(out, v[1], wb / sum);
+  blend.add(out, v[2], wc / sum);
 }
 
 // Sibson's coordinates of q, which lies strictly inside the triangle of half-edge e or on an
@@ -90,7 +102,18 @@ class NaturalNeighbours {
   bool operator()(std::int32_t e, double x, double y, const Blender& blend, double* out) {
     const Topology& topo = d_.topo;
     const double* p = d_.xy.data();
+    // A stamp per query marks the cavity's slots: degenerate inputs (cocircular points)
+    // make cavities of thousands of triangles.
+    if (mark_.size() != static_cast<std::size_t>(topo.slotCount())) {
+      mark_.assign(topo.slotCount(), 0);
+      stamp_ = 0;
+    }
+    if (++stamp_ == 0) {
+      std::fill(mark_.begin(), mark_.end(), 0);
+      stamp_ = 1;
+    }
     cavity_.assign(1, e / 3);
+    mark_[e / 3] = stamp_;
     for (std::size_t head = 0; head < cavity_.size(); ++head) {
       const std::int32_t t = cavity_[head];
       for (int k = 0; k < 3; ++k) {
@@ -100,8 +123,10 @@ class NaturalNeighbours {
         if (topo.isGhost(n) || inCavity(n)) continue;
         const std::uint32_t* v = &topo.tri[3 * n];
         if (incircle(p[2 * v[0]], p[2 * v[0] + 1], p[2 * v[1]], p[2 * v[1] + 1], p[2 * v[2]],
-                     p[2 * v[2] + 1], x, y) == Sign::Positive)
+                     p[2 * v[2] + 1], x, y) == Sign::Positive) {
           cavity_.push_back(n);
+          mark_[n] = stamp_;
+        }
       }
     }
     // Each border half-edge u->w (cavity inside, on its left) starts the polygon of u: the
@@ -135,6 +160,7 @@ class NaturalNeighbours {
           }
           f = topo.adj[in];
         }
+        area = std::max(area, 0.0);  // below 0 only by rounding (cocircular neighbours)
         total += area;
         blend.add(out, u, area);
       }
@@ -146,9 +172,7 @@ class NaturalNeighbours {
   void setValuesPerPoint(std::uint32_t k) { kValues_ = k; }
 
  private:
-  bool inCavity(std::int32_t t) const {
-    return std::find(cavity_.begin(), cavity_.end(), t) != cavity_.end();
-  }
+  bool inCavity(std::int32_t t) const { return mark_[t] == stamp_; }
   static constexpr double kFlat = 1e-6;
   bool isBorder(std::int32_t f) const {
     return d_.topo.fixed[f] || d_.topo.isGhost(d_.topo.adj[f] / 3) || !inCavity(d_.topo.adj[f] / 3);
@@ -156,6 +180,8 @@ class NaturalNeighbours {
 
   const Delaunay& d_;
   std::vector<std::int32_t> cavity_;
+  std::vector<std::uint32_t> mark_;  // stamp_ for the slots in the current cavity
+  std::uint32_t stamp_ = 0;
   std::uint32_t kValues_ = 1;
 };
 

@@ -8,6 +8,7 @@
 
 #include "geocdt/triangulation.h"
 #include "point_generators.h"
+#include "vertex_values.h"
 
 namespace geocdt {
 namespace {
@@ -330,6 +331,34 @@ TEST(Values, NaturalNextToConstrainedEdges) {
       }
     }
   }
+}
+
+// The hook for Steiner points: a vertex no input point became, off every constraint, gets its
+// values from the parents derive() names (NaN without).
+TEST(Values, DerivedVerticesHook) {
+  Delaunay d{Options{}};
+  const double corners[] = {0, 0, 4, 0, 4, 4, 0, 4};
+  std::uint32_t ids[4];
+  ASSERT_TRUE(d.insertBatch(corners, 4, ids).ok());
+  VertexValues values(1);
+  const double f[] = {1, 2, 3, 4};
+  values.record(ids, 4, f, d.vertexCount());
+  const double steiner[] = {1, 1, 3, 2};
+  std::uint32_t added[2];
+  ASSERT_TRUE(d.insertBatch(steiner, 2, added).ok());
+  const std::uint32_t parents[] = {ids[0], ids[1], ids[3]};
+  const double weights[] = {0.5, 0.25, 0.25};
+  values.derive(added[0], parents, weights, 3);
+  Mesh m;
+  const std::vector<double>& all = values.update(d, &m);
+  EXPECT_DOUBLE_EQ(all[added[0]], 0.5 * 1 + 0.25 * 2 + 0.25 * 4);
+  EXPECT_TRUE(std::isnan(all[added[1]]));
+  EXPECT_EQ(m.derivedVertices, std::vector<std::uint32_t>{added[0]});
+  EXPECT_EQ(m.derivedOffsets, (std::vector<std::uint32_t>{0, 3}));
+  EXPECT_EQ(m.derivedParents, (std::vector<std::uint32_t>{ids[0], ids[1], ids[3]}));
+  // A derivation of a vertex an input point became is ignored: the input's values win.
+  values.derive(ids[2], parents, weights, 3);
+  EXPECT_EQ(values.update(d, nullptr)[ids[2]], 3);
 }
 
 }  // namespace

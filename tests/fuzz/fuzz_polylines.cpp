@@ -1,7 +1,7 @@
 // libFuzzer target: arbitrary bytes as free points and polylines (open, closed, crossing,
 // overlapping, with repeated points), inserted through one of several API paths, and the
 // result held to both halves of the invariant checker, the inside flags, the region labels
-// (polylines 2i and 2i + 1 make polygon i) and provenance.
+// (polylines 2i and 2i + 1 make polygon i), provenance, and values (interpolated ones too).
 //
 // Input: byte 0 = options (see decodeOptions), byte 1 = API path (bits 0-1) and fill rule
 // (bit 2), byte 2 = free point count (low 4 bits), then a PointDecoder header, the free
@@ -305,6 +305,63 @@ void checkProvenance(const Input& input, const Mesh& m) {
   }
 }
 
+// Values: input point i carries (i % 17) / 16. Every vertex's values and every interpolated
+// value is a convex combination of those, so lies in [0, 1] up to rounding; NaN only outside
+// the hull, or where some vertex has none (a crossing that snap rounding left off every
+// constraint).
+void checkValues(const Input& input) {
+  Triangulation t(input.options);
+  std::vector<double> values;
+  const auto next = [&values] { values.push_back(static_cast<double>(values.size() % 17) / 16); };
+  for (std::size_t i = 0; i < input.points.size(); i += 2) next();
+  std::vector<PolylineView> views;
+  for (const auto& line : input.lines) {
+    views.push_back({line.data(), line.size() / 2});
+    for (std::size_t i = 0; i < line.size(); i += 2) next();
+  }
+  const std::size_t free = input.points.size() / 2;
+  if (!t.insertPoints(input.points.data(), free, nullptr, values.data()).ok() ||
+      !t.insertPolylines(views.data(), views.size(), nullptr, values.data() + free).ok())
+    return;  // build() judged the statuses
+  const Mesh m = t.mesh();
+  const auto inRange = [](double v) { return v >= -1e-9 && v <= 1 + 1e-9; };
+  bool someNaN = false;
+  for (std::size_t v = 0; v < m.values.size(); ++v) {
+    someNaN |= std::isnan(m.values[v]);
+    if (!std::isnan(m.values[v]) && !inRange(m.values[v]))
+      fail("vertex " + std::to_string(v) + " has value " + std::to_string(m.values[v]));
+  }
+  // Queries: the vertices, then edge midpoints and centroids (about 1000 queries at most).
+  std::vector<double> q(m.points);
+  const double* p = m.points.data();
+  for (std::size_t e = 0; e < m.triangles.size() && q.size() < 2048; ++e) {
+    const std::uint32_t a = m.triangles[e], b = m.triangles[e % 3 == 2 ? e - 2 : e + 1],
+                        c = m.triangles[e % 3 == 0 ? e + 2 : e - 1];
+    q.push_back(p[2 * a] / 2 + p[2 * b] / 2);
+    q.push_back(p[2 * a + 1] / 2 + p[2 * b + 1] / 2);
+    if (e % 3 != 0) continue;
+    q.push_back(p[2 * a] / 3 + p[2 * b] / 3 + p[2 * c] / 3);
+    q.push_back(p[2 * a + 1] / 3 + p[2 * b + 1] / 3 + p[2 * c + 1] / 3);
+  }
+  std::vector<double> out(q.size() / 2);
+  for (const Interpolation method : {Interpolation::Linear, Interpolation::Natural}) {
+    t.interpolate(q.data(), out.size(), method, out.data());
+    const char* name = method == Interpolation::Linear ? "linear" : "natural";
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const std::string at = std::string(name) + " at (" + std::to_string(q[2 * i]) + ", " +
+                             std::to_string(q[2 * i + 1]) + ")";
+      if (!std::isnan(out[i])) {
+        if (!inRange(out[i])) fail(at + " gives " + std::to_string(out[i]));
+        continue;
+      }
+      const Location::Kind kind = t.locate(q[2 * i], q[2 * i + 1]).kind;
+      if (!someNaN && kind != Location::Kind::Outside && kind != Location::Kind::Empty &&
+          kind != Location::Kind::Invalid)
+        fail(at + " gives NaN inside the hull");
+    }
+  }
+}
+
 void run(const Input& input) {
   if (!allValid(input)) {
     std::vector<PolylineView> views;
@@ -327,6 +384,7 @@ void run(const Input& input) {
   if (!broken.empty()) fail("checkConstraints: " + broken);
   checkProvenance(input, b.mesh);
   checkInside(input, b);
+  checkValues(input);
 }
 
 }  // namespace
