@@ -177,13 +177,25 @@ TEST(Constraints, KeepInsideDropsOutsideTriangles) {
     }
 }
 
+void expectNonZeroAndEvenOdd(const Polylines& rings, const Options& options);
+
 TEST(Constraints, NonZeroWindingDiffersFromEvenOdd) {
   // Two overlapping squares wound the same way: the overlap has winding 2.
   const Polylines rings = {{0, 0, 4, 0, 4, 4, 0, 4, 0, 0}, {2, 2, 6, 2, 6, 6, 2, 6, 2, 2}};
+  // With snap rounding too: the chains it rebuilds keep each ring's winding.
+  for (const SnapRounding snap : {SnapRounding::WhenNeeded, SnapRounding::Always}) {
+    SCOPED_TRACE(snap == SnapRounding::Always ? "snap-rounded" : "computed crossings");
+    Options options;
+    options.snapRounding = snap;
+    expectNonZeroAndEvenOdd(rings, options);
+  }
+}
+
+void expectNonZeroAndEvenOdd(const Polylines& rings, const Options& options) {
   MeshOptions eo, nz;
   eo.insideFlags = nz.insideFlags = true;
   nz.fill = FillRule::NonZero;
-  Result a = run({}, rings, eo), b = run({}, rings, nz);
+  Result a = run({}, rings, eo, options), b = run({}, rings, nz, options);
   ASSERT_TRUE(a.status.ok() && b.status.ok());
   ASSERT_EQ(a.mesh.triangles, b.mesh.triangles);
   int differ = 0;
