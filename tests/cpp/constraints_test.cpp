@@ -616,6 +616,29 @@ TEST(Constraints, FuzzCrossingOfBentPiecesCrossesChains) {
   EXPECT_EQ(broken, "");
 }
 
+TEST(Constraints, FuzzNearlyCollinearLongSegmentsOneCallEach) {
+  // Five points of a lattice 1e9 a step, nearly on one line through (1, -12345.678), one
+  // polyline a call: an edge held segment 1 and segment 0, bent onto it through a vertex; a
+  // crossing of segment 1 split it without a check, though segment 0 does not meet the
+  // crossing segment, and the chains of segments 0 and 3 crossed.
+  const double ax = 1, ay = -12345.678;
+  const Polylines lines = {
+      {ax, ay, 4800000001, 1399987654.3220003},
+      {ax, ay, 3840000001, 1119987654.322, -8679999999.0000019, 29759987654.321995},
+      {18240000001, 5319987654.3219995, 960000001, 279987654.32200003, ax, ay, ax, ay, 18240000001,
+       5319987654.3219995}};
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::Grid;
+  o.gridDensity = 8;
+  // In one call or in three, the check finds the crossing chains and snap rounding takes over.
+  for (const bool oneCall : {false, true}) {
+    std::string broken;
+    EXPECT_EQ(snapRoundings(lines, o, oneCall, broken), 1);
+    EXPECT_EQ(broken, "");
+  }
+}
+
 TEST(Constraints, SnapRoundingAcrossBinadeEnds) {
   // Where the spacing of doubles doubles (at 1 and at 2^24), rounding cells are uneven; a
   // vertex left between a segment and its chain joins the chain. Subnormal steps on the
