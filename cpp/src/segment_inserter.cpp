@@ -57,6 +57,11 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     } else if (!flipIn(piece.a, w.reached, piece.src)) {
       return broken("re-triangulating along a segment failed");
     }
+    // Through a vertex exactly on the piece: another chain may pass there and be crossed
+    // (fuzz: a vertex that snap rounding put on an earlier call's chain), so the check looks.
+    if (w.reached != piece.b && crossings_ == Crossings::Computed)
+      d_.constraints.forEachSegment(piece.src,
+                                    [&](std::uint32_t i) { touchedSegments_.push_back(i); });
     pieces_.back().a = w.reached;
     ++d_.stats.segments;
   }

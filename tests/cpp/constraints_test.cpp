@@ -639,6 +639,33 @@ TEST(Constraints, FuzzNearlyCollinearLongSegmentsOneCallEach) {
   }
 }
 
+TEST(Constraints, FuzzRingAndLineNearlyCollinearOneCallEach) {
+  // A self-overlapping ring and a line, all within a few ulps of one line through
+  // (1, -12345.678), one polyline a call: the chains of segments 0 and 16, which do not meet,
+  // crossed.
+  const Polylines lines = {
+      {0.99999999999541611, -12345.677999999984, 1.0000000000017462, -12345.678,
+       0.99999999999592548, -12345.677999999985, 0.99999999999858113, -12345.677999999993,
+       1.0000000000017462,  -12345.678,          0.99999999999592548, -12345.677999999985,
+       1.0000000000001636,  -12345.677999999996, 0.9999999999956708,  -12345.677999999985,
+       0.99999999999541611, -12345.677999999984, 1.0000000000017462,  -12345.678,
+       0.99999999999592548, -12345.677999999985, 0.99999999999858113, -12345.677999999993,
+       1.0000000000017462,  -12345.678,          1.0000000000009548,  -12345.677999999998,
+       0.9999999999956708,  -12345.677999999985, 0.99999999999541611, -12345.677999999984,
+       0.99999999999541611, -12345.677999999984},
+      {1, -12345.678, 0.99999999999796274, -12345.677999999993, 0.99999999999883582,
+       -12345.677999999993}};
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::Grid;
+  o.gridDensity = 8;
+  for (const bool oneCall : {false, true}) {
+    std::string broken;
+    EXPECT_GE(snapRoundings(lines, o, oneCall, broken), 1);
+    EXPECT_EQ(broken, "") << (oneCall ? "one call" : "a call each");
+  }
+}
+
 TEST(Constraints, SnapRoundingAcrossBinadeEnds) {
   // Where the spacing of doubles doubles (at 1 and at 2^24), rounding cells are uneven; a
   // vertex left between a segment and its chain joins the chain. Subnormal steps on the
