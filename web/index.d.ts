@@ -187,7 +187,7 @@ export function init(options?: InitOptions): Promise<void>;
 export type GeocdtErrorCode =
   /** The wasm heap cannot hold the input or the result (4 GB at most). */
   | 'OutOfMemory'
-  /** A constraint segment could not be inserted; index and segment name it. */
+  /** No longer thrown (tangles of crossings are snap-rounded); kept for older code. */
   | 'ConstraintUnresolved'
   /** A broken invariant in the core: a bug, reported rather than hung on. */
   | 'InternalError'
@@ -215,8 +215,8 @@ export class GeocdtError extends Error {
  * Triangulates points and polylines in one call.
  * @throws TypeError on wrong types; RangeError on odd lengths, NaN, ±Infinity,
  *   |coordinate| > 1e150 or a bad flat layout (with `code` 'InvalidCoordinate' when the core
- *   found the value); GeocdtError otherwise (code 'OutOfMemory', 'ConstraintUnresolved',
- *   'InternalError', 'NotLoaded' before init() has resolved, 'Busy').
+ *   found the value); GeocdtError otherwise (code 'OutOfMemory', 'InternalError',
+ *   'NotLoaded' before init() has resolved, 'Busy').
  */
 export function triangulate(input: TriangulateInput, options?: MeshOptions): TriangulateResult;
 
