@@ -35,6 +35,7 @@
 #include <cmath>
 #include <utility>
 
+#include "exact_geometry.h"
 #include "geocdt/predicates.h"
 #include "segment_inserter.h"
 
@@ -132,7 +133,19 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   const std::size_t untouched = touchedSegments_.size();
   const auto touch = [&](std::uint32_t i) { touchedSegments_.push_back(i); };
   store.forEachSegment(piece.src, touch);
+  const std::size_t crossedFrom = touchedSegments_.size();
   if (crossedSource) store.forEachSegment(*crossedSource, touch);
+
+  // Whether every segment of the piece crosses every segment of the crossed edge, exactly.
+  const auto allCross = [&] {
+    const std::size_t mid = crossedFrom, end = touchedSegments_.size();
+    for (std::size_t i = untouched; i < mid; ++i)
+      for (std::size_t j = mid; j < end; ++j)
+        if (!crossProperly(store.segments[touchedSegments_[i]],
+                           store.segments[touchedSegments_[j]]))
+          return false;
+    return mid < end;
+  };
 
   // The crossing point: where the pair met before; else the crossing of the two input
   // segments, unless rounding and earlier bends put it outside the two pieces that cross
@@ -166,10 +179,11 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   };
   if (w == kGhost && !near && strictlyLeft(c.c1, c.r) && strictlyLeft(c.r, c.c2) &&
       strictlyLeft(c.l, c.c1) && strictlyLeft(c.c2, c.l)) {
-    // The crossed constraint bends inside its own two triangles, where no vertex lies, and
-    // (found from them) the two segments cross at x: nothing for chainsKeepTheGuarantee to
-    // check here.
-    if (!ofPieces) touchedSegments_.resize(untouched);
+    // The crossed constraint bends inside its own two triangles, where no vertex lies: when
+    // x was found from the input segments and every segment of one edge crosses every one of
+    // the other (an edge can hold several, one of them bent onto it: fuzz), nothing for
+    // chainsKeepTheGuarantee to check here.
+    if (!ofPieces && allCross()) touchedSegments_.resize(untouched);
     return split(c, x, y);
   }
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "bigint.h"
+#include "geocdt/predicates.h"
 
 namespace geocdt {
 namespace {
@@ -334,6 +335,14 @@ int signAlong(const InputSegment& s, double px, double py, double qx, double qy)
   const Number dot = sum(product(difference(qx, px, base), difference(s.bx, s.ax, base)),
                          product(difference(qy, py, base), difference(s.by, s.ay, base)));
   return detail::sign(dot);
+}
+
+bool crossProperly(const InputSegment& s, const InputSegment& t) {
+  const int o1 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.ax, t.ay));
+  const int o2 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.bx, t.by));
+  const int o3 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.ax, s.ay));
+  const int o4 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.bx, s.by));
+  return o1 * o2 < 0 && o3 * o4 < 0;
 }
 
 }  // namespace geocdt

@@ -41,6 +41,9 @@ bool segmentMeetsCell(const InputSegment& s, double x, double y);
 // Whether (x, y) lies within 2^e of the closed segment s (Euclidean distance).
 bool withinDistance(const InputSegment& s, double x, double y, int e);
 
+// Whether s and t cross in one point inside both (exactly).
+bool crossProperly(const InputSegment& s, const InputSegment& t);
+
 // The sign of (q - p) . (b - a) for s from a to b: whether q lies further along s than p.
 int signAlong(const InputSegment& s, double px, double py, double qx, double qy);
 

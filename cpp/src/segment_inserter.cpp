@@ -57,10 +57,39 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     } else if (!flipIn(piece.a, w.reached, piece.src)) {
       return broken("re-triangulating along a segment failed");
     }
+    // Through a vertex exactly on the piece where another chain bends: that chain may be
+    // crossed there (fuzz: a vertex that snap rounding put on an earlier call's chain), so
+    // the check looks. (T-junctions of real data, where chains end, need no check.)
+    if (w.reached != piece.b && crossings_ == Crossings::Computed && chainBendsAt(w.reached))
+      d_.constraints.forEachSegment(piece.src,
+                                    [&](std::uint32_t i) { touchedSegments_.push_back(i); });
     pieces_.back().a = w.reached;
     ++d_.stats.segments;
   }
   return Outcome::Inserted;
+}
+
+bool SegmentInserter::chainBendsAt(std::uint32_t v) {
+  const std::int32_t start = edgeOutOf(v);
+  if (start < 0) return true;  // (not met: v was just reached) check, to be safe
+  const double x = d_.xy[2 * v], y = d_.xy[2 * v + 1];
+  const ConstraintStore& store = d_.constraints;
+  bool bends = false;
+  const auto passes = [&](std::uint32_t i) {  // exactly through v (ends included), or bent
+    const InputSegment& s = store.segments[i];
+    const bool inBox = std::min(s.ax, s.bx) <= x && x <= std::max(s.ax, s.bx) &&
+                       std::min(s.ay, s.by) <= y && y <= std::max(s.ay, s.by);
+    bends = bends || !inBox || orient2d(s.ax, s.ay, s.bx, s.by, x, y) != Sign::Zero;
+  };
+  std::int32_t e = start;
+  do {
+    if (d_.topo.fixed[e]) {
+      const EdgeSource* src = store.find(v, d_.topo.tri[nextEdge(e)]);
+      if (src) store.forEachSegment(*src, passes);
+    }
+    e = d_.topo.adj[prevEdge(e)];
+  } while (e != start && !bends);
+  return bends;
 }
 
 std::int32_t SegmentInserter::edgeOutOf(std::uint32_t a) {

@@ -59,6 +59,9 @@ class SegmentInserter {
 
   Walk walk(std::uint32_t a, std::uint32_t b);
   std::int32_t edgeOutOf(std::uint32_t a);
+  // Whether a constrained edge at v holds a segment that does not pass through v exactly
+  // (ends included): a chain bent through v.
+  bool chainBendsAt(std::uint32_t v);
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v);  // half-edge u -> v, or -1
   void markConstrained(std::int32_t e, const EdgeSource& src);
   bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);

@@ -79,15 +79,6 @@ void trianglesNear(const Delaunay& d, std::int32_t out, const InputSegment& s, d
     for (int i = 0; i < 3; ++i) consider(topo.adj[3 * found[k] + i] / 3);
 }
 
-// Whether s and t cross in one point inside both.
-bool crossProperly(const InputSegment& s, const InputSegment& t) {
-  const int o1 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.ax, t.ay));
-  const int o2 = int(orient2d(s.ax, s.ay, s.bx, s.by, t.bx, t.by));
-  const int o3 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.ax, s.ay));
-  const int o4 = int(orient2d(t.ax, t.ay, t.bx, t.by, s.bx, s.by));
-  return o1 * o2 < 0 && o3 * o4 < 0;
-}
-
 // The chain of segment s from vertex a to vertex b among the candidate vertices near it:
 // those whose rounding cells s meets, strictly between a and b along s, in order along it.
 // Where the spacing of doubles changes along s (a binade's end), a cell can be smaller than

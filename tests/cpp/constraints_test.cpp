@@ -177,13 +177,25 @@ TEST(Constraints, KeepInsideDropsOutsideTriangles) {
     }
 }
 
+void expectNonZeroAndEvenOdd(const Polylines& rings, const Options& options);
+
 TEST(Constraints, NonZeroWindingDiffersFromEvenOdd) {
   // Two overlapping squares wound the same way: the overlap has winding 2.
   const Polylines rings = {{0, 0, 4, 0, 4, 4, 0, 4, 0, 0}, {2, 2, 6, 2, 6, 6, 2, 6, 2, 2}};
+  // With snap rounding too: the chains it rebuilds keep each ring's winding.
+  for (const SnapRounding snap : {SnapRounding::WhenNeeded, SnapRounding::Always}) {
+    SCOPED_TRACE(snap == SnapRounding::Always ? "snap-rounded" : "computed crossings");
+    Options options;
+    options.snapRounding = snap;
+    expectNonZeroAndEvenOdd(rings, options);
+  }
+}
+
+void expectNonZeroAndEvenOdd(const Polylines& rings, const Options& options) {
   MeshOptions eo, nz;
   eo.insideFlags = nz.insideFlags = true;
   nz.fill = FillRule::NonZero;
-  Result a = run({}, rings, eo), b = run({}, rings, nz);
+  Result a = run({}, rings, eo, options), b = run({}, rings, nz, options);
   ASSERT_TRUE(a.status.ok() && b.status.ok());
   ASSERT_EQ(a.mesh.triangles, b.mesh.triangles);
   int differ = 0;
@@ -602,6 +614,56 @@ TEST(Constraints, FuzzCrossingOfBentPiecesCrossesChains) {
   std::string broken;
   EXPECT_EQ(snapRoundings(lines, o, true, broken), 1);
   EXPECT_EQ(broken, "");
+}
+
+TEST(Constraints, FuzzNearlyCollinearLongSegmentsOneCallEach) {
+  // Five points of a lattice 1e9 a step, nearly on one line through (1, -12345.678), one
+  // polyline a call: an edge held segment 1 and segment 0, bent onto it through a vertex; a
+  // crossing of segment 1 split it without a check, though segment 0 does not meet the
+  // crossing segment, and the chains of segments 0 and 3 crossed.
+  const double ax = 1, ay = -12345.678;
+  const Polylines lines = {
+      {ax, ay, 4800000001, 1399987654.3220003},
+      {ax, ay, 3840000001, 1119987654.322, -8679999999.0000019, 29759987654.321995},
+      {18240000001, 5319987654.3219995, 960000001, 279987654.32200003, ax, ay, ax, ay, 18240000001,
+       5319987654.3219995}};
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::Grid;
+  o.gridDensity = 8;
+  // In one call or in three, the check finds the crossing chains and snap rounding takes over.
+  for (const bool oneCall : {false, true}) {
+    std::string broken;
+    EXPECT_EQ(snapRoundings(lines, o, oneCall, broken), 1);
+    EXPECT_EQ(broken, "");
+  }
+}
+
+TEST(Constraints, FuzzRingAndLineNearlyCollinearOneCallEach) {
+  // A self-overlapping ring and a line, all within a few ulps of one line through
+  // (1, -12345.678), one polyline a call: the chains of segments 0 and 16, which do not meet,
+  // crossed.
+  const Polylines lines = {
+      {0.99999999999541611, -12345.677999999984, 1.0000000000017462,  -12345.678,
+       0.99999999999592548, -12345.677999999985, 0.99999999999858113, -12345.677999999993,
+       1.0000000000017462,  -12345.678,          0.99999999999592548, -12345.677999999985,
+       1.0000000000001636,  -12345.677999999996, 0.9999999999956708,  -12345.677999999985,
+       0.99999999999541611, -12345.677999999984, 1.0000000000017462,  -12345.678,
+       0.99999999999592548, -12345.677999999985, 0.99999999999858113, -12345.677999999993,
+       1.0000000000017462,  -12345.678,          1.0000000000009548,  -12345.677999999998,
+       0.9999999999956708,  -12345.677999999985, 0.99999999999541611, -12345.677999999984,
+       0.99999999999541611, -12345.677999999984},
+      {1, -12345.678, 0.99999999999796274, -12345.677999999993, 0.99999999999883582,
+       -12345.677999999993}};
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::Grid;
+  o.gridDensity = 8;
+  for (const bool oneCall : {false, true}) {
+    std::string broken;
+    EXPECT_GE(snapRoundings(lines, o, oneCall, broken), 1);
+    EXPECT_EQ(broken, "") << (oneCall ? "one call" : "a call each");
+  }
 }
 
 TEST(Constraints, SnapRoundingAcrossBinadeEnds) {

@@ -49,15 +49,15 @@ Ring rectangle(double x0, double y0, double x1, double y1, bool counterClockwise
   return {x0, y0, x0, y1, x1, y1, x1, y0, x0, y0};
 }
 
-Mesh run(const Input& in, MeshOptions mo) {
+Mesh run(const Input& in, MeshOptions mo, const Options& options = {}) {
   const std::vector<Ring> lines = in.polylines();
   std::vector<PolylineView> views;
   for (const Ring& l : lines) views.push_back({l.data(), l.size() / 2});
   mo.regions = true;
   mo.polylinePolygons = in.polylinePolygons();
   Mesh m;
-  const Status s =
-      triangulate(in.points.data(), in.points.size() / 2, views.data(), views.size(), {}, mo, m);
+  const Status s = triangulate(in.points.data(), in.points.size() / 2, views.data(), views.size(),
+                               options, mo, m);
   EXPECT_TRUE(s.ok()) << s.message;
   return m;
 }
@@ -205,15 +205,20 @@ TEST(Regions, SharedBordersAndTouchingCorners) {
     in.polygons.push_back(polygon);
     in.ids.push_back(id);
   }
-  for (const FillRule fill : {FillRule::EvenOdd, FillRule::NonZero}) {
-    MeshOptions mo;
-    mo.fill = fill;
-    const Mesh m = run(in, mo);
-    // Nonzero counts the two parts of country 4 wound opposite ways as they are: still inside.
-    const std::size_t checked = expectLabels(in, fill, m, cellAreas(in, fill, 0, 4));
-    EXPECT_EQ(checked, m.triangles.size() / 3);
-    for (const std::int32_t label : m.regions) EXPECT_GE(label, 0);  // the grid is the hull
-  }
+  // Snap rounding rebuilds every chain from the input segments: each ring's share of a
+  // shared border must come back the same.
+  for (const SnapRounding snap : {SnapRounding::WhenNeeded, SnapRounding::Always})
+    for (const FillRule fill : {FillRule::EvenOdd, FillRule::NonZero}) {
+      MeshOptions mo;
+      mo.fill = fill;
+      Options options;
+      options.snapRounding = snap;
+      const Mesh m = run(in, mo, options);
+      // Nonzero counts the two parts of country 4 wound opposite ways as they are: inside.
+      const std::size_t checked = expectLabels(in, fill, m, cellAreas(in, fill, 0, 4));
+      EXPECT_EQ(checked, m.triangles.size() / 3);
+      for (const std::int32_t label : m.regions) EXPECT_GE(label, 0);  // the grid is the hull
+    }
 }
 
 // Rings that cross: the overlap goes to the smaller polygon, whatever the ids.
@@ -319,11 +324,14 @@ TEST(Regions, RandomRectanglePolygons) {
     for (std::size_t i = in.ids.size() - 1; i > 0; --i)  // shuffled ids
       std::swap(in.ids[i], in.ids[r.next() % (i + 1)]);
     if (seed % 3 == 0) in.extra.push_back(rectangle(2, 3, 20, 21));  // of no polygon
+    // Snap rounding on every third seed: the chains it rebuilds carry each ring's share.
+    Options options;
+    if (seed % 3 == 1) options.snapRounding = SnapRounding::Always;
     for (const FillRule fill : {FillRule::EvenOdd, FillRule::NonZero}) {
       SCOPED_TRACE("seed " + std::to_string(seed));
       MeshOptions mo;
       mo.fill = fill;
-      const Mesh m = run(in, mo);
+      const Mesh m = run(in, mo, options);
       EXPECT_EQ(testing::checkTriangulation(m), "");
       EXPECT_GT(expectLabels(in, fill, m, cellAreas(in, fill, 0, 26)), 10u) << "seed " << seed;
     }
@@ -332,9 +340,11 @@ TEST(Regions, RandomRectanglePolygons) {
 
 // The incremental path: rings inserted one call at a time, then points landing exactly on
 // their edges (which splits constrained edges inside a batch), then a ring overlapping
-// another one's edges and crossing the rest.
-TEST(Regions, IncrementalInsertionsKeepEachRingsShare) {
-  Triangulation t;
+// another one's edges and crossing the rest; with computed crossings or snap rounding.
+void expectIncrementalLabels(SnapRounding snap) {
+  Options options;
+  options.snapRounding = snap;
+  Triangulation t(options);
   Input in;
   in.polygons = {{{rectangle(0, 0, 10, 10)}},
                  {{rectangle(10, 0, 20, 10, false)}},
@@ -355,6 +365,13 @@ TEST(Regions, IncrementalInsertionsKeepEachRingsShare) {
     const Mesh m = t.mesh(mo);
     EXPECT_GT(expectLabels(in, fill, m, cellAreas(in, fill, -5, 25)), 20u);
   }
+  // Snap rounding every call rebuilt all the chains, each time from the input segments.
+  if (snap == SnapRounding::Always) EXPECT_EQ(t.stats().snapRoundings, 3u);
+}
+
+TEST(Regions, IncrementalInsertionsKeepEachRingsShare) {
+  for (const SnapRounding snap : {SnapRounding::WhenNeeded, SnapRounding::Always})
+    expectIncrementalLabels(snap);
 }
 
 TEST(Regions, OnlyWhenAskedFor) {

@@ -67,7 +67,10 @@ class PointDecoder {
   // hold the hard cases: huge offsets with tiny steps, steps that are not binary fractions,
   // and rotations that put lattice lines at irrational-looking slopes.
   explicit PointDecoder(ByteReader& in) {
-    const std::uint8_t b = in.byte();
+    std::uint8_t b = in.byte();
+    // GEOCDT_FUZZ_MODE=tiny: every input in the tiny-grid mode, to spend a run on tangles.
+    static const bool tinyOnly = tinyGridRequested();
+    if (tinyOnly) b = static_cast<std::uint8_t>((b & ~3) | 4 | 2);
     mode_ = static_cast<PointMode>(b & 3);
     if (mode_ == PointMode::SmallGrid && (b & 4)) {
       mode_ = PointMode::TinyGrid;
@@ -110,6 +113,11 @@ class PointDecoder {
   }
 
   PointMode mode() const { return mode_; }
+
+  static bool tinyGridRequested() {
+    const char* v = std::getenv("GEOCDT_FUZZ_MODE");
+    return v != nullptr && std::string(v) == "tiny";
+  }
 
   // The next point; only Raw mode gives invalid coordinates.
   void next(ByteReader& in, double& x, double& y) {
