@@ -141,8 +141,8 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     const std::size_t mid = crossedFrom, end = touchedSegments_.size();
     for (std::size_t i = untouched; i < mid; ++i)
       for (std::size_t j = mid; j < end; ++j)
-        if (!crossProperly(store.segments[touchedSegments_[i]],
-                           store.segments[touchedSegments_[j]]))
+        if (!crossProperly(store.geometry(touchedSegments_[i], d_.xy),
+                           store.geometry(touchedSegments_[j], d_.xy)))
           return false;
     return mid < end;
   };

@@ -76,7 +76,7 @@ bool SegmentInserter::chainBendsAt(std::uint32_t v) {
   const ConstraintStore& store = d_.constraints;
   bool bends = false;
   const auto passes = [&](std::uint32_t i) {  // exactly through v (ends included), or bent
-    const InputSegment& s = store.segments[i];
+    const InputSegment s = store.geometry(i, d_.xy);
     const bool inBox = std::min(s.ax, s.bx) <= x && x <= std::max(s.ax, s.bx) &&
                        std::min(s.ay, s.by) <= y && y <= std::max(s.ay, s.by);
     bends = bends || !inBox || orient2d(s.ax, s.ay, s.bx, s.by, x, y) != Sign::Zero;
