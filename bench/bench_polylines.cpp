@@ -1,6 +1,6 @@
 // One triangulate() call on a .gpl dataset, for profilers and for checking that a change
 // leaves the output as it was: valgrind --tool=callgrind counts its instructions, and the
-// hash covers every array of the mesh with inside flags, regions and vertex segments.
+// hash covers every array of the mesh with inside flags and regions.
 // Usage: bench_polylines FILE.gpl [constrained|points] [hash]
 //   constrained (default): the polylines as constraints, in one call;
 //   points: the same points with no constraints, for the cost of the constraints alone.
@@ -55,7 +55,6 @@ int main(int argc, char** argv) {
   geocdt::MeshOptions meshOptions;
   if (hash) {
     meshOptions.insideFlags = true;
-    meshOptions.vertexSegments = true;
     meshOptions.regions = true;
     for (std::size_t i = 0; i < views.size(); ++i)
       meshOptions.polylinePolygons.push_back(static_cast<std::int32_t>(i));
@@ -96,7 +95,6 @@ int main(int argc, char** argv) {
     h.add(mesh.sources);
     h.add(mesh.inside);
     h.add(mesh.regions);
-    h.add(mesh.vertexSegments);
     h.add(ids);
     std::printf("hash %016llx\n", static_cast<unsigned long long>(h.value()));
   }

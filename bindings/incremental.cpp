@@ -7,10 +7,12 @@
 
 namespace geocdt::wasm {
 
-Incremental::Incremental() : triangulation_(options()) {}
+Incremental::Incremental(std::uint32_t valuesPerPoint)
+    : valuesPerPoint_(valuesPerPoint), triangulation_(options()) {}
 
 Options Incremental::options() {
   Options options;
+  options.valuesPerPoint = valuesPerPoint_;
   options.progress = relay_.hook();
   return options;
 }
@@ -31,9 +33,11 @@ bool Incremental::insert(Output& out, Input& input, bool polyline, emscripten::v
       out,
       [&] {
         out.vertexIds.resize(count);
+        const double* values = input.values.empty() ? nullptr : input.values.data();
         if (polyline)
-          return triangulation_.insertPolyline(input.points.data(), count, out.vertexIds.data());
-        return triangulation_.insertPoints(std::move(input.points), out.vertexIds.data());
+          return triangulation_.insertPolyline(input.points.data(), count, out.vertexIds.data(),
+                                               values);
+        return triangulation_.insertPoints(std::move(input.points), out.vertexIds.data(), values);
       },
       "out of memory: the triangulation needs more than the 4 GB a WebAssembly module can "
       "address; it was cleared");
@@ -63,6 +67,39 @@ bool Incremental::mesh(Output& out, Input& input, Keep keep, FillRule fill, bool
   input.clear();
   relay_.finish();
   return ok;
+}
+
+void Incremental::interpolate(Output& out, Input& input, Interpolation method) {
+  out.clear();
+  guarded(
+      out,
+      [&] {
+        const std::size_t count = input.pointCount();
+        out.mesh.values.resize(count * triangulation_.valuesPerPoint());
+        triangulation_.interpolate(input.points.data(), count, method, out.mesh.values.data());
+        return Status::success();
+      },
+      "out of memory: no room for the interpolated values");
+  input.clear();
+}
+
+bool Incremental::rasterize(Output& out, double minX, double minY, double maxX, double maxY,
+                            double width, double height, Interpolation method) {
+  out.clear();
+  return guarded(
+      out,
+      [&] {
+        RasterGrid grid{minX,
+                        minY,
+                        maxX,
+                        maxY,
+                        static_cast<std::uint32_t>(width),
+                        static_cast<std::uint32_t>(height)};
+        out.raster.resize(static_cast<std::size_t>(grid.width) * grid.height *
+                          triangulation_.valuesPerPoint());
+        return triangulation_.rasterize(grid, method, out.raster.data());
+      },
+      "out of memory: the raster does not fit in the 4 GB a WebAssembly module can address");
 }
 
 void Incremental::locate(double x, double y, std::uintptr_t into) const {

@@ -12,18 +12,26 @@ namespace geocdt::wasm {
 
 class Incremental {
  public:
-  Incremental();
+  explicit Incremental(std::uint32_t valuesPerPoint);
   Incremental(const Incremental&) = delete;  // the triangulation's options point at relay_
   Incremental& operator=(const Incremental&) = delete;
 
-  // Insert the coordinates JS wrote into input.points (freed afterwards); out.vertexIds
-  // receives one vertex id per point. onProgress: a JS function (phase, fraction) or
-  // undefined.
+  // Insert the coordinates JS wrote into input.points, with input.values when not empty
+  // (freed afterwards); out.vertexIds receives one vertex id per point. onProgress: a JS
+  // function (phase, fraction) or undefined.
   bool insertPoints(Output& out, Input& input, emscripten::val onProgress);
   bool insertPolyline(Output& out, Input& input, emscripten::val onProgress);
   // input holds the polygons of region labels, if any (freed afterwards).
   bool mesh(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
             emscripten::val onProgress);
+  // Values at the points of input.points (freed afterwards) into out.mesh.values.
+  void interpolate(Output& out, Input& input, Interpolation method);
+  // The raster into out.raster; false (with the status in out) on bad bounds or no memory.
+  bool rasterize(Output& out, double minX, double minY, double maxX, double maxY, double width,
+                 double height, Interpolation method);
+  double valuesPerPoint() const { return triangulation_.valuesPerPoint(); }
+  bool hasValues() const { return triangulation_.hasValues(); }
+
   emscripten::val stats() const { return statsObject(triangulation_.stats()); }
 
   // Writes kind, triangle, the number of vertices that name the place, and those vertex ids
@@ -38,6 +46,7 @@ class Incremental {
   bool insert(Output& out, Input& input, bool polyline, emscripten::val onProgress);
   Options options();
 
+  std::uint32_t valuesPerPoint_;
   // Declared before the triangulation, whose options point at it.
   ProgressRelay relay_;
   Triangulation triangulation_;

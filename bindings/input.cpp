@@ -6,12 +6,12 @@
 namespace geocdt::wasm {
 
 bool Input::resize(double pointCount, double linePointCount, double lineCount, double polygonCount,
-                   double zCount) {
+                   double valueCount) {
   clear();
   // wasm32's whole address space, in bytes: anything larger cannot be allocated anyway, and
   // the doubles could not be converted to size_t.
   constexpr double kAddressSpace = 4294967296.0;
-  if (16 * (pointCount + linePointCount) + 4 * (lineCount + polygonCount) + 8 * zCount >=
+  if (16 * (pointCount + linePointCount) + 4 * (lineCount + polygonCount) + 8 * valueCount >=
       kAddressSpace)
     return false;
   try {
@@ -19,7 +19,7 @@ bool Input::resize(double pointCount, double linePointCount, double lineCount, d
     lineCoords.resize(2 * static_cast<std::size_t>(linePointCount));
     lineOffsets.resize(static_cast<std::size_t>(lineCount) + 1);
     if (polygonCount >= 0) polygonOffsets.resize(static_cast<std::size_t>(polygonCount) + 1);
-    z.resize(static_cast<std::size_t>(zCount));
+    values.resize(static_cast<std::size_t>(valueCount));
   } catch (const std::bad_alloc&) {
     clear();
     return false;
@@ -67,7 +67,7 @@ std::vector<PolylineView> Input::polylines() const {
 void Input::clear() {
   clearCoordinates();
   std::vector<std::uint32_t>().swap(polygonOffsets);
-  std::vector<double>().swap(z);
+  std::vector<double>().swap(values);
 }
 
 void Input::clearCoordinates() {

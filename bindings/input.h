@@ -22,19 +22,19 @@ class Input {
   // Polygons, for region labels: polygon j has the polylines polygonOffsets[j] ..
   // polygonOffsets[j + 1] - 1. Empty when the call has none (not even an empty list).
   std::vector<std::uint32_t> polygonOffsets;
-  // A height per input point (the points, then the polylines' points), or empty.
-  std::vector<double> z;
+  // Values: valuesPerPoint per input point (the points, then the polylines' points), or empty.
+  std::vector<double> values;
 
   // Sizes the arrays for JS to fill (the numbers arrive as doubles: JS may ask for more than
   // size_t holds); polygonCount -1: no polygons. false when memory runs out; everything is
   // freed then.
   bool resize(double pointCount, double linePointCount, double lineCount, double polygonCount,
-              double zCount);
+              double valueCount);
   std::uintptr_t pointsAddress() const { return address(points); }
   std::uintptr_t lineCoordsAddress() const { return address(lineCoords); }
   std::uintptr_t lineOffsetsAddress() const { return address(lineOffsets); }
   std::uintptr_t polygonOffsetsAddress() const { return address(polygonOffsets); }
-  std::uintptr_t zAddress() const { return address(z); }
+  std::uintptr_t valuesAddress() const { return address(values); }
 
   // The first i where lineOffsets breaks the layout, or -1: lineOffsets[0] is 0, no offset is
   // below the one before it, and the last one is the number of points in lineCoords.
@@ -53,7 +53,7 @@ class Input {
   std::vector<PolylineView> polylines() const;
 
   void clear();             // frees the buffers
-  void clearCoordinates();  // frees the points and polylines, keeps polygons and heights
+  void clearCoordinates();  // frees the points and polylines, keeps polygons and values
 
  private:
   template <typename T>

@@ -4,6 +4,8 @@
 #include <emscripten/bind.h>
 #include <malloc.h>
 
+#include <string>
+
 #include "incremental.h"
 #include "input.h"
 #include "names.h"
@@ -19,6 +21,17 @@ double allocatedBytes() { return static_cast<unsigned>(mallinfo().uordblks); }
 
 // The allocator's high-water mark of memory taken from the system.
 double peakBytes() { return static_cast<unsigned>(mallinfo().usmblks); }
+
+// The names of the Output's arrays, indexed by Field. Not an embind enum: an enum's
+// `values` property would hide the field of that name.
+emscripten::val fieldNames() {
+  emscripten::val names = emscripten::val::array();
+  for (int i = 0; jsName(static_cast<Field>(i)) != nullptr; ++i)
+    names.call<void>("push", std::string(jsName(static_cast<Field>(i))));
+  return names;
+}
+
+ElementType fieldType(int field) { return elementType(static_cast<Field>(field)); }
 
 // Registers every value of an enum numbered 0, 1, 2, ... under its jsName().
 template <typename Enum>
@@ -41,9 +54,10 @@ EMSCRIPTEN_BINDINGS(geocdt) {
   registerEnum<Keep>("Keep");
   registerEnum<FillRule>("FillRule");
   registerEnum<Phase>("Phase");
-  registerEnum<Field>("Field");
+  registerEnum<Interpolation>("Interpolation");
   registerEnum<ElementType>("ElementType");
-  function("elementType", &elementType);
+  function("fieldNames", &fieldNames);
+  function("elementType", &fieldType);
   constant("maxCoordinate", kMaxCoordinate);
 
   class_<Output>("Output")
@@ -64,18 +78,22 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("lineCoordsAddress", &Input::lineCoordsAddress)
       .function("lineOffsetsAddress", &Input::lineOffsetsAddress)
       .function("polygonOffsetsAddress", &Input::polygonOffsetsAddress)
-      .function("zAddress", &Input::zAddress)
+      .function("valuesAddress", &Input::valuesAddress)
       .function("badOffset", &Input::badOffset)
       .function("badPolygonOffset", &Input::badPolygonOffset)
       .function("clear", &Input::clear);
 
   class_<Incremental>("Incremental")
-      .constructor<>()
+      .constructor<std::uint32_t>()
       .function("insertPoints", &Incremental::insertPoints)
       .function("insertPolyline", &Incremental::insertPolyline)
       .function("mesh", &Incremental::mesh)
       .function("stats", &Incremental::stats)
       .function("locate", &Incremental::locate)
+      .function("interpolate", &Incremental::interpolate)
+      .function("rasterize", &Incremental::rasterize)
+      .function("valuesPerPoint", &Incremental::valuesPerPoint)
+      .function("hasValues", &Incremental::hasValues)
       .function("vertexCount", &Incremental::vertexCount)
       .function("triangleCount", &Incremental::triangleCount)
       .function("polylineCount", &Incremental::polylineCount);

@@ -64,6 +64,14 @@ constexpr const char* jsName(Phase phase) {
   return nullptr;
 }
 
+constexpr const char* jsName(Interpolation method) {
+  switch (method) {
+    case Interpolation::Linear: return "linear";
+    case Interpolation::Natural: return "natural";
+  }
+  return nullptr;
+}
+
 }  // namespace geocdt::wasm
 
 #pragma clang diagnostic pop

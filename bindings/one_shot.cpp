@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "guard.h"
-#include "heights.h"
 #include "progress.h"
 
 namespace geocdt::wasm {
@@ -16,23 +15,26 @@ MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, const Input&
   options.insideFlags = insideFlags;
   options.regions = input.hasPolygons();
   options.polylinePolygons = input.polylinePolygons();
-  options.vertexSegments = !input.z.empty();
   return options;
 }
 
 bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-                     emscripten::val onProgress) {
+                     std::uint32_t valuesPerPoint, emscripten::val onProgress) {
   out.clear();
   ProgressRelay relay;
   const std::size_t points = input.pointCount();
   relay.start(std::move(onProgress), points + input.linePointCount());
   Options options;
+  options.valuesPerPoint = valuesPerPoint;
   if (relay.active()) options.progress = relay.hook();  // else the core never calls out
   const bool ok = guarded(
       out,
       [&] {
         const MeshOptions exportOptions = meshOptions(keep, fill, insideFlags, input);
-        const std::vector<double> z = std::move(input.z);
+        const std::vector<double> values = std::move(input.values);
+        const double* pointValues = values.empty() ? nullptr : values.data();
+        const double* lineValues =
+            values.empty() ? nullptr : values.data() + points * std::size_t{valuesPerPoint};
         // Points first, then all polylines at once (one spatially sorted batch of their
         // points, then their segments), as geocdt::triangulate() does; done here through the
         // class so that the statistics can be read before release() clears them.
@@ -40,12 +42,12 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
         out.inputToVertex.resize(points + input.linePointCount());
         Triangulation triangulation(options);
         // The core takes the input buffer over as its coordinate array: no second copy.
-        Status status =
-            triangulation.insertPoints(std::move(input.points), out.inputToVertex.data());
+        Status status = triangulation.insertPoints(std::move(input.points),
+                                                   out.inputToVertex.data(), pointValues);
         relay.batch(points);
         if (status.ok() && !lines.empty())
           status = triangulation.insertPolylines(lines.data(), lines.size(),
-                                                 out.inputToVertex.data() + points);
+                                                 out.inputToVertex.data() + points, lineValues);
         input.clear();  // the core holds its own copy: the export runs without this one
         if (!status.ok()) {
           out.clear();  // a failed call hands back no arrays
@@ -53,10 +55,6 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
         }
         out.stats = triangulation.stats();
         out.mesh = triangulation.release(exportOptions);
-        if (!z.empty()) {
-          out.z = vertexHeights(out.mesh, out.inputToVertex, z, points);
-          std::vector<std::uint32_t>().swap(out.mesh.vertexSegments);
-        }
         return status;
       },
       "out of memory: the triangulation needs more than the 4 GB a WebAssembly module can "

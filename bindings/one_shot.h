@@ -7,15 +7,14 @@
 
 namespace geocdt::wasm {
 
-// The core's options; input gives the polygons (region labels when it has any) and whether
-// heights are carried (vertex segments then).
+// The core's options; input gives the polygons (region labels when it has any).
 MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, const Input& input);
 
 // Triangulates what JS wrote into input (which is freed afterwards). The result, or the
-// failure, lands in out: with region labels when the input has polygons, with a height per
-// vertex when it has heights. onProgress: a JS function (phase, fraction), or undefined.
-// Returns whether it succeeded.
+// failure, lands in out: with region labels when the input has polygons, with
+// valuesPerPoint values per vertex when it has values. onProgress: a JS function (phase,
+// fraction), or undefined. Returns whether it succeeded.
 bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-                     emscripten::val onProgress);
+                     std::uint32_t valuesPerPoint, emscripten::val onProgress);
 
 }  // namespace geocdt::wasm

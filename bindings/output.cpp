@@ -30,10 +30,19 @@ struct StatField {
 #field, [](const Stats& s) { return static_cast<double>(s.field); } \
   }
 constexpr StatField kStatFields[] = {
-    GEOCDT_STAT(inserted), GEOCDT_STAT(duplicates),    GEOCDT_STAT(walkSteps),
-    GEOCDT_STAT(locates),  GEOCDT_STAT(flips),         GEOCDT_STAT(walkFallbacks),
-    GEOCDT_STAT(gridSize), GEOCDT_STAT(crossings),     GEOCDT_STAT(polylines),
-    GEOCDT_STAT(segments), GEOCDT_STAT(snapRoundings),
+    GEOCDT_STAT(inserted),
+    GEOCDT_STAT(duplicates),
+    GEOCDT_STAT(walkSteps),
+    GEOCDT_STAT(locates),
+    GEOCDT_STAT(flips),
+    GEOCDT_STAT(walkFallbacks),
+    GEOCDT_STAT(gridSize),
+    GEOCDT_STAT(crossings),
+    GEOCDT_STAT(polylines),
+    GEOCDT_STAT(segments),
+    GEOCDT_STAT(snapRoundings),
+    GEOCDT_STAT(valueDuplicates),
+    GEOCDT_STAT(valueDisagreements),
 };
 #undef GEOCDT_STAT
 // Every counter takes 8 bytes (gridSize with its padding): a counter added to Stats and not
@@ -54,9 +63,10 @@ const char* jsName(Field field) {
     case Field::Sources: return "sources";
     case Field::Inside: return "inside";
     case Field::Regions: return "regions";
-    case Field::Z: return "z";
+    case Field::Values: return "values";
     case Field::InputToVertex: return "inputToVertex";
     case Field::VertexIds: return "vertexIds";
+    case Field::Raster: return "raster";
   }
   return nullptr;
 }
@@ -64,6 +74,7 @@ const char* jsName(Field field) {
 const char* jsName(ElementType type) {
   switch (type) {
     case ElementType::Float64: return "Float64";
+    case ElementType::Float32: return "Float32";
     case ElementType::Int32: return "Int32";
     case ElementType::Uint32: return "Uint32";
     case ElementType::Uint8: return "Uint8";
@@ -74,7 +85,8 @@ const char* jsName(ElementType type) {
 ElementType elementType(Field field) {
   switch (field) {
     case Field::Points:
-    case Field::Z: return ElementType::Float64;
+    case Field::Values: return ElementType::Float64;
+    case Field::Raster: return ElementType::Float32;
     case Field::Halfedges:
     case Field::Regions: return ElementType::Int32;
     case Field::Constrained:
@@ -89,8 +101,8 @@ ElementType elementType(Field field) {
   return ElementType::Uint32;
 }
 
-std::uintptr_t Output::data(Field field) const {
-  switch (field) {
+std::uintptr_t Output::data(int field) const {
+  switch (static_cast<Field>(field)) {
     case Field::Points: return address(mesh.points);
     case Field::Triangles: return address(mesh.triangles);
     case Field::Halfedges: return address(mesh.halfedges);
@@ -100,15 +112,16 @@ std::uintptr_t Output::data(Field field) const {
     case Field::Sources: return address(mesh.sources);
     case Field::Inside: return address(mesh.inside);
     case Field::Regions: return address(mesh.regions);
-    case Field::Z: return address(z);
+    case Field::Values: return address(mesh.values);
     case Field::InputToVertex: return address(inputToVertex);
     case Field::VertexIds: return address(vertexIds);
+    case Field::Raster: return address(raster);
   }
   return 0;
 }
 
-std::size_t Output::size(Field field) const {
-  switch (field) {
+std::size_t Output::size(int field) const {
+  switch (static_cast<Field>(field)) {
     case Field::Points: return mesh.points.size();
     case Field::Triangles: return mesh.triangles.size();
     case Field::Halfedges: return mesh.halfedges.size();
@@ -118,9 +131,10 @@ std::size_t Output::size(Field field) const {
     case Field::Sources: return mesh.sources.size();
     case Field::Inside: return mesh.inside.size();
     case Field::Regions: return mesh.regions.size();
-    case Field::Z: return z.size();
+    case Field::Values: return mesh.values.size();
     case Field::InputToVertex: return inputToVertex.size();
     case Field::VertexIds: return vertexIds.size();
+    case Field::Raster: return raster.size();
   }
   return 0;
 }
@@ -146,8 +160,12 @@ void Output::clear() {
   release(mesh.sources);
   release(mesh.inside);
   release(mesh.regions);
-  release(mesh.vertexSegments);
-  release(z);
+  release(mesh.values);
+  release(mesh.derivedVertices);
+  release(mesh.derivedOffsets);
+  release(mesh.derivedParents);
+  release(mesh.derivedWeights);
+  release(raster);
   release(inputToVertex);
   release(vertexIds);
   status = Status::success();

@@ -14,8 +14,8 @@
 
 namespace geocdt::wasm {
 
-// The arrays an Output holds. JS finds them by the names and element types below (registered
-// as embind enums by module.cpp), so this is the only list of them.
+// The arrays an Output holds. JS finds them by the names and element types below (passed on
+// by module.cpp), so this is the only list of them.
 enum class Field : int {
   Points,
   Triangles,
@@ -26,13 +26,14 @@ enum class Field : int {
   Sources,
   Inside,
   Regions,
-  Z,
+  Values,
   InputToVertex,
   VertexIds,
+  Raster,
 };
 
 // Named after the JS typed array that holds such elements (Float64Array, ...).
-enum class ElementType : int { Float64, Int32, Uint32, Uint8 };
+enum class ElementType : int { Float64, Float32, Int32, Uint32, Uint8 };
 
 const char* jsName(Field field);  // nullptr past the last field
 const char* jsName(ElementType type);
@@ -40,16 +41,17 @@ ElementType elementType(Field field);
 
 class Output {
  public:
+  // With values: mesh.values, the values of each vertex (of interpolate(): of each query).
   Mesh mesh;
-  std::vector<double> z;  // a height per vertex, when the input had heights
+  std::vector<float> raster;  // of rasterize()
   std::vector<std::uint32_t> inputToVertex;
   std::vector<std::uint32_t> vertexIds;  // of the last incremental insertion
   Status status;
   Stats stats;
 
-  // Byte address and element count of one array in the wasm heap.
-  std::uintptr_t data(Field field) const;
-  std::size_t size(Field field) const;
+  // Byte address and element count of one array in the wasm heap (field: a Field's number).
+  std::uintptr_t data(int field) const;
+  std::size_t size(int field) const;
 
   StatusCode code() const { return status.code; }
   std::string message() const { return status.message; }

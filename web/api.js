@@ -2,7 +2,10 @@
 // instantiates the wasm module in its environment.
 import { Kernel } from './kernel.js';
 import { GeocdtError } from './errors.js';
-import { checkCoordinates, checkInput, checkOffsets, describe } from './input.js';
+import {
+  checkCoordinates, checkInput, checkOffsets, checkRaster, checkValues, checkValuesPerPoint,
+  describe,
+} from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
@@ -48,9 +51,10 @@ export function createApi(instantiate) {
   function triangulate(input, options) {
     const started = now();
     const k = ready();
-    const checked = checkInput(input);
     const o = k.meshOptions(options);
-    return finish(k.triangulate(checked, o, options?.onProgress), started);
+    const valuesPerPoint = checkValuesPerPoint(options);
+    const checked = checkInput(input, valuesPerPoint);
+    return finish(k.triangulate(checked, o, valuesPerPoint, options?.onProgress), started);
   }
 
   function triangulateGeoJSON(geojson, options) {
@@ -69,14 +73,34 @@ export function createApi(instantiate) {
     ? new FinalizationRegistry((incremental) => incremental.delete())
     : null;
 
+  // insertPoints(xy, values?, options?): values is an array or typed array, options an object.
+  const splitValues = (values, options) => (values != null && typeof values === 'object'
+    && !Array.isArray(values) && !ArrayBuffer.isView(values)
+    ? { values: undefined, options: values } : { values, options });
+
   class Triangulation {
     #kernel;
     #incremental;
+    #valuesPerPoint;
 
-    constructor() {
+    // options.valuesPerPoint: how many values each point carries (default 1).
+    constructor(options) {
+      if (options != null && typeof options !== 'object') {
+        throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
+      }
       this.#kernel = ready();
-      this.#incremental = this.#kernel.createIncremental();
+      this.#valuesPerPoint = checkValuesPerPoint(options);
+      this.#incremental = this.#kernel.createIncremental(this.#valuesPerPoint);
       finalizer?.register(this, this.#incremental, this);
+    }
+
+    #insert(given, name, polyline, maybeValues, maybeOptions) {
+      const live = this.#live();
+      const xy = checkCoordinates(given, name);
+      const { values, options } = splitValues(maybeValues, maybeOptions);
+      const checked = values == null ? undefined
+        : checkValues(values, xy.length / 2, this.#valuesPerPoint, `${name} values`);
+      return this.#kernel.insert(live, xy, polyline, insertOptions(options), checked);
     }
 
     #live() {
@@ -87,19 +111,31 @@ export function createApi(instantiate) {
       return this.#incremental;
     }
 
-    // Returns the vertex id of each point.
-    insertPoints(points, options) {
-      const live = this.#live();
-      const xy = checkCoordinates(points, 'points');
-      return this.#kernel.insert(live, xy, false, insertOptions(options));
+    // Returns the vertex id of each point. values: valuesPerPoint numbers per point.
+    insertPoints(points, values, options) {
+      return this.#insert(points, 'points', false, values, options);
     }
 
     // Inserts one polyline as constraints; returns the vertex id of each of its points.
-    insertPolyline(polyline, options) {
-      const live = this.#live();
-      const xy = checkCoordinates(polyline, 'polyline');
-      return this.#kernel.insert(live, xy, true, insertOptions(options));
+    insertPolyline(polyline, values, options) {
+      return this.#insert(polyline, 'polyline', true, values, options);
     }
+
+    // Values at each query point (valuesPerPoint numbers per query; NaN outside the hull).
+    interpolate(points, options) {
+      const live = this.#live();
+      const method = this.#kernel.method(options);
+      return this.#kernel.interpolate(live, checkCoordinates(points, 'points'), method);
+    }
+
+    // The surface sampled on width x height pixels over bbox [minX, minY, maxX, maxY].
+    rasterize(options) {
+      const live = this.#live();
+      const raster = checkRaster(options, this.#valuesPerPoint);
+      return this.#kernel.rasterize(live, raster, this.#kernel.method(options));
+    }
+
+    get valuesPerPoint() { return this.#valuesPerPoint; }
 
     locate(x, y) {
       if (typeof x !== 'number' || typeof y !== 'number') {

@@ -4,7 +4,7 @@ import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
 import { geoJSONToInput, init, triangulate } from './index.node.js';
-import { geoJSONResult, triangleFields } from './geojson.js';
+import { geoJSONResult, triangleFields, vertexHeights } from './geojson.js';
 import { ProgressDisplay } from './progress-display.js';
 
 const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
@@ -76,13 +76,14 @@ const n = (x) => x.toLocaleString('en-US');
 // Writes the FeatureCollection feature by feature, as meshToGeoJSON() builds it: a big mesh
 // never becomes one string, and each region's properties are written to text once.
 async function writeGeoJSON(mesh, stream, progress) {
-  const { points, triangles, z } = mesh;
+  const { points, triangles } = mesh;
   const count = triangles.length / 3;
   const fields = triangleFields(mesh);
+  const z = vertexHeights(mesh);
   // fields.position(v) as text, without an array per vertex.
   const at = z === undefined ? (v) => `[${points[2 * v]},${points[2 * v + 1]}]`
-    : (v) => (Number.isNaN(z[v]) ? `[${points[2 * v]},${points[2 * v + 1]}]`
-      : `[${points[2 * v]},${points[2 * v + 1]},${z[v]}]`);
+    : (v) => (Number.isNaN(z(v)) ? `[${points[2 * v]},${points[2 * v + 1]}]`
+      : `[${points[2 * v]},${points[2 * v + 1]},${z(v)}]`);
   const texts = new Map();  // key -> the properties as text
   const properties = (t) => {
     const key = fields.key(t);

@@ -1,8 +1,8 @@
 // The package's own error class, and the core's status values turned into exceptions: bad
 // input is a TypeError or RangeError, anything else a GeocdtError with a code.
 
-// Thrown for everything that is not a mistake in the input: code is 'OutOfMemory',
-// 'ConstraintUnresolved' or 'InternalError' (from the core), 'NotLoaded', 'Disposed', 'Busy',
+// Thrown for everything that is not a mistake in the input: code is 'OutOfMemory' or
+// 'InternalError' (from the core), 'NotLoaded', 'Disposed', 'Busy',
 // 'WorkerFailed' or 'WorkerTerminated' (from the JS layer). index and segment name the input
 // point or polyline and its segment where the core knows them.
 export class GeocdtError extends Error {

@@ -174,8 +174,8 @@ function feature(g, path, f, reader) {
 // - polygons: one per feature with rings (all of its Polygons and MultiPolygons, in
 //   GeometryCollections too), given as offsets into the polylines; regionFeatures[j] is the
 //   feature of polygon j (null for a bare geometry); both are there when polygons are.
-// - z: a height per input point when some position has a third coordinate (NaN where one
-//   has none).
+// - values: one per input point (its height) when some position has a third coordinate (NaN
+//   where one has none).
 export function readGeoJSON(geojson) {
   if (geojson === null || typeof geojson !== 'object') {
     const got = geojson === null ? 'null' : typeof geojson;
@@ -219,10 +219,10 @@ export function readGeoJSON(geojson) {
   }
   const all = [points, rings.positions, lines.positions];
   if (all.some((p) => p.z !== null)) {
-    input.z = new Float64Array(all.reduce((n, p) => n + p.count, 0));
+    input.values = new Float64Array(all.reduce((n, p) => n + p.count, 0));
     let at = 0;
     for (const p of all) {
-      input.z.set(p.heights(), at);
+      input.values.set(p.heights(), at);
       at += p.count;
     }
   }
@@ -251,22 +251,31 @@ export function geoJSONOutput(options) {
   return { output, rest };
 }
 
+// The height GeoJSON positions take from a mesh with values: z(v), the first value of vertex
+// v; undefined when the mesh has none.
+export function vertexHeights({ points, values }) {
+  if (values === undefined || points.length === 0) return undefined;
+  const perPoint = values.length / (points.length / 2);
+  return (v) => values[perPoint * v];
+}
+
 // What the GeoJSON output says of each triangle, shared by meshToGeoJSON() and the CLI:
 // id(t) (undefined: none), properties(t), key(t) (equal keys, equal properties) and
-// position(v), [x, y] or [x, y, z].
+// position(v), [x, y] or [x, y, z] (z: the vertex's first value, when it is not NaN).
 // - With mesh.regionFeatures (triangulateGeoJSON()): the id and properties of the feature of
 //   the triangle's region (the same properties object for all its triangles), none and null
 //   outside every polygon; with inside flags, a copy of the properties with `inside` added.
 // - Without: id is the triangle index; properties hold `inside` and `region` when the mesh
 //   has them.
 export function triangleFields(mesh) {
-  const { points, inside, regions, regionFeatures, z } = mesh;
+  const { points, inside, regions, regionFeatures } = mesh;
   const regionOf = (t) => (regions === undefined ? -1 : regions[t]);
   const key = (t) => 2 * (regionOf(t) + 1) + (inside?.[t] ?? 0);
+  const z = vertexHeights(mesh);
   const position = z === undefined
     ? (v) => [points[2 * v], points[2 * v + 1]]
-    : (v) => (Number.isNaN(z[v]) ? [points[2 * v], points[2 * v + 1]]
-      : [points[2 * v], points[2 * v + 1], z[v]]);
+    : (v) => (Number.isNaN(z(v)) ? [points[2 * v], points[2 * v + 1]]
+      : [points[2 * v], points[2 * v + 1], z(v)]);
   if (regionFeatures === undefined) {
     return {
       id: (t) => t,

@@ -41,10 +41,11 @@ export interface TriangulateInput {
    */
   polygons?: Offsets;
   /**
-   * A height per input point (the points, then the polylines' points; NaN: none), carried to
-   * the result's `z`.
+   * Values carried by the points (elevation, depth, any attribute): valuesPerPoint numbers per
+   * input point (the points, then the polylines' points; NaN: none), carried to the result's
+   * `values`. (Earlier versions called one value per point `z`.)
    */
-  z?: Coordinates;
+  values?: Coordinates;
 }
 
 /** What a long call is doing: sorting points, inserting them, constraints, the arrays out. */
@@ -66,6 +67,8 @@ export interface ProgressOptions {
 }
 
 export type Keep = 'all' | 'inside';
+/** 'linear': barycentric in a triangle; 'natural': Sibson's natural neighbours. */
+export type Interpolation = 'linear' | 'natural';
 export type FillRule = 'evenodd' | 'nonzero';
 
 export interface MeshOptions extends ProgressOptions {
@@ -104,6 +107,16 @@ export interface CoreStats {
    * constraint beyond the guarantee (tangles of vertices a few ulps apart).
    */
   snapRoundings: number;
+  /** Duplicate points whose values differ from those their vertex kept (dropped). */
+  valueDuplicates: number;
+  /** Crossings whose input segments give different values (they get the mean). */
+  valueDisagreements: number;
+}
+
+/** triangulate()'s options. */
+export interface TriangulateOptions extends MeshOptions {
+  /** How many numbers of input.values each point has (default 1). */
+  valuesPerPoint?: number;
 }
 
 /** The counters of a call: the core's, and what the call returned and took. */
@@ -151,18 +164,19 @@ export interface Mesh {
    * triangle count, then the lower index): where polygons nest, the innermost.
    */
   regions?: Int32Array;
+  /**
+   * valuesPerPoint values per vertex, when values were given: those of the first input point
+   * it came from whose values are not all NaN; where constraints cross, interpolated along
+   * each input segment through the vertex (their mean where they differ); NaN for points
+   * given without values.
+   */
+  values?: Float64Array;
   stats: Stats;
 }
 
 export interface TriangulateResult extends Mesh {
   /** For each input point (points first, then each polyline's points in order), its vertex id. */
   inputToVertex: Uint32Array;
-  /**
-   * The height of each vertex, when the input has z: the first height (not NaN) of the input
-   * points it came from, or, where constraints cross, interpolated along one of them; NaN
-   * where there is none.
-   */
-  z?: Float64Array;
 }
 
 export interface ResultsOptions extends MeshOptions {
@@ -187,8 +201,6 @@ export function init(options?: InitOptions): Promise<void>;
 export type GeocdtErrorCode =
   /** The wasm heap cannot hold the input or the result (4 GB at most). */
   | 'OutOfMemory'
-  /** A constraint segment could not be inserted; index and segment name it. */
-  | 'ConstraintUnresolved'
   /** A broken invariant in the core: a bug, reported rather than hung on. */
   | 'InternalError'
   /** A call before `await init()`, or a worker that could not load the module. */
@@ -215,10 +227,11 @@ export class GeocdtError extends Error {
  * Triangulates points and polylines in one call.
  * @throws TypeError on wrong types; RangeError on odd lengths, NaN, ±Infinity,
  *   |coordinate| > 1e150 or a bad flat layout (with `code` 'InvalidCoordinate' when the core
- *   found the value); GeocdtError otherwise (code 'OutOfMemory', 'ConstraintUnresolved',
- *   'InternalError', 'NotLoaded' before init() has resolved, 'Busy').
+ *   found the value); GeocdtError otherwise (code 'OutOfMemory', 'InternalError',
+ *   'NotLoaded' before init() has resolved, 'Busy').
  */
-export function triangulate(input: TriangulateInput, options?: MeshOptions): TriangulateResult;
+export function triangulate(
+  input: TriangulateInput, options?: TriangulateOptions): TriangulateResult;
 
 export type GeoJSONOutput = 'geojson' | 'arrays';
 
@@ -295,7 +308,7 @@ export interface GeoJSONInputParts {
   /** The feature of each polygon (null for a bare geometry). */
   regionFeatures?: (GeoJSONFeature | null)[];
   /** A height per input point, when some position has a third coordinate (NaN: none). */
-  z?: Float64Array;
+  values?: Float64Array;
 }
 
 /**
@@ -313,10 +326,11 @@ export function geoJSONToInput(
 
 /**
  * A mesh -> a FeatureCollection with one counter-clockwise Polygon per triangle (its id and
- * properties: see TriangleFeature); positions get the mesh's z where it is not NaN.
+ * properties: see TriangleFeature); positions get the mesh's first value per vertex as z,
+ * where it is not NaN.
  */
 export function meshToGeoJSON(
-  mesh: Mesh & { regionFeatures?: (GeoJSONFeature | null)[]; z?: Float64Array },
+  mesh: Mesh & { regionFeatures?: (GeoJSONFeature | null)[] },
 ): TriangleFeatureCollection;
 
 export interface MemoryUsage {
@@ -344,13 +358,49 @@ export interface Location {
   vertices: number[];
 }
 
+export interface TriangulationOptions {
+  /** How many values each point carries (default 1). */
+  valuesPerPoint?: number;
+}
+
+export interface InterpolateOptions {
+  /** 'linear' (default) or 'natural'. */
+  method?: Interpolation;
+}
+
+export interface RasterOptions extends InterpolateOptions {
+  /** [minX, minY, maxX, maxY]: the area the raster covers. */
+  bbox: readonly [number, number, number, number] | Float64Array;
+  /** Pixels per row and rows: whole numbers from 1 up. */
+  width: number;
+  height: number;
+}
+
 /** A triangulation that grows by insertions. Free it with dispose(). */
 export class Triangulation {
-  constructor();
-  /** Inserts points; returns the vertex id of each (an existing one for a duplicate). */
+  constructor(options?: TriangulationOptions);
+  /**
+   * Inserts points, with valuesPerPoint values each (NaN without); returns the vertex id of
+   * each (an existing one for a duplicate).
+   */
+  insertPoints(points: Coordinates, values?: Coordinates, options?: ProgressOptions): Uint32Array;
   insertPoints(points: Coordinates, options?: ProgressOptions): Uint32Array;
   /** Inserts one polyline as constraints; returns the vertex id of each of its points. */
+  insertPolyline(
+    polyline: Coordinates, values?: Coordinates, options?: ProgressOptions): Uint32Array;
   insertPolyline(polyline: Coordinates, options?: ProgressOptions): Uint32Array;
+  /**
+   * The values at each query point (x, y pairs): valuesPerPoint numbers per query, NaN outside
+   * the convex hull.
+   */
+  interpolate(points: Coordinates, options?: InterpolateOptions): Float64Array;
+  /**
+   * The values sampled at pixel centres, width * height * valuesPerPoint numbers, row by row
+   * from the top (maxY); NaN outside the convex hull. 'linear' scan-converts triangle by
+   * triangle; 'natural' interpolates each pixel.
+   */
+  rasterize(options: RasterOptions): Float32Array;
+  readonly valuesPerPoint: number;
   /** @throws RangeError when x or y is NaN or infinite. */
   locate(x: number, y: number): Location;
   /** A copy of the current mesh; insertions can go on. */

@@ -55,23 +55,68 @@ function checkFlatPolylines({ coords, offsets }) {
   return { coords, offsets, count: offsets.length - 1, points: coords.length / 2 };
 }
 
-// A height per input point, in any numeric array (NaN: none).
-function checkHeights(z, points) {
-  if (!Array.isArray(z) && !isNumericTypedArray(z)) {
-    throw new TypeError('geocdt: z must be a Float64Array or an array of numbers (one height per '
-      + `input point), or another numeric typed array; got ${describe(z)}`);
+// options.valuesPerPoint: a whole number from 1 (the default) up.
+export function checkValuesPerPoint(options) {
+  const k = options?.valuesPerPoint ?? 1;
+  if (!Number.isInteger(k) || k < 1 || k > 65536) {
+    throw new RangeError('geocdt: options.valuesPerPoint must be a whole number from 1 to 65536, '
+      + `got ${typeof k === 'number' ? k : describe(k)}`);
   }
-  if (z.length !== points) {
-    throw new RangeError(`geocdt: z has ${z.length} heights for ${points} input points (the `
-      + 'points, then the polylines\' points)');
-  }
-  return z;
+  return k;
 }
 
-// { points, polylines, polygons, z } -> { points, lines, polygons, z } with lines either
-// { arrays, count, points } (an array per polyline) or { coords, offsets, count, points }.
-// All are optional; polygons and z stay undefined when not given.
-export function checkInput(input) {
+// valuesPerPoint numbers per point, in any numeric array (NaN: none).
+export function checkValues(values, points, valuesPerPoint, name = 'values') {
+  if (!Array.isArray(values) && !isNumericTypedArray(values)) {
+    throw new TypeError(`geocdt: ${name} must be a Float64Array or an array of numbers `
+      + `(valuesPerPoint per point), or another numeric typed array; got ${describe(values)}`);
+  }
+  if (values.length !== points * valuesPerPoint) {
+    const per = valuesPerPoint === 1 ? '' : ` (${valuesPerPoint} per point)`;
+    throw new RangeError(`geocdt: ${name} has ${values.length} numbers for ${points} points`
+      + `${per}${name === 'values' ? ': the points, then the polylines\' points' : ''}`);
+  }
+  return values;
+}
+
+// rasterize()'s options: { bbox: [minX, minY, maxX, maxY], width, height }, within what a
+// Float32Array in the wasm heap can hold.
+export function checkRaster(options, valuesPerPoint) {
+  if (options === null || typeof options !== 'object') {
+    throw new TypeError('geocdt: rasterize() takes { bbox: [minX, minY, maxX, maxY], width, '
+      + `height, method }, got ${describe(options)}`);
+  }
+  const { bbox, width, height } = options;
+  if ((!Array.isArray(bbox) && !isNumericTypedArray(bbox)) || bbox.length !== 4) {
+    throw new TypeError(
+      `geocdt: options.bbox must be [minX, minY, maxX, maxY], got ${describe(bbox)}`);
+  }
+  for (let i = 0; i < 4; i++) {
+    if (typeof bbox[i] !== 'number' || !Number.isFinite(bbox[i])) {
+      throw new RangeError(`geocdt: options.bbox[${i}] must be a finite number, got ${bbox[i]}`);
+    }
+  }
+  if (!(bbox[0] < bbox[2]) || !(bbox[1] < bbox[3])) {
+    throw new RangeError(`geocdt: options.bbox [${bbox.join(', ')}] must have minX < maxX and `
+      + 'minY < maxY');
+  }
+  for (const [name, v] of [['width', width], ['height', height]]) {
+    if (!Number.isInteger(v) || v < 1) {
+      throw new RangeError(`geocdt: options.${name} must be a whole number from 1 up, got ${v}`);
+    }
+  }
+  if (4 * width * height * valuesPerPoint >= 2 ** 31) {
+    throw new RangeError(`geocdt: a ${width} x ${height} raster of ${valuesPerPoint} value(s) `
+      + 'per pixel needs 2 GB or more: make it smaller');
+  }
+  return { bbox, width, height };
+}
+
+// { points, polylines, polygons, values } -> { points, lines, polygons, values } with lines
+// either { arrays, count, points } (an array per polyline) or { coords, offsets, count,
+// points }. All are optional; polygons and values stay undefined when not given.
+// valuesPerPoint: checkValuesPerPoint()'s.
+export function checkInput(input, valuesPerPoint = 1) {
   if (input === null || typeof input !== 'object' || Array.isArray(input)
     || ArrayBuffer.isView(input)) {
     throw new TypeError(
@@ -97,8 +142,13 @@ export function checkInput(input) {
   }
   const polygons = input.polygons == null ? undefined
     : checkOffsets(input.polygons, 'polygons', 'polygons', 'polyline');
-  const z = input.z == null ? undefined : checkHeights(input.z, points.length / 2 + lines.points);
-  return { points, lines, polygons, z };
+  if (input.z != null) {
+    throw new TypeError('geocdt: input.z is now input.values (valuesPerPoint numbers per point, '
+      + '1 by default), and the result\'s z is its values');
+  }
+  const values = input.values == null ? undefined
+    : checkValues(input.values, points.length / 2 + lines.points, valuesPerPoint);
+  return { points, lines, polygons, values };
 }
 
 const badCoordinate = (v) => !(v >= -MAX_COORDINATE && v <= MAX_COORDINATE);

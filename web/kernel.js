@@ -53,17 +53,17 @@ function copyOffsets(heap, at, offsets, name) {
   }
 }
 
-// Heights: any number, NaN included (no height).
-function copyHeights(heap, at, z) {
-  if (isNumericTypedArray(z)) {
-    heap.set(z, at);
+// Values: any number, NaN included (none).
+function copyValues(heap, at, values, name) {
+  if (isNumericTypedArray(values)) {
+    heap.set(values, at);
     return;
   }
-  for (let i = 0; i < z.length; i++) {
-    if (typeof z[i] !== 'number') {
-      throw new TypeError(`geocdt: z[${i}] must be a number, got ${describe(z[i])}`);
+  for (let i = 0; i < values.length; i++) {
+    if (typeof values[i] !== 'number') {
+      throw new TypeError(`geocdt: ${name}[${i}] must be a number, got ${describe(values[i])}`);
     }
-    heap[at + i] = z[i];
+    heap[at + i] = values[i];
   }
 }
 
@@ -77,14 +77,14 @@ export class Kernel {
     this.statusCodes = enumNames(wasm.StatusCode);
     this.locationKinds = enumNames(wasm.LocationKind);
     this.phases = enumNames(wasm.Phase);
+    this.interpolation = wasm.Interpolation;
     this.keep = wasm.Keep;
     this.fillRule = wasm.FillRule;
     const types = enumNames(wasm.ElementType);
     this.fields = {};
-    for (const name of enumNames(wasm.Field)) {
-      const id = wasm.Field[name];
+    wasm.fieldNames().forEach((name, id) => {
       this.fields[name] = { id, Type: globalThis[`${types[wasm.elementType(id).value]}Array`] };
-    }
+    });
   }
 
   // A byte address in the heap; pointers past 2 GB come back negative from the export.
@@ -120,16 +120,16 @@ export class Kernel {
     this.busy = false;
   }
 
-  // Writes { points, lines, polygons, z } (from checkInput) into the binding's Input.
+  // Writes { points, lines, polygons, values } (from checkInput) into the binding's Input.
   // polylineCount: what the polygons may index (this call's polylines, or a Triangulation's);
-  // polygonsName: where the polygons were given, for errors.
-  writeInput({ points, lines, polygons, z }, polylineCount = lines.count,
-    polygonsName = 'polygons') {
+  // polygonsName: where the polygons were given, for errors; valuesName: the values'.
+  writeInput({ points, lines, polygons, values }, polylineCount = lines.count,
+    polygonsName = 'polygons', valuesName = 'values') {
     const input = this.input;
     const polygonCount = polygons === undefined ? -1 : polygons.length - 1;
-    const zCount = z === undefined ? 0 : z.length;
-    if (!input.resize(points.length / 2, lines.points, lines.count, polygonCount, zCount)) {
-      const bytes = 8 * (points.length + 2 * lines.points + zCount)
+    const valueCount = values === undefined ? 0 : values.length;
+    if (!input.resize(points.length / 2, lines.points, lines.count, polygonCount, valueCount)) {
+      const bytes = 8 * (points.length + 2 * lines.points + valueCount)
         + 4 * (lines.count + 1 + polygonCount + 1);
       throw outOfMemoryError(`the input alone needs ${bytes} bytes`);
     }
@@ -141,7 +141,7 @@ export class Kernel {
       const bad = input.badPolygonOffset(polylineCount);
       if (bad >= 0) throw polygonOffsetError(polygons, bad, polylineCount, polygonsName);
     }
-    if (z !== undefined) copyHeights(f64, input.zAddress() / 8, z);
+    if (values !== undefined) copyValues(f64, input.valuesAddress() / 8, values, valuesName);
     if (lines.count === 0 && lines.points === 0) return;
     let at = input.lineCoordsAddress() / 8;
     const offsets = input.lineOffsetsAddress() / 4;
@@ -199,7 +199,7 @@ export class Kernel {
   }
 
   // Copies the output's mesh out, then frees it; the flags say which optional arrays to take.
-  takeMesh({ inputToVertex, inside, regions, z }) {
+  takeMesh({ inputToVertex, inside, regions, values }) {
     try {
       const mesh = {
         points: this.read('points'),
@@ -213,7 +213,7 @@ export class Kernel {
       mesh.sources = this.read('sources');
       if (inside) mesh.inside = this.read('inside');
       if (regions) mesh.regions = this.read('regions');
-      if (z) mesh.z = this.read('z');
+      if (values) mesh.values = this.read('values');
       mesh.stats = this.output.stats();
       return mesh;
     } finally {
@@ -272,10 +272,10 @@ export class Kernel {
     };
   }
 
-  // checked: checkInput()'s { points, lines, polygons, z }; o: meshOptions(); onProgress: a
-  // function or undefined.
-  triangulate(checked, o, onProgress) {
-    const { points, lines, polygons, z } = checked;
+  // checked: checkInput()'s { points, lines, polygons, values }; o: meshOptions();
+  // valuesPerPoint: checkValuesPerPoint()'s; onProgress: a function or undefined.
+  triangulate(checked, o, valuesPerPoint, onProgress) {
+    const { points, lines, polygons, values } = checked;
     const progress = this.progress(onProgress);
     this.enter();
     let ok;
@@ -284,7 +284,7 @@ export class Kernel {
       this.writeInput(checked);
       const started = now();
       ok = this.wasm.triangulateInto(this.output, this.input, o.keep, o.fill, o.insideFlags,
-        progress.callback);
+        valuesPerPoint, progress.callback);
       coreMilliseconds = now() - started;
     } finally {
       this.input.clear();
@@ -300,24 +300,26 @@ export class Kernel {
     progress.rethrow();
     const mesh = this.takeMesh({
       inputToVertex: true, inside: o.insideFlags, regions: polygons !== undefined,
-      z: z !== undefined,
+      values: values !== undefined,
     });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
   }
 
-  createIncremental() {
-    return new this.wasm.Incremental();
+  createIncremental(valuesPerPoint) {
+    return new this.wasm.Incremental(valuesPerPoint);
   }
 
-  // Inserts checked coordinates into an Incremental; returns their vertex ids.
-  insert(incremental, coordinates, polyline, onProgress) {
+  // Inserts checked coordinates, with checked values or undefined, into an Incremental;
+  // returns their vertex ids.
+  insert(incremental, coordinates, polyline, onProgress, values) {
     const name = polyline ? 'polyline' : 'points';
     const progress = this.progress(onProgress);
     this.enter();
     let ok;
     try {
-      this.writeInput({ points: coordinates, lines: { count: 0, points: 0 } });
+      this.writeInput({ points: coordinates, lines: { count: 0, points: 0 }, values },
+        0, 'polygons', 'values');
       ok = polyline ? incremental.insertPolyline(this.output, this.input, progress.callback)
         : incremental.insertPoints(this.output, this.input, progress.callback);
     } finally {
@@ -352,9 +354,56 @@ export class Kernel {
     const coreMilliseconds = now() - started;
     this.check(ok, () => null);
     progress.rethrow();
-    const mesh = this.takeMesh({ inside: o.insideFlags, regions: polygons !== undefined });
+    const mesh = this.takeMesh({
+      inside: o.insideFlags, regions: polygons !== undefined, values: incremental.hasValues(),
+    });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
+  }
+
+  // 'linear' or 'natural' -> the module's enum value.
+  method(options) {
+    if (options != null && typeof options !== 'object') {
+      throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
+    }
+    const method = options?.method ?? 'linear';
+    if (typeof method === 'string' && method !== 'values'
+      && Object.hasOwn(this.interpolation, method)) {
+      return this.interpolation[method];
+    }
+    throw new TypeError(
+      `geocdt: options.method must be 'linear' or 'natural', got ${JSON.stringify(method)}`);
+  }
+
+  // Values at checked query coordinates: valuesPerPoint numbers per query.
+  interpolate(incremental, xy, method) {
+    this.enter();
+    try {
+      this.writeInput({ points: xy, lines: { count: 0, points: 0 } });
+      incremental.interpolate(this.output, this.input, method);
+    } finally {
+      this.input.clear();
+      this.leave();
+    }
+    this.check(this.output.code().value === 0, () => null);
+    try {
+      return this.read('values');
+    } finally {
+      this.output.clear();
+    }
+  }
+
+  // A checked raster ({ bbox, width, height }) -> Float32Array.
+  rasterize(incremental, { bbox, width, height }, method) {
+    this.idle();
+    const ok = incremental.rasterize(this.output, bbox[0], bbox[1], bbox[2], bbox[3], width,
+      height, method);
+    this.check(ok, () => null);
+    try {
+      return this.read('raster');
+    } finally {
+      this.output.clear();
+    }
   }
 
   locate(incremental, x, y) {

@@ -3,7 +3,10 @@
 // postMessage; the values are checked in the worker, by the core, as they are copied into
 // the heap.
 import { GeocdtError, reviveError } from './errors.js';
-import { checkCoordinates, checkInput, checkOffsets, describe } from './input.js';
+import {
+  checkCoordinates, checkInput, checkOffsets, checkRaster, checkValues, checkValuesPerPoint,
+  describe,
+} from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 
 // An array the worker may take: a typed array that spans its whole buffer is handed over
@@ -93,11 +96,11 @@ export class GeocdtWorker {
   // copying them; they are detached afterwards. options.onProgress({ phase, fraction }).
   async triangulate(input, options) {
     const { transfer, onProgress, rest } = takeProgress(options);
-    const { points, lines, polygons, z } = checkInput(input);
+    const { points, lines, polygons, values } = checkInput(input, checkValuesPerPoint(rest));
     const buffers = new Set();
     const sent = { points: transferable(points, transfer, buffers) };
     if (polygons !== undefined) sent.polygons = transferable(polygons, transfer, buffers);
-    if (z !== undefined) sent.z = transferable(z, transfer, buffers);
+    if (values !== undefined) sent.values = transferable(values, transfer, buffers);
     if (lines.arrays !== undefined) {
       sent.polylines = lines.arrays.map((line) => transferable(line, transfer, buffers));
     } else {
@@ -123,10 +126,12 @@ export class GeocdtWorker {
     return this.request('memoryUsage');
   }
 
-  createTriangulation() {
+  // options.valuesPerPoint: as new Triangulation()'s.
+  createTriangulation(options) {
+    const valuesPerPoint = checkValuesPerPoint(options);
     const id = this.#nextTriangulation++;
-    const created = this.request('create', [id]);
-    return new RemoteTriangulation(this, id, created);
+    const created = this.request('create', [id, { valuesPerPoint }]);
+    return new RemoteTriangulation(this, id, created, valuesPerPoint);
   }
 
   terminate() {
@@ -141,11 +146,13 @@ export class RemoteTriangulation {
   #worker;
   #id;
   #created;
+  #valuesPerPoint;
 
-  constructor(worker, id, created) {
+  constructor(worker, id, created, valuesPerPoint) {
     this.#worker = worker;
     this.#id = id;
     this.#created = created;
+    this.#valuesPerPoint = valuesPerPoint;
   }
 
   async #call(op, args = [], transfer = [], onProgress = undefined) {
@@ -153,20 +160,44 @@ export class RemoteTriangulation {
     return this.#worker.request(op, [this.#id, ...args], transfer, onProgress);
   }
 
-  async #coordinates(op, xy, name, options) {
+  // values: an array or typed array, or absent (then options may come second).
+  async #coordinates(op, xy, name, values, options) {
+    if (values != null && typeof values === 'object' && !Array.isArray(values)
+      && !ArrayBuffer.isView(values)) {
+      [values, options] = [undefined, values];
+    }
     const { transfer, onProgress } = takeProgress(options);
     const buffers = new Set();
     const sent = transferable(checkCoordinates(xy, name), transfer, buffers);
-    return this.#call(op, [sent], [...buffers], onProgress);
+    const sentValues = values == null ? undefined : transferable(
+      checkValues(values, sent.length / 2, this.#valuesPerPoint, `${name} values`), transfer,
+      buffers);
+    return this.#call(op, [sent, sentValues], [...buffers], onProgress);
   }
 
-  insertPoints(points, options) {
-    return this.#coordinates('insertPoints', points, 'points', options);
+  insertPoints(points, values, options) {
+    return this.#coordinates('insertPoints', points, 'points', values, options);
   }
 
-  insertPolyline(polyline, options) {
-    return this.#coordinates('insertPolyline', polyline, 'polyline', options);
+  insertPolyline(polyline, values, options) {
+    return this.#coordinates('insertPolyline', polyline, 'polyline', values, options);
   }
+
+  // options.transfer as for insertPoints(); options.method 'linear' or 'natural'.
+  async interpolate(points, options) {
+    const { transfer, rest } = takeProgress(options);
+    const buffers = new Set();
+    const sent = transferable(checkCoordinates(points, 'points'), transfer, buffers);
+    return this.#call('interpolate', [sent, rest], [...buffers]);
+  }
+
+  async rasterize(options) {
+    checkRaster(options, this.#valuesPerPoint);
+    const { bbox, width, height, method } = options;
+    return this.#call('rasterize', [{ bbox: Array.from(bbox), width, height, method }]);
+  }
+
+  get valuesPerPoint() { return this.#valuesPerPoint; }
 
   locate(x, y) { return this.#call('locate', [x, y]); }
 

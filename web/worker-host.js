@@ -33,9 +33,13 @@ export function createHost(api, post) {
     triangulate: (onProgress, input, options) =>
       api.triangulate(input, { ...options, onProgress }),
     memoryUsage: () => api.memoryUsage(),
-    create: (_, id) => { triangulations.set(id, new api.Triangulation()); },
-    insertPoints: (onProgress, id, xy) => live(id).insertPoints(xy, { onProgress }),
-    insertPolyline: (onProgress, id, xy) => live(id).insertPolyline(xy, { onProgress }),
+    create: (_, id, options) => { triangulations.set(id, new api.Triangulation(options)); },
+    insertPoints: (onProgress, id, xy, values) =>
+      live(id).insertPoints(xy, values, { onProgress }),
+    insertPolyline: (onProgress, id, xy, values) =>
+      live(id).insertPolyline(xy, values, { onProgress }),
+    interpolate: (_, id, xy, options) => live(id).interpolate(xy, options),
+    rasterize: (_, id, options) => live(id).rasterize(options),
     locate: (_, id, x, y) => live(id).locate(x, y),
     results: (onProgress, id, options) => live(id).results({ ...options, onProgress }),
     stats: (_, id) => live(id).stats,

@@ -2,9 +2,10 @@
 // worker_threads Worker (Node). Coordinates go to the worker and results come back as
 // transferred buffers, not copies.
 import type {
-  Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, GeoJSONResult, Location, MemoryUsage,
-  Mesh, MeshOptions, ProgressOptions, ResultsOptions, TriangleFeatureCollection,
-  TriangulateInput, TriangulateResult,
+  Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, GeoJSONResult, InterpolateOptions,
+  Location, MemoryUsage, Mesh, MeshOptions, ProgressOptions, RasterOptions, ResultsOptions,
+  TriangleFeatureCollection, TriangulateInput, TriangulateOptions, TriangulateResult,
+  TriangulationOptions,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -21,7 +22,8 @@ export class GeocdtWorker {
   /** Loads the wasm in the worker (every call does it if needed). */
   init(): Promise<void>;
   triangulate(
-    input: TriangulateInput, options?: MeshOptions & TransferOptions): Promise<TriangulateResult>;
+    input: TriangulateInput,
+    options?: TriangulateOptions & TransferOptions): Promise<TriangulateResult>;
   /** The GeoJSON is read on the calling thread; the triangulation runs in the worker. */
   triangulateGeoJSON(
     geojson: GeoJSONInput,
@@ -34,16 +36,26 @@ export class GeocdtWorker {
     options?: GeoJSONOptions): Promise<TriangleFeatureCollection | GeoJSONResult>;
   memoryUsage(): Promise<MemoryUsage>;
   /** A Triangulation that lives in the worker. */
-  createTriangulation(): RemoteTriangulation;
+  createTriangulation(options?: TriangulationOptions): RemoteTriangulation;
   /** Stops the worker; pending calls reject with a GeocdtError ('WorkerTerminated'). */
   terminate(): void;
 }
 
 export class RemoteTriangulation {
   insertPoints(
+    points: Coordinates, values?: Coordinates,
+    options?: TransferOptions & ProgressOptions): Promise<Uint32Array>;
+  insertPoints(
     points: Coordinates, options?: TransferOptions & ProgressOptions): Promise<Uint32Array>;
   insertPolyline(
+    polyline: Coordinates, values?: Coordinates,
+    options?: TransferOptions & ProgressOptions): Promise<Uint32Array>;
+  insertPolyline(
     polyline: Coordinates, options?: TransferOptions & ProgressOptions): Promise<Uint32Array>;
+  interpolate(
+    points: Coordinates, options?: InterpolateOptions & TransferOptions): Promise<Float64Array>;
+  rasterize(options: RasterOptions): Promise<Float32Array>;
+  readonly valuesPerPoint: number;
   locate(x: number, y: number): Promise<Location>;
   results(options?: ResultsOptions): Promise<Mesh>;
   stats(): Promise<CoreStats>;

@@ -15,6 +15,9 @@
 
 namespace geocdt {
 
+// A polyline point index past what 32 bits number (see ConstraintStore::segmentStarts).
+inline constexpr std::uint32_t kNoSegment = 0xFFFFFFFFu;
+
 struct EdgeSource {
   std::uint32_t segment = 0;   // the first input segment: index into ConstraintStore::segments
   std::int32_t winding = 0;    // ring traversals along the edge's direction minus against it

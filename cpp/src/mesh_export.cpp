@@ -104,25 +104,6 @@ void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t
   if (labels) labels->resize(count);
 }
 
-// For each vertex on a constrained edge, where an input segment through it starts: any of
-// its constrained edges lies on the segment its EdgeSource names.
-std::vector<std::uint32_t> vertexSegments(const Delaunay& d, const std::vector<std::uint32_t>& tri,
-                                          const std::vector<std::uint8_t>& fixed,
-                                          std::size_t vertexCount) {
-  std::vector<std::uint32_t> start(vertexCount, kNoSegment);
-  for (std::size_t e = 0; e < tri.size(); ++e) {
-    if (!fixed[e]) continue;
-    const std::uint32_t u = tri[e], v = tri[e % 3 == 2 ? e - 2 : e + 1];
-    if (u == kGhost || v == kGhost || (start[u] != kNoSegment && start[v] != kNoSegment)) continue;
-    const EdgeSource* src = d.constraints.find(u, v);
-    if (!src) continue;
-    const std::uint32_t p = d.constraints.segmentStarts[src->segment];
-    if (start[u] == kNoSegment) start[u] = p;
-    if (start[v] == kNoSegment) start[v] = p;
-  }
-  return start;
-}
-
 void addProvenance(const Delaunay& d, Mesh& m) {
   if (d.constraints.edgeCount() == 0) return;
   m.sourceOffsets.push_back(0);
@@ -172,8 +153,6 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
     m.halfedges = topo.adj;
     m.constrained = topo.fixed;
   }
-  if (options.vertexSegments)
-    m.vertexSegments = vertexSegments(d, m.triangles, m.constrained, m.points.size() / 2);
   std::vector<std::uint8_t> kept = realSlots(m.triangles);
   if (options.keep == Keep::Inside)
     for (std::size_t t = 0; t < kept.size(); ++t) kept[t] &= inside[t];

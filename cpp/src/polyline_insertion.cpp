@@ -75,14 +75,14 @@ Status insertPendingSegments(Delaunay& d, const Options& options) {
   return Status::success();
 }
 
-Status Triangulation::insertPolyline(const double* xy, std::size_t count,
-                                     std::uint32_t* vertexIds) {
+Status Triangulation::insertPolyline(const double* xy, std::size_t count, std::uint32_t* vertexIds,
+                                     const double* values) {
   const PolylineView line{xy, count};
-  return insertPolylines(&line, 1, vertexIds);
+  return insertPolylines(&line, 1, vertexIds, values);
 }
 
 Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t count,
-                                      std::uint32_t* vertexIds) {
+                                      std::uint32_t* vertexIds, const double* values) {
   if (count > 0 && polylines == nullptr)
     return {StatusCode::InvalidArgument, "null polylines with a count"};
   std::size_t total = 0;
@@ -103,15 +103,16 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     // All points first, in one spatially sorted batch.
     Status s;
     if (count == 1) {
-      s = insertCheckedPoints(polylines[0].xy, polylines[0].count, ids);
+      s = insertCheckedPoints(polylines[0].xy, polylines[0].count, ids, values);
     } else {
       std::vector<double> all;
       all.reserve(2 * total);
       for (std::size_t i = 0; i < count; ++i)
         all.insert(all.end(), polylines[i].xy, polylines[i].xy + 2 * polylines[i].count);
-      s = insertCheckedPoints(all.data(), total, ids);
+      s = insertCheckedPoints(all.data(), total, ids, values);
     }
     if (!s.ok()) return s;
+    state_->values.recordPolylinePoints(ids, total);
     state_->slotMapValid = false;
 
     VertexEdges ends = endsFor(d, total);
@@ -163,6 +164,7 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     progress(Phase::Constraints, total, total);
   } catch (const std::bad_alloc&) {
     d.clear();
+    state_->values.clear();
     state_->slotMapValid = false;
     return {StatusCode::OutOfMemory,
             "out of memory: the input is too large for the available memory"};

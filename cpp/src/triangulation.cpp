@@ -45,8 +45,16 @@ const std::vector<double>& Triangulation::points() const { return state_->delaun
 Stats Triangulation::stats() const {
   Stats s = state_->delaunay.stats;
   s.gridSize = state_->delaunay.gridSize();
+  VertexValues& values = state_->values;
+  s.valueDuplicates = values.duplicates();
+  if (values.active()) {
+    values.update(state_->delaunay, nullptr);
+    s.valueDisagreements = values.disagreements();
+  }
   return s;
 }
+std::uint32_t Triangulation::valuesPerPoint() const { return state_->values.perPoint(); }
+bool Triangulation::hasValues() const { return state_->values.active(); }
 std::size_t Triangulation::polylineCount() const {
   return state_->delaunay.constraints.polylineCount;
 }
@@ -59,20 +67,23 @@ std::size_t Triangulation::triangleCount() const {
   return n;
 }
 
-Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds) {
+Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds,
+                                   const double* values) {
   const Status s = checkCoordinates(xy, count, "point");
   if (!s.ok()) return s;
-  return insertCheckedPoints(xy, count, vertexIds);
+  return insertCheckedPoints(xy, count, vertexIds, values);
 }
 
-Status Triangulation::insertPoints(std::vector<double>&& xy, std::uint32_t* vertexIds) {
+Status Triangulation::insertPoints(std::vector<double>&& xy, std::uint32_t* vertexIds,
+                                   const double* values) {
   const Status s = checkCoordinates(xy.data(), xy.size() / 2, "point");
   if (!s.ok()) return s;
-  return insertCheckedPoints(xy.data(), xy.size() / 2, vertexIds, &xy);
+  return insertCheckedPoints(xy.data(), xy.size() / 2, vertexIds, values, &xy);
 }
 
 Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
-                                          std::uint32_t* vertexIds, std::vector<double>* adopt) {
+                                          std::uint32_t* vertexIds, const double* values,
+                                          std::vector<double>* adopt) {
   State& state = *state_;
   Delaunay& d = state.delaunay;
   Status s;
@@ -88,9 +99,11 @@ Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
     state.slotMapValid = false;
     s = adopt ? d.insertBatch(std::move(*adopt), ids)
               : d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
+    if (s.ok()) state.values.record(ids, count, values, d.vertexCount());
     if (s.ok()) s = insertPendingSegments(d, state.options);
   } catch (const std::bad_alloc&) {
     d.clear();
+    state.values.clear();
     state.slotMapValid = false;
     return outOfMemory();
   }
@@ -138,16 +151,43 @@ Location Triangulation::locate(double x, double y) const {
   return loc;
 }
 
+namespace {
+
+// The mesh with its values (before the export, which may move the topology out).
+Mesh exportWithValues(Triangulation::State& state, const MeshOptions& options, bool consume) {
+  Mesh values;
+  if (state.values.active()) state.values.update(state.delaunay, &values);
+  Mesh m = exportMesh(state.delaunay, options, consume);
+  m.values = std::move(values.values);
+  m.derivedVertices = std::move(values.derivedVertices);
+  m.derivedOffsets = std::move(values.derivedOffsets);
+  m.derivedParents = std::move(values.derivedParents);
+  m.derivedWeights = std::move(values.derivedWeights);
+  return m;
+}
+
+}  // namespace
+
 Mesh Triangulation::mesh(const MeshOptions& options) const {
-  return exportMesh(state_->delaunay, options, false);
+  return exportWithValues(*state_, options, false);
 }
 
 Mesh Triangulation::release(const MeshOptions& options) {
   state_->delaunay.dropGrid();
-  Mesh m = exportMesh(state_->delaunay, options, true);
+  Mesh m = exportWithValues(*state_, options, true);
   state_->delaunay.clear();
+  state_->values.clear();
   state_->slotMapValid = false;
   return m;
+}
+
+void Triangulation::interpolate(const double* xy, std::size_t count, Interpolation method,
+                                double* out) const {
+  State& state = *state_;
+  static const std::vector<double> none;
+  const std::vector<double>& values =
+      state.values.active() ? state.values.update(state.delaunay, nullptr) : none;
+  interpolateValues(state.delaunay, values, state.values.perPoint(), xy, count, method, out);
 }
 
 namespace {
@@ -157,7 +197,7 @@ template <typename InsertPoints>
 Status triangulateWith(std::size_t count, InsertPoints insertPoints, const PolylineView* polylines,
                        std::size_t polylineCount, const Options& options,
                        const MeshOptions& meshOptions, Mesh& out,
-                       std::vector<std::uint32_t>* inputToVertex) {
+                       std::vector<std::uint32_t>* inputToVertex, const double* values) {
   if (polylineCount > 0 && polylines == nullptr)
     return {StatusCode::InvalidArgument, "null polylines with a count"};
   Triangulation t(options);
@@ -169,7 +209,8 @@ Status triangulateWith(std::size_t count, InsertPoints insertPoints, const Polyl
     ids.resize(total);
     s = insertPoints(t, ids.data());
     if (s.ok() && polylineCount > 0)
-      s = t.insertPolylines(polylines, polylineCount, ids.data() + count);
+      s = t.insertPolylines(polylines, polylineCount, ids.data() + count,
+                            values ? values + count * options.valuesPerPoint : nullptr);
     if (!s.ok()) return s;
     out = t.release(meshOptions);
   } catch (const std::bad_alloc&) {
@@ -184,20 +225,23 @@ Status triangulateWith(std::size_t count, InsertPoints insertPoints, const Polyl
 Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex) {
+                   std::vector<std::uint32_t>* inputToVertex, const double* values) {
   return triangulateWith(
-      count, [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(xy, count, ids); },
-      polylines, polylineCount, options, meshOptions, out, inputToVertex);
+      count,
+      [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(xy, count, ids, values); },
+      polylines, polylineCount, options, meshOptions, out, inputToVertex, values);
 }
 
 Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex) {
+                   std::vector<std::uint32_t>* inputToVertex, const double* values) {
   return triangulateWith(
       xy.size() / 2,
-      [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(std::move(xy), ids); },
-      polylines, polylineCount, options, meshOptions, out, inputToVertex);
+      [&](Triangulation& t, std::uint32_t* ids) {
+        return t.insertPoints(std::move(xy), ids, values);
+      },
+      polylines, polylineCount, options, meshOptions, out, inputToVertex, values);
 }
 
 }  // namespace geocdt

@@ -5,13 +5,16 @@
 
 #include "delaunay.h"
 #include "geocdt/triangulation.h"
+#include "vertex_values.h"
 
 namespace geocdt {
 
 struct Triangulation::State {
-  explicit State(const Options& options) : options(options), delaunay(options) {}
+  explicit State(const Options& options)
+      : options(options), delaunay(options), values(options.valuesPerPoint) {}
   Options options;    // for snap rounding, which builds the triangulation again
   Delaunay delaunay;  // owns the constraints too
+  VertexValues values;
   // Slot -> index in mesh().triangles / 3, rebuilt on demand after a change.
   std::vector<std::int32_t> slotToTriangle;
   bool slotMapValid = false;
@@ -24,5 +27,8 @@ Mesh exportMesh(Delaunay& delaunay, const MeshOptions& options, bool consume);
 Status insertPendingSegments(Delaunay& delaunay, const Options& options);
 // Index of each slot among the exported triangles, or -1 for ghost triangles.
 std::vector<std::int32_t> slotIndices(const Topology& topo);
+// Values at count points (see Triangulation::interpolate), from values (perPoint per vertex).
+void interpolateValues(Delaunay& d, const std::vector<double>& values, std::uint32_t perPoint,
+                       const double* xy, std::size_t count, Interpolation method, double* out);
 
 }  // namespace geocdt

@@ -2,7 +2,7 @@
 // some tens of thousands of triangles. Triangles go in polygons of FILL_CHUNK rings: the
 // 2D canvas fills one path of 40,000 contours about 80 times slower than 600 paths of 64.
 import L from 'leaflet';
-import { GROUP_RANGES, cssColour, meshPane } from './mesh-style.js';
+import { GROUP_RANGES, cssColour, fillRanges, meshPane } from './mesh-style.js';
 
 const FILL_CHUNK = 64;
 const LINE_CHUNK = 1024;
@@ -39,27 +39,23 @@ export const CanvasMeshLayer = L.LayerGroup.extend({
     const m = this._mesh;
     const ll = this._latLngs;
     const renderer = this._renderer;
-    const triangleRings = (first, count) => {
+    const triangleRings = (triangles, first, count) => {
       const rings = new Array(count);
       for (let t = 0; t < count; t++) {
         const i = 3 * (first + t);
-        rings[t] = [ll[m.triangles[i]], ll[m.triangles[i + 1]], ll[m.triangles[i + 2]]];
+        rings[t] = [ll[triangles[i]], ll[triangles[i + 1]], ll[triangles[i + 2]]];
       }
       return rings;
     };
-    const fills = [
-      [s.show !== 'outside', s.insideFill, 0, m.insideTriangles],
-      [s.show !== 'inside', s.outsideFill, m.insideTriangles,
-        m.triangles.length / 3 - m.insideTriangles],
-    ];
-    for (const [visible, colour, first, count] of fills) {
-      if (!visible || !s.fill || count === 0) continue;
+    for (const [array, colour, first, count] of fillRanges(m, s)) {
+      if (count === 0) continue;
       const options = {
         renderer, stroke: false, fillColor: cssColour(colour), fillOpacity: 1, interactive: false,
         smoothFactor: 0,
       };
-      for (const rings of chunks(count, FILL_CHUNK, (f, n) => triangleRings(first + f, n))) {
-        this.addLayer(L.polygon(rings, options));
+      const rings = (f, n) => triangleRings(m[array], first + f, n);
+      for (const part of chunks(count, FILL_CHUNK, rings)) {
+        this.addLayer(L.polygon(part, options));
       }
     }
     const lines = [

@@ -22,9 +22,14 @@ export function parseGeoJSONText(text) {
   return readGeoJSON(json);
 }
 
-// Returns { points: number[], rings: Float64Array[], lines: Float64Array[], pointCount }.
+// Returns { points: number[], rings: Float64Array[], lines: Float64Array[], pointCount,
+// hasZ } and the heights (third coordinates, NaN where a position has none) in the same
+// layout: pointZ: number[], ringZ and lineZ: Float64Array[].
 export function readGeoJSON(json) {
-  const out = { points: [], rings: [], lines: [], pointCount: 0 };
+  const out = {
+    points: [], rings: [], lines: [], pointCount: 0, hasZ: false, pointZ: [], ringZ: [],
+    lineZ: [],
+  };
   if (!json || typeof json !== 'object') throw new InputError('not a GeoJSON object');
   addObject(json, out, 'the file');
   if (out.pointCount === 0) throw new InputError('the GeoJSON has no coordinates to triangulate');
@@ -68,10 +73,14 @@ function addGeometry(g, out, where) {
     case 'Point':
       need(0);
       out.points.push(...position(c, out, where));
+      out.pointZ.push(height(c, out));
       return;
     case 'MultiPoint':
       need(1);
-      for (const p of c) out.points.push(...position(p, out, where));
+      for (const p of c) {
+        out.points.push(...position(p, out, where));
+        out.pointZ.push(height(p, out));
+      }
       return;
     case 'LineString':
       need(1);
@@ -118,10 +127,21 @@ function position(p, out, where) {
   return [lon, lat];
 }
 
+// The third coordinate, or NaN.
+function height(p, out) {
+  if (typeof p[2] !== 'number' || !Number.isFinite(p[2])) return NaN;
+  out.hasZ = true;
+  return p[2];
+}
+
 function flatten(positions, out, where) {
   const xy = new Float64Array(2 * positions.length);
-  positions.forEach((p, i) => xy.set(position(p, out, where), 2 * i));
-  return xy;
+  const z = new Float64Array(positions.length);
+  positions.forEach((p, i) => {
+    xy.set(position(p, out, where), 2 * i);
+    z[i] = height(p, out);
+  });
+  return { xy, z };
 }
 
 // Lines are constraints only: a closed one is cut in two so it is not taken for a ring.
@@ -129,13 +149,15 @@ function addLine(positions, out, where) {
   if (positions.length < 2) {
     throw new InputError(`${where}: a LineString needs at least 2 positions`);
   }
-  const xy = flatten(positions, out, where);
+  const { xy, z } = flatten(positions, out, where);
   const n = positions.length;
   if (n > 2 && xy[0] === xy[2 * n - 2] && xy[1] === xy[2 * n - 1]) {
     const mid = n >> 1;
     out.lines.push(xy.slice(0, 2 * mid + 2), xy.slice(2 * mid));
+    out.lineZ.push(z.slice(0, mid + 1), z.slice(mid));
   } else {
     out.lines.push(xy);
+    out.lineZ.push(z);
   }
 }
 
@@ -143,7 +165,7 @@ function addRing(positions, out, where) {
   if (positions.length < 3) {
     throw new InputError(`${where}: a polygon ring needs at least 3 positions`);
   }
-  let xy = flatten(positions, out, where);
+  let { xy, z } = flatten(positions, out, where);
   const n = positions.length;
   if (xy[0] !== xy[2 * n - 2] || xy[1] !== xy[2 * n - 1]) {
     // RFC 7946 wants rings closed; close an open one rather than reject the file.
@@ -152,6 +174,11 @@ function addRing(positions, out, where) {
     closed[2 * n] = xy[0];
     closed[2 * n + 1] = xy[1];
     xy = closed;
+    const closedZ = new Float64Array(n + 1);
+    closedZ.set(z);
+    closedZ[n] = z[0];
+    z = closedZ;
   }
   out.rings.push(xy);
+  out.ringZ.push(z);
 }

@@ -6,7 +6,7 @@
 // high + low parts (see mesh-buffers.js), made relative to the view centre on the GPU.
 import L from 'leaflet';
 import { EARTH_RADIUS } from './mercator.js';
-import { GROUP_RANGES, MESH_PANE, meshPane } from './mesh-style.js';
+import { GROUP_RANGES, MESH_PANE, fillRanges, meshPane } from './mesh-style.js';
 
 const VERTEX_SHADER = `
 attribute vec2 high;
@@ -130,6 +130,9 @@ export const GlMeshLayer = L.Layer.extend({
       edges: buffer(gl.ELEMENT_ARRAY_BUFFER, m.edges),
       constraints: buffer(gl.ELEMENT_ARRAY_BUFFER, m.constraints),
     };
+    if (m.surfaceTriangles) {
+      this._buffers.surfaceTriangles = buffer(gl.ELEMENT_ARRAY_BUFFER, m.surfaceTriangles);
+    }
   },
 
   // Puts the canvas over the map's current view (plus padding) and draws it there.
@@ -204,15 +207,10 @@ export const GlMeshLayer = L.Layer.extend({
 
     const m = this._mesh;
     const s = this._style;
-    const fills = [
-      [s.show !== 'outside', s.insideFill, 0, m.insideTriangles],
-      [s.show !== 'inside', s.outsideFill, m.insideTriangles,
-        m.triangles.length / 3 - m.insideTriangles],
-    ];
     gl.uniform2f(uniforms.shift, 0, 0);
-    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this._buffers.triangles);
-    for (const [visible, colour, first, count] of fills) {
-      if (!visible || !s.fill || count === 0) continue;
+    for (const [array, colour, first, count] of fillRanges(m, s)) {
+      if (count === 0) continue;
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this._buffers[array]);
       gl.uniform4fv(uniforms.colour, premultiply(colour));
       gl.drawElements(gl.TRIANGLES, 3 * count, gl.UNSIGNED_INT, 12 * first);
     }

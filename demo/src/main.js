@@ -51,6 +51,7 @@ async function run(source, ask, { fit = false, isEdit = false } = {}) {
     hideMessages();
     const drawStarted = performance.now();
     if (fit && reply.bounds) fitTo(reply.bounds);
+    offerSurface(reply.mesh);
     view.show(reply.mesh);
     await nextFrame();
     const now = performance.now();
@@ -137,6 +138,18 @@ mapElement.addEventListener('drop', (e) => {
   mapElement.classList.remove('dragging-file');
   loadFile(e.dataTransfer.files[0]);
 });
+
+// The surface view is there when the mesh has values (a GeoJSON with z).
+function offerSurface(mesh) {
+  const has = mesh.surfaceCounts !== undefined;
+  $('show-surface').disabled = !has;
+  $('surface-range').textContent = has
+    ? `(${mesh.surfaceRange.map((v) => format(Number(v.toPrecision(4)))).join(' to ')})` : '';
+  if (!has && style.show === 'surface') {
+    document.querySelector('input[name="show"][value="all"]').checked = true;
+    style.show = 'all';
+  }
+}
 
 function restyle(change) {
   Object.assign(style, change);

@@ -7,6 +7,8 @@
 // - positions split into float32 high and low parts (hx, hy, lx, ly per vertex) so WebGL
 //   keeps centimetre precision on Mercator metres of up to 2e7.
 
+import { SURFACE_BINS } from './mesh-style.js';
+
 export function meshBuffers({ points, triangles, halfedges, constrained, inside }) {
   const triangleCount = triangles.length / 3;
   const isInside = (t) => (inside ? inside[t] === 1 : false);
@@ -87,7 +89,43 @@ export function meshBuffers({ points, triangles, halfedges, constrained, inside 
   };
 }
 
+// The surface view: triangles grouped by the mean of their vertices' values into
+// SURFACE_BINS equal bins between the lowest and the highest value, lowest first, so that each
+// bin is one range drawn in one colour. Triangles with a vertex without a value (NaN, as
+// points clicked in) are left out.
+export function surfaceBuffers({ triangles, values }) {
+  let low = Infinity, high = -Infinity;
+  for (const v of values) {
+    if (v < low) low = v;
+    if (v > high) high = v;
+  }
+  const count = triangles.length / 3;
+  const bins = new Uint8Array(count);
+  const surfaceCounts = new Uint32Array(SURFACE_BINS);
+  const scale = high > low ? SURFACE_BINS / (high - low) : 0;
+  for (let t = 0; t < count; t++) {
+    const mean = (values[triangles[3 * t]] + values[triangles[3 * t + 1]]
+      + values[triangles[3 * t + 2]]) / 3;
+    if (Number.isNaN(mean)) {
+      bins[t] = 255;
+      continue;
+    }
+    bins[t] = Math.min(SURFACE_BINS - 1, Math.floor((mean - low) * scale));
+    surfaceCounts[bins[t]]++;
+  }
+  const at = new Uint32Array(SURFACE_BINS);
+  for (let b = 1; b < SURFACE_BINS; b++) at[b] = at[b - 1] + surfaceCounts[b - 1];
+  const surfaceTriangles = new Uint32Array(3 * (at[SURFACE_BINS - 1]
+    + surfaceCounts[SURFACE_BINS - 1]));
+  for (let t = 0; t < count; t++) {
+    if (bins[t] === 255) continue;
+    surfaceTriangles.set(triangles.subarray(3 * t, 3 * t + 3), 3 * at[bins[t]]++);
+  }
+  return { surfaceTriangles, surfaceCounts, surfaceRange: [low, high] };
+}
+
 export function transferablesOf(mesh) {
   const arrays = [mesh.points, mesh.positions, mesh.triangles, mesh.edges, mesh.constraints];
+  if (mesh.surfaceTriangles) arrays.push(mesh.surfaceTriangles, mesh.surfaceCounts);
   return arrays.map((a) => a.buffer);
 }

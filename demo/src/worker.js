@@ -6,7 +6,7 @@ import { init, triangulate, Triangulation } from 'geocdt';
 import { decodeDataset } from './dataset-codec.js';
 import { parseGeoJSONText } from './geojson-input.js';
 import { projectLonLat } from './mercator.js';
-import { meshBuffers, transferablesOf } from './mesh-buffers.js';
+import { meshBuffers, surfaceBuffers, transferablesOf } from './mesh-buffers.js';
 
 const MESH_OPTIONS = { keep: 'all', insideFlags: true };
 
@@ -72,9 +72,24 @@ async function loadDataset(url, onProgress) {
 }
 
 function prepareGeoJSON(text) {
-  const { points, rings, lines } = parseGeoJSONText(text);
+  const { points, rings, lines, hasZ, pointZ, ringZ, lineZ } = parseGeoJSONText(text);
   // Rings first: the order does not change the triangulation, only which input ids are which.
-  return projectInput({ points: new Float64Array(points), polylines: [...rings, ...lines] });
+  const input = projectInput({ points: new Float64Array(points), polylines: [...rings, ...lines] });
+  // Heights, when the file has them: one value per point, for the surface view.
+  if (hasZ) input.values = { points: Float64Array.from(pointZ), polylines: [...ringZ, ...lineZ] };
+  return input;
+}
+
+// The values in triangulate()'s order: the points, then each polyline's.
+function flatValues({ points, polylines }) {
+  const out = new Float64Array(polylines.reduce((n, z) => n + z.length, points.length));
+  out.set(points);
+  let at = points.length;
+  for (const z of polylines) {
+    out.set(z, at);
+    at += z.length;
+  }
+  return out;
 }
 
 function projectInput({ points, polylines }) {
@@ -100,7 +115,8 @@ function projectInput({ points, polylines }) {
 
 function loadInput(input, loadMs, onProgress) {
   const started = performance.now();
-  const result = triangulate({ points: input.points, polylines: input.polylines },
+  const values = input.values && flatValues(input.values);
+  const result = triangulate({ points: input.points, polylines: input.polylines, values },
     { ...MESH_OPTIONS, onProgress });
   const triangulateMs = performance.now() - started;
   current?.incremental?.dispose();
@@ -113,8 +129,9 @@ function incremental() {
   if (!current) throw new Error('nothing is loaded yet');
   if (!current.incremental) {
     const t = new Triangulation();
-    if (current.input.points.length) t.insertPoints(current.input.points);
-    for (const line of current.input.polylines) t.insertPolyline(line);
+    const { points, polylines, values } = current.input;
+    if (points.length) t.insertPoints(points, values?.points);
+    polylines.forEach((line, i) => t.insertPolyline(line, values?.polylines[i]));
     current.incremental = t;
   }
   return current.incremental;
@@ -147,6 +164,7 @@ function reply(result, triangulateMs, loadMs, bounds) {
   const constraints =
     input.polylines.reduce((n, l) => n + l.length / 2 - 1, 0) + input.addedSegments;
   const mesh = meshBuffers(result);
+  if (result.values) Object.assign(mesh, surfaceBuffers(result));
   const stats = {
     inputPoints,
     vertices: result.points.length / 2,

@@ -365,7 +365,7 @@ TEST(Regions, OnlyWhenAskedFor) {
   Mesh m;
   ASSERT_TRUE(triangulate(nullptr, 0, views.data(), views.size(), {}, {}, m).ok());
   EXPECT_TRUE(m.regions.empty());
-  EXPECT_TRUE(m.vertexSegments.empty());
+  EXPECT_TRUE(m.values.empty());
   MeshOptions mo;
   mo.regions = true;  // no polygons: every triangle outside all of them
   ASSERT_TRUE(triangulate(nullptr, 0, views.data(), views.size(), {}, mo, m).ok());
@@ -373,38 +373,39 @@ TEST(Regions, OnlyWhenAskedFor) {
   EXPECT_TRUE(std::all_of(m.regions.begin(), m.regions.end(), [](int r) { return r == -1; }));
 }
 
-// Every vertex on a constraint names a segment through it; crossings lie on theirs exactly
-// here (axis-parallel and diagonal lines through integer points).
-TEST(Regions, VertexSegmentsNameASegmentThroughEachConstrainedVertex) {
+// Every vertex added where constraints cross derives its values from the ends of the input
+// segments through it; crossings lie on them exactly here (axis-parallel and diagonal lines
+// through integer points).
+TEST(Regions, CrossingsDeriveValuesFromTheSegmentsThroughThem) {
   const std::vector<Ring> lines = {{0, 0, 8, 0, 8, 8}, {4, -2, 4, 10}, {-1, -1, 9, 9}};
-  std::vector<double> flat;
-  for (const Ring& l : lines) flat.insert(flat.end(), l.begin(), l.end());
   std::vector<PolylineView> views;
   for (const Ring& l : lines) views.push_back({l.data(), l.size() / 2});
   const std::vector<double> free = {20, 20, -20, 5};
-  MeshOptions mo;
-  mo.vertexSegments = true;
+  std::vector<double> values = {0, 0};
+  for (const Ring& l : lines)
+    for (std::size_t i = 0; i < l.size(); i += 2) values.push_back(l[i] + 2 * l[i + 1]);
   Mesh m;
   std::vector<std::uint32_t> ids;
-  ASSERT_TRUE(triangulate(free.data(), 2, views.data(), views.size(), {}, mo, m, &ids).ok());
-  ASSERT_EQ(m.vertexSegments.size(), m.points.size() / 2);
-  EXPECT_EQ(m.vertexSegments[ids[0]], kNoSegment);
-  EXPECT_EQ(m.vertexSegments[ids[1]], kNoSegment);
-  const std::size_t polylinePoints = flat.size() / 2;
-  std::size_t added = 0;
-  for (std::uint32_t v = 0; v < m.points.size() / 2; ++v) {
-    const std::uint32_t p = m.vertexSegments[v];
-    if (v == ids[0] || v == ids[1]) continue;
-    added += std::find(ids.begin(), ids.end(), v) == ids.end();
-    ASSERT_LT(p + 1, polylinePoints) << "vertex " << v;
+  ASSERT_TRUE(
+      triangulate(free.data(), 2, views.data(), views.size(), {}, {}, m, &ids, values.data()).ok());
+  ASSERT_EQ(m.values.size(), m.points.size() / 2);
+  // (4, 0) and (4, 4); the diagonal meets the first line at its points.
+  ASSERT_EQ(m.derivedVertices.size(), 2u);
+  for (std::size_t i = 0; i < m.derivedVertices.size(); ++i) {
+    const std::uint32_t v = m.derivedVertices[i];
+    EXPECT_EQ(std::find(ids.begin(), ids.end(), v), ids.end());
     const double x = m.points[2 * v], y = m.points[2 * v + 1];
-    EXPECT_EQ(orient2d(flat[2 * p], flat[2 * p + 1], flat[2 * p + 2], flat[2 * p + 3], x, y),
-              Sign::Zero)
-        << "vertex " << v << " at " << x << ", " << y;
-    EXPECT_GE(x, std::min(flat[2 * p], flat[2 * p + 2]));
-    EXPECT_LE(x, std::max(flat[2 * p], flat[2 * p + 2]));
+    EXPECT_EQ(m.values[v], x + 2 * y);
+    const std::uint32_t from = m.derivedOffsets[i], to = m.derivedOffsets[i + 1];
+    ASSERT_EQ(to - from, 4u) << "two segments through vertex " << v;
+    for (std::uint32_t j = from; j < to; j += 2) {
+      const std::uint32_t a = m.derivedParents[j], b = m.derivedParents[j + 1];
+      const double* pa = &m.points[2 * a];
+      const double* pb = &m.points[2 * b];
+      EXPECT_EQ(orient2d(pa[0], pa[1], pb[0], pb[1], x, y), Sign::Zero) << "vertex " << v;
+      EXPECT_EQ(m.derivedWeights[j] + m.derivedWeights[j + 1], 0.5);
+    }
   }
-  EXPECT_EQ(added, 2u);  // (4, 0) and (4, 4); the diagonal meets the first line at its points
 }
 
 }  // namespace

@@ -195,6 +195,35 @@ test('clicks add points and constraint segments through the incremental API', as
   assert.deepEqual(consoleErrors, []);
 });
 
+// Heights on a grid of points and on a ring: the surface view colours the triangles.
+function hill() {
+  const coordinates = [];
+  for (let i = 0; i <= 12; i++) {
+    for (let j = 0; j <= 12; j++) coordinates.push([i, j, 100 * Math.sin(i / 4) + 10 * j]);
+  }
+  const ring = [[3.5, 3.5, 500], [9.5, 3.5, 500], [9.5, 9.5, 700], [3.5, 9.5, 700],
+    [3.5, 3.5, 500]];
+  return { type: 'FeatureCollection', features: [
+    { type: 'Feature', properties: {}, geometry: { type: 'MultiPoint', coordinates } },
+    { type: 'Feature', properties: {}, geometry: { type: 'LineString', coordinates: ring } },
+  ] };
+}
+
+test('a GeoJSON with z gets the surface view', async () => {
+  await settle(() => dropFile('hill.geojson', JSON.stringify(hill())));
+  const s = await readStats();
+  assert.equal(s.status, 'ready', s.error);
+  assert.equal(await page.isDisabled('#show-surface'), false);
+  assert.match(await page.textContent('#surface-range'), /\(0 to 7\d\d/);
+  await page.check('#show-surface');
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(resolve)));
+  await page.screenshot({ path: join(OUTPUT, 'demo-surface.png') });
+  await settle(() => dropFile('square.geojson', JSON.stringify(SQUARE)));
+  assert.equal(await page.isDisabled('#show-surface'), true, 'no z, no surface');
+  assert.equal(await page.isChecked('input[name="show"][value="all"]'), true);
+  assert.deepEqual(consoleErrors, []);
+});
+
 test('bad files are reported on the page, and the map keeps the last good mesh', async () => {
   const before = await readStats();
   const broken = '{"type": "FeatureCollection", "features": [';

@@ -33,11 +33,10 @@ test('GeocdtError is one class, exported by both entries', () => {
 });
 
 test('core statuses become named errors with their code, index and segment', () => {
-  const unresolved = statusError('ConstraintUnresolved', 'polyline 4 segment 7: stuck', 4, 7);
-  assert.ok(unresolved instanceof GeocdtError);
-  assert.deepEqual([unresolved.code, unresolved.index, unresolved.segment],
-    ['ConstraintUnresolved', 4, 7]);
-  assert.equal(unresolved.message, 'geocdt: polyline 4 segment 7: stuck');
+  const located = statusError('InternalError', 'polyline 4 segment 7: stuck', 4, 7);
+  assert.ok(located instanceof GeocdtError);
+  assert.deepEqual([located.code, located.index, located.segment], ['InternalError', 4, 7]);
+  assert.equal(located.message, 'geocdt: polyline 4 segment 7: stuck');
   const internal = statusError('InternalError', 'walk found no way on', -1, -1);
   assert.ok(internal instanceof GeocdtError);
   assert.equal(internal.index, undefined);
@@ -55,7 +54,7 @@ test('core statuses become named errors with their code, index and segment', () 
 
 test('errors keep their class, code, index and segment through postMessage', () => {
   const errors = [
-    statusError('ConstraintUnresolved', 'stuck', 4, 7),
+    statusError('InternalError', 'stuck', 4, 7),
     caught(() => triangulate({ points: [0, 0, NaN, 1] })),
     caught(() => triangulate({ points: 'x' })),
   ];

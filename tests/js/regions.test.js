@@ -154,31 +154,37 @@ test('Triangulation.results({ polygons }) labels the polylines inserted so far',
   t.dispose();
 });
 
-test('z: input points keep their heights, crossings interpolate along a constraint', () => {
-  // Two lines crossing at (5, 0): 1/2 along the first (heights 0 .. 10) and 1/4 along the
-  // second (heights 100 .. 200); a free point with no height; a point given twice, first
-  // without a height.
+test('values: input points keep their values, crossings interpolate along constraints', () => {
+  // Two lines crossing at (5, 0): 1/2 along the first (values 0 .. 10) and 1/4 along the
+  // second (values 100 .. 200); a free point with no value; a point given twice, first
+  // without a value.
   const points = [20, 20, 1, 1, 1, 1];
   const polylines = [[0, 0, 10, 0], [5, -1, 5, 3]];
-  const z = [NaN, NaN, 7, 0, 10, 100, 200];
-  const r = triangulate({ points, polylines, z });
-  assert.ok(r.z instanceof Float64Array);
-  assert.equal(r.z.length, r.points.length / 2);
+  const values = [NaN, NaN, 7, 0, 10, 100, 200];
+  const r = triangulate({ points, polylines, values });
+  assert.ok(r.values instanceof Float64Array);
+  assert.equal(r.values.length, r.points.length / 2);
   const id = r.inputToVertex;
-  assert.ok(Number.isNaN(r.z[id[0]]));
-  assert.equal(r.z[id[1]], 7);
-  assert.deepEqual([3, 4, 5, 6].map((i) => r.z[id[i]]), [0, 10, 100, 200]);
+  assert.ok(Number.isNaN(r.values[id[0]]));
+  assert.equal(r.values[id[1]], 7);
+  assert.deepEqual([3, 4, 5, 6].map((i) => r.values[id[i]]), [0, 10, 100, 200]);
   const crossing = r.points.length / 2 - 1;
   assert.deepEqual([r.points[2 * crossing], r.points[2 * crossing + 1]], [5, 0]);
-  assert.ok([5, 125].includes(r.z[crossing]), `crossing height ${r.z[crossing]}`);
-  // Where both constraints agree, the crossing has their height whichever it follows.
-  const level = triangulate({ polylines, z: [0, 10, 3, 11] });
-  assert.equal(level.z[level.points.length / 2 - 1], 5);
-  assert.equal(triangulate({ points }).z, undefined, 'no z, no heights');
-  throwsWith(() => triangulate({ points, z: [1, 2] }), RangeError,
-    /z has 2 heights for 3 input points/);
-  throwsWith(() => triangulate({ points, z: [1, '2', 3] }), TypeError, /z\[1\] must be a number/);
-  throwsWith(() => triangulate({ points, z: 'high' }), TypeError, /z must be a Float64Array/);
+  // The constraints disagree (5 against 125): the mean, counted.
+  assert.equal(r.values[crossing], 65);
+  assert.equal(r.stats.valueDisagreements, 1);
+  // Where both constraints agree, the crossing has their value.
+  const level = triangulate({ polylines, values: [0, 10, 3, 11] });
+  assert.equal(level.values[level.points.length / 2 - 1], 5);
+  assert.equal(level.stats.valueDisagreements, 0);
+  assert.equal(triangulate({ points }).values, undefined, 'no values, none out');
+  throwsWith(() => triangulate({ points, values: [1, 2] }), RangeError,
+    /values has 2 numbers for 3 points/);
+  throwsWith(() => triangulate({ points, values: [1, '2', 3] }), TypeError,
+    /values\[1\] must be a number/);
+  throwsWith(() => triangulate({ points, values: 'high' }), TypeError,
+    /values must be a Float64Array/);
+  throwsWith(() => triangulate({ points, z: [1, 2, 3] }), TypeError, /input.z is now input.values/);
 });
 
 // Features with ids and properties: an island in a lake in an island (three features), a
@@ -264,17 +270,18 @@ test('triangulateGeoJSON: each triangle has its feature\'s id and properties', (
 test('triangulateGeoJSON keeps z: input positions and crossings', () => {
   const arrays = triangulateGeoJSON(features, { output: 'arrays' });
   const input = geoJSONToInput(features, { flat: true });
-  assert.equal(input.z.length, arrays.inputToVertex.length);
+  assert.equal(input.values.length, arrays.inputToVertex.length);
   // Each input position's vertex has its height (the first given, when several share it).
   const first = new Map();
-  for (let i = 0; i < input.z.length; i++) {
+  for (let i = 0; i < input.values.length; i++) {
     const v = arrays.inputToVertex[i];
-    if (!first.has(v) && !Number.isNaN(input.z[i])) first.set(v, input.z[i]);
+    if (!first.has(v) && !Number.isNaN(input.values[i])) first.set(v, input.values[i]);
   }
-  for (const [v, z] of first) assert.equal(arrays.z[v], z, `vertex ${v}`);
-  assert.equal(arrays.z[arrays.inputToVertex[0]], 999, 'the point of the GeometryCollection');
+  for (const [v, z] of first) assert.equal(arrays.values[v], z, `vertex ${v}`);
+  assert.equal(arrays.values[arrays.inputToVertex[0]], 999, 'the point of the GeometryCollection');
   // The road (heights 1 .. 2 over x from -20 to 130) crosses the island at x = 0 and x = 100,
-  // where the island's edges (heights 100 + 2k) cross it too: either constraint's height.
+  // where the island's edges (heights 100 + 2k) may cross it too: the road's height, or the
+  // mean of both.
   for (const x of [0, 100]) {
     let v = -1;
     for (let i = 0; i < arrays.points.length / 2; i++) {
@@ -282,8 +289,9 @@ test('triangulateGeoJSON keeps z: input positions and crossings', () => {
     }
     assert.ok(v >= 0, `a vertex at (${x}, 10)`);
     const alongRoad = 1 + (x + 20) / 150;
-    assert.ok(Math.abs(arrays.z[v] - alongRoad) < 1e-12 || arrays.z[v] >= 100
-      || Number.isNaN(arrays.z[v]), `crossing at ${x}: ${arrays.z[v]}`);
+    const z = arrays.values[v];
+    assert.ok(Math.abs(z - alongRoad) < 1e-12 || z >= (alongRoad + 100) / 2 - 1e-9
+      || Number.isNaN(z), `crossing at ${x}: ${z}`);
   }
   // GeoJSON positions: [x, y, z] where the vertex has a height, [x, y] where it has none (the
   // lake's corners were given without one).

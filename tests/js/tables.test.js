@@ -70,6 +70,7 @@ test('location kinds, keep, fill rules and phases', () => {
   assert.deepEqual(sorted(names(wasm.FillRule)), sorted(union('FillRule')));
   assert.deepEqual(names(wasm.Phase), union('ProgressPhase'));
   assert.deepEqual(names(wasm.Phase), PHASES);
+  assert.deepEqual(sorted(names(wasm.Interpolation)), sorted(union('Interpolation')));
   for (const phase of PHASES) assert.ok(api.includes(`'${phase}'`), `web/API.md names ${phase}`);
   const t = new Triangulation();
   assert.equal(t.locate(0, 0).kind, names(wasm.LocationKind)[0]);
@@ -77,22 +78,25 @@ test('location kinds, keep, fill rules and phases', () => {
 });
 
 test('output fields: the module\'s arrays are the result\'s, typed and documented', () => {
-  const fields = names(wasm.Field);
+  const fields = wasm.fieldNames();
   const elementTypes = names(wasm.ElementType);
-  // Every optional array asked for: inside flags, region labels (polygons) and heights (z).
+  // Every optional array asked for: inside flags, region labels (polygons) and values.
   const r = triangulate({
-    points: [0, 0, 1, 0, 0, 1], polylines: [[0, 0, 1, 1]], polygons: [0, 1], z: [1, 2, 3, 4, 5],
+    points: [0, 0, 1, 0, 0, 1], polylines: [[0, 0, 1, 1]], polygons: [0, 1],
+    values: [1, 2, 3, 4, 5],
   }, { insideFlags: true });
+  // Not in results: the incremental insertions' and rasterize()'s return values.
+  const returned = ['vertexIds', 'raster'];
   const documented = [...members('Mesh'), ...members('TriangulateResult')];
   for (const field of fields) {
-    if (field === 'vertexIds') continue;  // the incremental insertions' return value
-    const Type = globalThis[`${elementTypes[wasm.elementType(wasm.Field[field]).value]}Array`];
+    if (returned.includes(field)) continue;
+    const Type = globalThis[`${elementTypes[wasm.elementType(fields.indexOf(field)).value]}Array`];
     assert.ok(r[field] instanceof Type, `${field} is a ${Type.name}`);
     assert.ok(documented.includes(field), `web/index.d.ts documents ${field}`);
     assert.ok(api.includes(`| \`${field}\` | ${Type.name} |`), `web/API.md's table has ${field}`);
   }
   assert.deepEqual(sorted(Object.keys(r).filter((k) => k !== 'stats')),
-    sorted(fields.filter((f) => f !== 'vertexIds')));
+    sorted(fields.filter((f) => !returned.includes(f))));
 });
 
 test('statistics: the module\'s counters are the documented ones', () => {

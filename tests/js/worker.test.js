@@ -95,13 +95,13 @@ test('memoryUsage and GeoJSON through the worker', async () => {
 test('regions, heights and GeoJSON features through the worker', async () => {
   const polylines = [[0, 0, 10, 0, 10, 10, 0, 10, 0, 0], [2, 2, 2, 8, 8, 8, 8, 2, 2, 2],
     [-1, 5, 11, 5]];
-  const z = Array.from({ length: 2 + 5 + 5 + 2 }, (_, i) => i);
-  const input = { points: [-5, -5, 15, 15], polylines, polygons: [0, 1, 2], z };
+  const values = Array.from({ length: 2 + 5 + 5 + 2 }, (_, i) => i);
+  const input = { points: [-5, -5, 15, 15], polylines, polygons: [0, 1, 2], values };
   const here = triangulate(input);
   const there = await worker.triangulate(
-    { ...input, polygons: new Uint32Array([0, 1, 2]), z: Float64Array.from(z) });
+    { ...input, polygons: new Uint32Array([0, 1, 2]), values: Float64Array.from(values) });
   assert.deepEqual(there.regions, here.regions);
-  assert.deepEqual(there.z, here.z);
+  assert.deepEqual(there.values, here.values);
   assert.ok(there.regions.includes(0) && there.regions.includes(1));
 
   const square = [[0, 0, 1], [4, 0, 2], [4, 4, 3], [0, 4, 4], [0, 0, 1]];

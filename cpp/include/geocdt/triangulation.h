@@ -71,6 +71,15 @@ struct Options {
   // move a constraint farther than the guarantee allows, the constraints are snap-rounded
   // instead (README, "How it works").
   SnapRounding snapRounding = SnapRounding::WhenNeeded;
+  // Values carried per point (elevation, depth, any attribute): the insertions' `values`
+  // arguments hold this many per point. Nothing is stored until values are first given.
+  std::uint32_t valuesPerPoint = 1;
+};
+
+// How interpolate() and rasterize() blend vertex values.
+enum class Interpolation : std::uint8_t {
+  Linear,   // barycentric in the triangle that holds the query
+  Natural,  // Sibson's natural neighbour: areas the query's Voronoi cell steals
 };
 
 enum class FillRule : std::uint8_t { EvenOdd, NonZero };
@@ -92,11 +101,7 @@ struct MeshOptions {
   // floating point, fewer triangles, so nesting always gives the innermost polygon.
   bool regions = false;
   std::vector<std::int32_t> polylinePolygons;
-  bool vertexSegments = false;  // fill Mesh::vertexSegments
 };
-
-// Mesh::vertexSegments of a vertex on no constrained edge.
-inline constexpr std::uint32_t kNoSegment = 0xFFFFFFFFu;
 
 // What a triangulation hands out: plain arrays the caller owns.
 struct Mesh {
@@ -112,13 +117,31 @@ struct Mesh {
   std::vector<std::uint8_t> inside;  // 1 per triangle when MeshOptions::insideFlags
   // 1 per triangle when MeshOptions::regions: its polygon (see there), or -1 outside every one.
   std::vector<std::int32_t> regions;
-  // 1 per vertex when MeshOptions::vertexSegments: for a vertex on a constrained edge, an
-  // input segment through it (up to the rounding of crossing points), as the index p of its
-  // first point among the points of every polyline inserted (numbered across polylines in
-  // insertion order; the segment runs from p to p + 1); kNoSegment for other vertices and
-  // past 2^32 - 2 polyline points. Where constraints cross, it names one of them: with heights
-  // at the input points, a crossing's height can be interpolated along that segment.
-  std::vector<std::uint32_t> vertexSegments;
+  // Values, once an insertion gave some: Options::valuesPerPoint numbers per vertex. A vertex
+  // that input points became has the values of the first of them whose values are not all NaN
+  // (the others' values are dropped, those that differ counted in Stats::valueDuplicates);
+  // NaN for points inserted without values.
+  // A derived vertex (a constraint crossing; a Steiner point) has the weighted sum of its
+  // parents' values, as listed below.
+  std::vector<double> values;
+  // Derivation of values, filled with `values`: vertex derivedVertices[i] is the sum over j in
+  // [derivedOffsets[i], derivedOffsets[i + 1]) of derivedWeights[j] times the values of vertex
+  // derivedParents[j] (parents are vertices with values of their own or derived earlier in
+  // this list). A crossing's parents are the ends of each input segment through it, weighted
+  // by its projection on the segment, the segments averaged. Vertices listed nowhere here
+  // have values of their own.
+  std::vector<std::uint32_t> derivedVertices;
+  std::vector<std::uint32_t> derivedOffsets;
+  std::vector<std::uint32_t> derivedParents;
+  std::vector<double> derivedWeights;
+};
+
+// A raster for rasterize(): width x height pixels over [minX, maxX] x [minY, maxY]. Pixel
+// (column i, row j) samples the centre x = minX + (i + 0.5) * (maxX - minX) / width,
+// y = maxY - (j + 0.5) * (maxY - minY) / height: row 0 is the top (north-up, as images).
+struct RasterGrid {
+  double minX = 0, minY = 0, maxX = 0, maxY = 0;
+  std::uint32_t width = 0, height = 0;
 };
 
 // A polyline given as 2 * count doubles. A ring repeats its first point at its end.
@@ -158,6 +181,12 @@ struct Stats {
   // Times the constraints were snap-rounded because computed crossings would have broken
   // the guarantee (tangles of vertices a few ulps apart; never on real data so far).
   std::uint64_t snapRoundings = 0;
+  // Input points equal to a vertex that already had values (not all NaN), carrying other
+  // values: dropped, the first values stay.
+  std::uint64_t valueDuplicates = 0;
+  // Derived vertices whose input segments give values that differ (beyond 1e-9 of the
+  // largest magnitude involved): they get the mean. Counted over the current mesh.
+  std::uint64_t valueDisagreements = 0;
 };
 
 // One Triangulation serves one thread at a time. Its const functions leave the mesh as it
@@ -173,7 +202,9 @@ class Triangulation {
   // Inserts count points (xy holds 2*count doubles). vertexIds, if not null, receives
   // count ids: the vertex each point became or equals. Nothing is inserted when any
   // coordinate is invalid; the status names the first offending point.
-  Status insertPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds = nullptr);
+  // values, if not null, holds Options::valuesPerPoint numbers per point (any, NaN included).
+  Status insertPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds = nullptr,
+                      const double* values = nullptr);
   // The same for points in a buffer the triangulation takes over (count = xy.size() / 2).
   // While the triangulation has no vertices, the buffer becomes its coordinate array as it
   // is, with no copy: a caller that writes the points into a std::vector (the WebAssembly
@@ -181,16 +212,20 @@ class Triangulation {
   // mesh's points are that memory, duplicates closed up. Otherwise the points are appended
   // and the buffer is freed. On invalid coordinates nothing is inserted and xy is left as it
   // was.
-  Status insertPoints(std::vector<double>&& xy, std::uint32_t* vertexIds = nullptr);
+  Status insertPoints(std::vector<double>&& xy, std::uint32_t* vertexIds = nullptr,
+                      const double* values = nullptr);
 
   // Inserts a polyline as constraints: its points, then its segments, split where they
   // cross earlier constraints. Its polyline id is polylineCount() before the call.
   // vertexIds, if not null, receives count ids. Nothing is inserted on invalid input.
-  Status insertPolyline(const double* xy, std::size_t count, std::uint32_t* vertexIds = nullptr);
+  // values: as insertPoints', one set per point of the polyline.
+  Status insertPolyline(const double* xy, std::size_t count, std::uint32_t* vertexIds = nullptr,
+                        const double* values = nullptr);
   // Inserts several polylines at once: all their points in one spatially sorted batch,
-  // then their segments in order. vertexIds receives one id per point of every polyline.
+  // then their segments in order. vertexIds receives one id per point of every polyline, and
+  // values holds one set per point of every polyline.
   Status insertPolylines(const PolylineView* polylines, std::size_t count,
-                         std::uint32_t* vertexIds = nullptr);
+                         std::uint32_t* vertexIds = nullptr, const double* values = nullptr);
   std::size_t polylineCount() const;
 
   // Where (x, y) lies in the triangulation. const because the mesh does not change; but the
@@ -199,6 +234,23 @@ class Triangulation {
   // triangle numbering. Hence the one-thread-at-a-time rule above. A NaN or infinite x or y
   // answers Kind::Invalid (Empty means only that there are no triangles yet).
   Location locate(double x, double y) const;
+
+  // Values at count query points xy into out (valuesPerPoint() numbers per query): NaN
+  // outside the convex hull, at NaN or infinite coordinates, and everywhere while no values
+  // were given. Linear is exact at vertices and continuous everywhere; Natural too, and has
+  // linear precision (it reproduces linear functions). Natural neighbours are those the query
+  // sees without crossing a constrained edge; on a constrained or hull edge both methods
+  // interpolate linearly along the edge, and Natural gives Linear's value where the query sees
+  // such an edge at an angle within 1e-6 of a straight one (digits would cancel there). Queries are
+  // located from the grid's cell hint, which each query moves to the triangle found: consecutive
+  // nearby queries walk a step or two. Not a pure read, like locate().
+  void interpolate(const double* xy, std::size_t count, Interpolation method, double* out) const;
+  // The surface sampled on a raster: out receives width * height * valuesPerPoint() floats,
+  // row by row from the top, NaN outside the convex hull. Linear scan-converts triangle by
+  // triangle; Natural interpolates each pixel (queries in row order).
+  Status rasterize(const RasterGrid& grid, Interpolation method, float* out) const;
+  std::uint32_t valuesPerPoint() const;
+  bool hasValues() const;  // whether any insertion gave values
 
   std::size_t vertexCount() const;
   std::size_t triangleCount() const;  // real triangles
@@ -212,8 +264,12 @@ class Triangulation {
   // insertPoints without checking the coordinates again (insertPolylines checked them);
   // with adopt, the points are *adopt's, taken over.
   Status insertCheckedPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds,
-                             std::vector<double>* adopt = nullptr);
-  struct State;
+                             const double* values, std::vector<double>* adopt = nullptr);
+
+ public:
+  struct State;  // internal: named here so that the implementation's helpers can take it
+
+ private:
   std::unique_ptr<State> state_;
 };
 
@@ -222,13 +278,16 @@ class Triangulation {
 Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex = nullptr);
+                   std::vector<std::uint32_t>* inputToVertex = nullptr,
+                   const double* values = nullptr);
+// values, if not null: Options::valuesPerPoint numbers per input point, in the same order.
 // The same with the points in a buffer it takes over (see insertPoints(std::vector&&)):
 // out.points is then that buffer's memory unless polylines add points. On invalid
 // coordinates xy is left as it was.
 Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex = nullptr);
+                   std::vector<std::uint32_t>* inputToVertex = nullptr,
+                   const double* values = nullptr);
 
 }  // namespace geocdt

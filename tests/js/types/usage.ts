@@ -32,13 +32,13 @@ async function main(): Promise<void> {
   const ids: Uint32Array = arrays.inputToVertex;
   const regionOf: Int32Array | undefined = arrays.regions;
   const featureOf = arrays.regionFeatures[0]?.properties;
-  const heights: Float64Array | undefined = arrays.z;
+  const heights: Float64Array | undefined = arrays.values;
 
   // Polygons and heights in the array API, polygons in results().
   const labelled = triangulate({
     polylines: { coords: new Float64Array(8), offsets: [0, 4] }, polygons: [0, 1],
-    z: new Float32Array(4),
-  });
+    values: new Float32Array(4),
+  }, { valuesPerPoint: 1 });
   const regions: Int32Array | undefined = labelled.regions;
   const perRing: Float64Array[] = geoJSONToInput({ type: 'Point', coordinates: [0, 0] }).polylines;
   const offsets: Uint32Array =
@@ -46,6 +46,12 @@ async function main(): Promise<void> {
 
   const tri = new Triangulation();
   const v: Uint32Array = tri.insertPoints([0, 0, 1, 0, 0, 1], { onProgress: () => {} });
+  const surface = new Triangulation({ valuesPerPoint: 2 });
+  surface.insertPoints([0, 0, 1, 0, 0, 1], new Float64Array(6), { onProgress: () => {} });
+  surface.insertPolyline([0, 0, 1, 1], [1, 2, 3, 4]);
+  const at: Float64Array = surface.interpolate([0.2, 0.2], { method: 'natural' });
+  const grid: Float32Array = surface.rasterize({ bbox: [0, 0, 1, 1], width: 4, height: 4 });
+  const perPoint: number = surface.valuesPerPoint;
   const meshRegions: Int32Array | undefined = tri.results({ polygons: new Uint32Array([0, 0]) })
     .regions;
   const where = tri.locate(0.2, 0.2);
@@ -70,6 +76,10 @@ async function main(): Promise<void> {
   const rt = worker.createTriangulation();
   await rt.insertPoints(new Int32Array(6), { onProgress: () => {} });
   const located = await rt.locate(0, 0);
+  const rv = worker.createTriangulation({ valuesPerPoint: 1 });
+  await rv.insertPoints([0, 0, 1, 0, 0, 1], [1, 2, 3], { transfer: false });
+  const remoteAt: Float64Array = await rv.interpolate([0.1, 0.1], { method: 'linear' });
+  const remoteGrid: Float32Array = await rv.rasterize({ bbox: [0, 0, 1, 1], width: 2, height: 2 });
   worker.terminate();
 
   // @ts-expect-error keep takes 'all' or 'inside'
@@ -86,9 +96,12 @@ async function main(): Promise<void> {
   triangulate({ polygons: new Float64Array(2) });
   // @ts-expect-error no such phase
   const phase: ProgressEvent['phase'] = 'walk';
+  // @ts-expect-error no such method
+  surface.interpolate([0, 0], { method: 'cubic' });
 
   void [t, h, inside, ms, flat, phases, firstRing, ids, perRing, offsets, v, kind, flips, heap,
-    remote, located, phase, id, name, regionOf, featureOf, heights, regions, meshRegions];
+    remote, located, phase, id, name, regionOf, featureOf, heights, regions, meshRegions, at,
+    grid, perPoint, remoteAt, remoteGrid];
 }
 
 main();
