@@ -692,11 +692,14 @@ TEST(Constraints, SegmentEndsAreNotLocated) {
       for (int i = 0; i < 6; ++i) {
         const double t = i / 6.0, dx = corners[side + 1][0] - corners[side][0],
                      dy = corners[side + 1][1] - corners[side][1];
-        ring.push_back(x0 + corners[side][0] + t * dx + 0.6 * jitter());
-        ring.push_back(y0 + corners[side][1] + t * dy + 0.6 * jitter());
+        ring.push_back(x0 + corners[side][0] + t * dx + 0.2 * jitter());
+        ring.push_back(y0 + corners[side][1] + t * dy + 0.2 * jitter());
       }
     ring.push_back(ring[0]);
     ring.push_back(ring[1]);
+    // First a diagonal between opposite corners, which the ring's triangles cross: it is
+    // flipped in, which moves half-edges out of the ring's vertices before the ring comes.
+    rings.push_back({ring[0], ring[1], ring[24], ring[25]});
     rings.push_back(ring);
   }
   std::vector<double> all;
