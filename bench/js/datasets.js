@@ -80,3 +80,35 @@ export function indexedGraph(polylines) {
   }
   return { xy: Float64Array.from(xy), edges };
 }
+
+// A .gpl file ("GPL1", uint32 P, uint32 count[P], float64 x, y of every point) as the flat
+// polylines form: { coords, offsets }.
+export function readGpl(path) {
+  const bytes = readFileSync(path);
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const lines = view.getUint32(4, true);
+  const offsets = new Uint32Array(lines + 1);
+  for (let i = 0; i < lines; i++) offsets[i + 1] = offsets[i] + view.getUint32(8 + 4 * i, true);
+  const start = 8 + 4 * lines;
+  const coords = new Float64Array(2 * offsets[lines]);
+  new Uint8Array(coords.buffer).set(bytes.subarray(start, start + coords.byteLength));
+  return { coords, offsets };
+}
+
+// The same polylines as one Float64Array each: the form every version accepts.
+export function asArrays({ coords, offsets }) {
+  const polylines = new Array(offsets.length - 1);
+  for (let i = 0; i + 1 < offsets.length; i++) {
+    polylines[i] = coords.slice(2 * offsets[i], 2 * offsets[i + 1]);
+  }
+  return polylines;
+}
+
+// Polylines (one array each) as the flat form { coords, offsets }.
+export function flatPolylines(polylines) {
+  const offsets = new Uint32Array(polylines.length + 1);
+  polylines.forEach((l, i) => { offsets[i + 1] = offsets[i] + l.length / 2; });
+  const coords = new Float64Array(2 * offsets[polylines.length]);
+  polylines.forEach((l, i) => coords.set(l, 2 * offsets[i]));
+  return { coords, offsets };
+}

@@ -5,11 +5,11 @@
 //   node --expose-gc bench/js/glue.js [--data DIR] [--baseline PACKAGE_DIR] [--rounds N]
 // DIR holds gshhg_region.gpl (scripts/datasets/gshhg_region.sh makes it); without it only the
 // uniform points run.
-import { existsSync, readFileSync } from 'node:fs';
+import { existsSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { median } from './timing.js';
-import { uniform } from './datasets.js';
+import { asArrays, readGpl, uniform } from './datasets.js';
 
 function option(name, fallback) {
   const i = process.argv.indexOf(name);
@@ -19,29 +19,6 @@ function option(name, fallback) {
 const rounds = Number(option('--rounds', 5));
 const data = option('--data', null);
 const baseline = option('--baseline', null);
-
-// A .gpl file ("GPL1", uint32 P, uint32 count[P], float64 x, y of every point) as the flat
-// polylines form: { coords, offsets }.
-function readGpl(path) {
-  const bytes = readFileSync(path);
-  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-  const lines = view.getUint32(4, true);
-  const offsets = new Uint32Array(lines + 1);
-  for (let i = 0; i < lines; i++) offsets[i + 1] = offsets[i] + view.getUint32(8 + 4 * i, true);
-  const start = 8 + 4 * lines;
-  const coords = new Float64Array(2 * offsets[lines]);
-  new Uint8Array(coords.buffer).set(bytes.subarray(start, start + coords.byteLength));
-  return { coords, offsets };
-}
-
-// The same polylines as one Float64Array each: the form every version accepts.
-function asArrays({ coords, offsets }) {
-  const polylines = new Array(offsets.length - 1);
-  for (let i = 0; i + 1 < offsets.length; i++) {
-    polylines[i] = coords.slice(2 * offsets[i], 2 * offsets[i + 1]);
-  }
-  return polylines;
-}
 
 async function load(folder) {
   const api = await import(pathToFileURL(join(folder, 'web/index.node.js')).href);

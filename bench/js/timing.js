@@ -1,10 +1,20 @@
 // Same-process timing: contenders run in alternation, round after round, so that machine noise
 // and JIT warm-up fall on all of them alike; each reports its median.
+import { existsSync, readFileSync } from 'node:fs';
 
 export function median(values) {
   const s = [...values].sort((a, b) => a - b);
   const m = s.length >> 1;
   return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
+}
+
+// The main thread's CPU time in ms, from Linux's scheduler statistics (ns on a CPU), or
+// undefined elsewhere: unlike the wall clock, blind to the time spent waiting for a core on a
+// loaded machine (and to other threads' work).
+export function threadCpuClock() {
+  const file = `/proc/self/task/${process.pid}/schedstat`;
+  if (!existsSync(file)) return undefined;
+  return () => Number(readFileSync(file, 'utf8').split(' ')[0]) / 1e6;
 }
 
 function collect() {

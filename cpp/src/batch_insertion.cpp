@@ -44,11 +44,14 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   const bool sorted = isLarge(count, base) && options_.start == LocateStart::LastTriangle;
   xy.resize(2 * (static_cast<std::size_t>(base) + count));
   double* p = xy.data() + 2 * static_cast<std::size_t>(base);
-  for (std::uint32_t k = 0; k < count; ++k) {
-    const std::size_t i = sorted ? order[k] : k;
-    p[2 * static_cast<std::size_t>(k)] = input[2 * i];
-    p[2 * static_cast<std::size_t>(k) + 1] = input[2 * i + 1];
-  }
+  const std::uint32_t* o = order.data();
+  forChunks(0, count, [=](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = sorted ? o[k] : k;
+      p[2 * k] = input[2 * i];
+      p[2 * k + 1] = input[2 * i + 1];
+    }
+  });
   return insertStored(count, ids, std::move(order), sorted ? input : nullptr);
 }
 
@@ -77,14 +80,8 @@ Status Delaunay::insertStored(std::uint32_t count, std::uint32_t* ids,
   const double* p = xy.data() + 2 * static_cast<std::size_t>(base);
   const bool large = isLarge(count, base);
   if (grid_.empty()) {
-    double minX = p[0], maxX = minX, minY = p[1], maxY = minY;
-    for (std::uint32_t i = 1; i < count; ++i) {
-      minX = std::min(minX, p[2 * i]);
-      maxX = std::max(maxX, p[2 * i]);
-      minY = std::min(minY, p[2 * i + 1]);
-      maxY = std::max(maxY, p[2 * i + 1]);
-    }
-    grid_.reset(minX, minY, maxX, maxY, options_.gridDensity);
+    const Bounds b = boundsOf(p, count);
+    grid_.reset(b.minX, b.minY, b.maxX, b.maxY, options_.gridDensity);
   }
   // In a large batch ids[i] stays kGhost while point i is vertex base + i of its own, and
   // names the vertex it equals when it is a duplicate; a small batch sets every entry.
@@ -187,11 +184,16 @@ void Delaunay::restoreInputOrder(std::uint32_t count, const double* input) {
   const auto rename = [&](std::uint32_t& v) {
     if (v >= base && v != kGhost) v = base + order[v - base];
   };
-  for (std::uint32_t& v : topo.tri) rename(v);
+  std::uint32_t* tri = topo.tri.data();
+  forChunks(0, topo.tri.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) rename(tri[i]);
+  });
   for (std::uint32_t& v : pending_) rename(v);
   for (std::array<std::uint32_t, 3>& split : splits_)
     for (std::uint32_t& v : split) rename(v);
-  for (std::uint32_t i = 0; i < count; ++i) rename(batch_.ids[i]);
+  forChunks(0, count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) rename(batch_.ids[i]);
+  });
   std::copy(input, input + 2 * static_cast<std::size_t>(count),
             xy.begin() + 2 * static_cast<std::ptrdiff_t>(base));
   batch_.order = nullptr;
@@ -252,8 +254,11 @@ std::vector<std::uint32_t> Delaunay::compactLargeBatch(std::uint32_t base, std::
   }
   for (std::uint32_t& id : first)
     if (id != kGhost) id += base;
-  for (std::uint32_t& v : topo.tri)
-    if (v >= base && v != kGhost) v = first[v - base];
+  std::uint32_t* tri = topo.tri.data();
+  forChunks(0, topo.tri.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (tri[i] >= base && tri[i] != kGhost) tri[i] = first[tri[i] - base];
+  });
   for (std::uint32_t& v : pending_)
     if (v >= base) v = first[v - base];
   xy.resize(2 * (static_cast<std::size_t>(base) + next));

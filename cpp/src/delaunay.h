@@ -6,17 +6,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "chunks.h"
 #include "constraint_store.h"
 #include "geocdt/status.h"
 #include "geocdt/triangulation.h"
 #include "point_grid.h"
 #include "topology.h"
-
-#if defined(__GNUC__)
-#define GEOCDT_NOINLINE __attribute__((noinline))
-#else
-#define GEOCDT_NOINLINE
-#endif
 
 namespace geocdt {
 
@@ -100,7 +95,7 @@ class Delaunay {
   // of them up front.
   Status insertRun(const std::vector<std::uint32_t>& order, std::array<std::uint32_t, 3> skip);
   template <bool kConstrained>
-  std::uint32_t insertRunVertex(std::uint32_t v);
+  GEOCDT_NOINLINE std::uint32_t insertRunVertex(std::uint32_t v);
   static constexpr std::uint32_t kRunBlock = 64;
   // Reads the x of points base + order[0..n) and returns their sum: loads that bring the
   // points into the cache while nothing waits for them.

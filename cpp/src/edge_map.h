@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "chunks.h"
+
 namespace geocdt {
 
 // Where a key's probe starts: a multiplicative hash, for keys with no useful order.
@@ -97,8 +99,10 @@ class EdgeMap {
     values.swap(values_);
     mask_ = keys_.size() - 1;
     size_ = 0;
-    for (std::size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] != kEmpty) insert(keys[i], values[i]);
+    forChunks(0, keys.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (keys[i] != kEmpty) insert(keys[i], values[i]);
+    });
   }
 
   std::vector<std::uint64_t> keys_;

@@ -12,6 +12,12 @@ namespace geocdt {
 std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
                                           InsertionOrder order);
 
+// The bounding box of count >= 1 points xy.
+struct Bounds {
+  double minX, minY, maxX, maxY;
+};
+Bounds boundsOf(const double* xy, std::uint32_t count);
+
 // Position along a Hilbert curve of 2^bits x 2^bits cells, x and y in [0, 2^bits).
 std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y, int bits);
 

@@ -2,6 +2,7 @@
 // outside triangles too, with provenance, inside flags and region labels.
 #include <algorithm>
 
+#include "chunks.h"
 #include "region_labels.h"
 #include "triangulation_state.h"
 
@@ -17,32 +18,61 @@ std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill) {
   std::vector<std::int32_t> winding(slots, 0);
   std::vector<std::uint8_t> seen(slots, 0);
   std::vector<std::int32_t> queue;
-  for (std::int32_t t = 0; t < slots; ++t)
-    if (topo.isGhost(t)) {
-      seen[t] = 1;
-      queue.push_back(t);
-    }
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const std::int32_t t = queue[head];
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t e = 3 * t + k, next = topo.adj[e] / 3;
-      if (seen[next]) continue;
-      seen[next] = 1;
-      winding[next] = winding[t];
-      if (topo.fixed[e])
-        winding[next] += d.constraints.windingAcross(topo.tri[e], topo.tri[nextEdge(e)]);
-      queue.push_back(next);
-    }
+  forChunks(0, slots, [&](std::size_t begin, std::size_t end) {
+    for (auto t = static_cast<std::int32_t>(begin); t < static_cast<std::int32_t>(end); ++t)
+      if (topo.isGhost(t)) {
+        seen[t] = 1;
+        queue.push_back(t);
+      }
+  });
+  // The queue grows as it is read: chunks up to its length at the time.
+  for (std::size_t head = 0; head < queue.size();) {
+    const std::size_t end = queue.size();
+    forChunks(head, end, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) {
+        const std::int32_t t = queue[i];
+        for (int k = 0; k < 3; ++k) {
+          const std::int32_t e = 3 * t + k, next = topo.adj[e] / 3;
+          if (seen[next]) continue;
+          seen[next] = 1;
+          winding[next] = winding[t];
+          if (topo.fixed[e])
+            winding[next] += d.constraints.windingAcross(topo.tri[e], topo.tri[nextEdge(e)]);
+          queue.push_back(next);
+        }
+      }
+    });
+    head = end;
   }
   std::vector<std::uint8_t> inside(slots, 0);
-  for (std::int32_t t = 0; t < slots; ++t)
-    inside[t] = fill == FillRule::EvenOdd ? (winding[t] & 1) != 0 : winding[t] != 0;
+  forChunks(0, slots, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      inside[t] = fill == FillRule::EvenOdd ? (winding[t] & 1) != 0 : winding[t] != 0;
+  });
   return inside;
 }
 
 }  // namespace
 
 namespace {
+
+// The first slot from `from` on that is not kept (or kept.size()), and the last kept one
+// from `from` down (or -1): scans of long runs, each call short enough to be optimised for the
+// next one (see chunks.h).
+GEOCDT_NOINLINE std::int32_t firstDropped(const std::vector<std::uint8_t>& kept,
+                                          std::int32_t from) {
+  const auto slots = static_cast<std::int32_t>(kept.size());
+  const std::int32_t stop = from + static_cast<std::int32_t>(std::min<std::size_t>(
+                                       kChunk, static_cast<std::size_t>(slots - from)));
+  while (from < stop && kept[from]) ++from;
+  return from;
+}
+
+GEOCDT_NOINLINE std::int32_t lastKept(const std::vector<std::uint8_t>& kept, std::int32_t from) {
+  const std::int32_t stop = std::max(from - static_cast<std::int32_t>(kChunk), -1);
+  while (from > stop && !kept[from]) --from;
+  return from;
+}
 
 // The order in which compaction fills holes: the last kept slot moves into the first
 // dropped one, until they meet. Calls move(from, to) for each move; returns the count kept.
@@ -51,22 +81,24 @@ std::int32_t planCompaction(std::vector<std::uint8_t>& kept, Move move) {
   const std::int32_t slots = static_cast<std::int32_t>(kept.size());
   std::int32_t front = 0, back = slots - 1;
   for (;;) {
-    while (front < slots && kept[front]) ++front;
-    while (back >= 0 && !kept[back]) --back;
+    while (front < slots && kept[front]) front = firstDropped(kept, front);
+    while (back >= 0 && !kept[back]) back = lastKept(kept, back);
     if (front >= back) break;
     move(back, front);
     kept[front] = 1;
     kept[back] = 0;
   }
   std::int32_t count = 0;
-  while (count < slots && kept[count]) ++count;
+  while (count < slots && kept[count]) count = firstDropped(kept, count);
   return count;
 }
 
 std::vector<std::uint8_t> realSlots(const std::vector<std::uint32_t>& tri) {
   std::vector<std::uint8_t> kept(tri.size() / 3);
-  for (std::size_t t = 0; t < kept.size(); ++t)
-    kept[t] = tri[3 * t] != kGhost && tri[3 * t + 1] != kGhost && tri[3 * t + 2] != kGhost;
+  forChunks(0, kept.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      kept[t] = tri[3 * t] != kGhost && tri[3 * t + 1] != kGhost && tri[3 * t + 2] != kGhost;
+  });
   return kept;
 }
 
@@ -79,13 +111,15 @@ void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t
   std::vector<std::uint32_t>& tri = m.triangles;
   std::vector<std::int32_t>& adj = m.halfedges;
   std::vector<std::uint8_t>& fixed = m.constrained;
-  for (std::size_t t = 0; t < kept.size(); ++t) {
-    if (!kept[t]) continue;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::int32_t twin = adj[3 * t + k];
-      if (twin >= 0 && !kept[twin / 3]) adj[3 * t + k] = -1;
+  forChunks(0, kept.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) {
+      if (!kept[t]) continue;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::int32_t twin = adj[3 * t + k];
+        if (twin >= 0 && !kept[twin / 3]) adj[3 * t + k] = -1;
+      }
     }
-  }
+  });
   const std::int32_t count = planCompaction(kept, [&](std::int32_t back, std::int32_t front) {
     for (int k = 0; k < 3; ++k) {
       const std::int32_t from = 3 * back + k, to = 3 * front + k;
@@ -107,18 +141,20 @@ void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t
 void addProvenance(const Delaunay& d, Mesh& m) {
   if (d.constraints.edgeCount() == 0) return;
   m.sourceOffsets.push_back(0);
-  for (std::size_t e = 0; e < m.triangles.size(); ++e) {
-    if (!m.constrained[e]) continue;
-    const std::int32_t twin = m.halfedges[e];
-    if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;  // listed from its twin
-    const std::uint32_t u = m.triangles[e];
-    const std::uint32_t v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
-    const EdgeSource* src = d.constraints.find(u, v);
-    if (!src) continue;
-    m.constraintEdges.push_back(static_cast<std::uint32_t>(e));
-    d.constraints.forEachPolyline(*src, [&m](std::uint32_t p) { m.sources.push_back(p); });
-    m.sourceOffsets.push_back(static_cast<std::uint32_t>(m.sources.size()));
-  }
+  forChunks(0, m.triangles.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      if (!m.constrained[e]) continue;
+      const std::int32_t twin = m.halfedges[e];
+      if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;  // listed from its twin
+      const std::uint32_t u = m.triangles[e];
+      const std::uint32_t v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
+      const EdgeSource* src = d.constraints.find(u, v);
+      if (!src) continue;
+      m.constraintEdges.push_back(static_cast<std::uint32_t>(e));
+      d.constraints.forEachPolyline(*src, [&m](std::uint32_t p) { m.sources.push_back(p); });
+      m.sourceOffsets.push_back(static_cast<std::uint32_t>(m.sources.size()));
+    }
+  });
 }
 
 }  // namespace
@@ -155,7 +191,9 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
   }
   std::vector<std::uint8_t> kept = realSlots(m.triangles);
   if (options.keep == Keep::Inside)
-    for (std::size_t t = 0; t < kept.size(); ++t) kept[t] &= inside[t];
+    forChunks(0, kept.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t) kept[t] &= inside[t];
+    });
   progress(Phase::Export, 1, 3);
   compact(m, classify ? &inside : nullptr, options.regions ? &regions : nullptr, std::move(kept));
   if (options.insideFlags) m.inside = std::move(inside);

@@ -53,9 +53,16 @@ test('status codes: every failure the core reports is a documented error code', 
   const codes = names(wasm.StatusCode);
   assert.equal(codes[0], 'Ok');
   const documented = union('GeocdtErrorCode');
+  // No longer returned (tangles are snap-rounded); kept so that the codes after it keep their
+  // numbers, and named in web/API.md's history.
+  const retired = ['ConstraintUnresolved'];
   for (const code of codes.slice(1)) {
     const inputMistake = code === 'InvalidArgument' || code === 'InvalidCoordinate';
-    if (!inputMistake) assert.ok(documented.includes(code), `${code} in GeocdtErrorCode`);
+    if (retired.includes(code)) {
+      assert.ok(!documented.includes(code), `${code} is no longer in GeocdtErrorCode`);
+    } else if (!inputMistake) {
+      assert.ok(documented.includes(code), `${code} in GeocdtErrorCode`);
+    }
     assert.ok(api.includes(`'${code}'`), `web/API.md names ${code}`);
   }
   for (const code of documented) assert.ok(api.includes(`'${code}'`), `web/API.md names ${code}`);
