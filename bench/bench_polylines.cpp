@@ -1,6 +1,6 @@
 // One triangulate() call on a .gpl dataset, for profilers and for checking that a change
 // leaves the output as it was: valgrind --tool=callgrind counts its instructions, and the
-// hash covers every array of the mesh with inside flags, regions and vertex segments.
+// hash covers every array of the mesh with inside flags and regions.
 // Usage: bench_polylines FILE.gpl [constrained|points] [hash]
 //   constrained (default): the polylines as constraints, in one call;
 //   points: the same points with no constraints, for the cost of the constraints alone.

@@ -8,6 +8,7 @@ import { init, triangulate } from 'geocdt';
 import { alternate, median } from './timing.js';
 import { countryArcs, countryRings, indexedGraph, pointCount, uniform } from './datasets.js';
 import * as peers from './peers.js';
+import { constraintCost, constraintDatasets } from './constraint-cost.js';
 
 const quick = process.argv.includes('--quick');
 const here = (file) => fileURLToPath(new URL(file, import.meta.url));
@@ -131,5 +132,11 @@ for (const scale of quick ? ['110m'] : ['110m', '50m', '10m']) {
   const peersHere = { cdt2d: scale === '110m', triangleWasm: scale !== '10m' };
   await constrained(countryRings(scale), peersHere);
   await constrained(countryArcs(scale), peersHere);
+}
+if (!quick) {
+  console.log('## What constraints cost: constrained vs the same points alone\n');
+  const dataDir = fileURLToPath(new URL('../../build/data', import.meta.url));
+  for (const { name, polylines } of constraintDatasets(dataDir))
+    await constraintCost({ triangulate }, name, polylines, 5);
 }
 triangle.close();

@@ -3,7 +3,9 @@
 // one process (medians). Natural Earth 10m comes from world-atlas; the GSHHG regions from .gpl
 // files (scripts/datasets/all.sh), when they are there.
 //   node --expose-gc bench/js/constraint-cost.js [--data DIR] [--rounds N] [--module PATH]
-// --module imports another build of the package (its web/index.node.js), to compare builds.
+//                                               [--compare PATH]
+// --module imports another build of the package (its web/index.node.js) instead of this one;
+// --compare runs another build's constrained triangulation alongside, in the same rounds.
 import { existsSync, readFileSync } from 'node:fs';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { alternate } from './timing.js';
@@ -50,16 +52,22 @@ function describeStats(r) {
     `core ${ms(s.coreMilliseconds)} ms`;
 }
 
-// Rows for one dataset: constrained, points alone, delaunator, with the ratios.
-export async function constraintCost(geocdt, name, polylines, rounds) {
+// Rows for one dataset: constrained, points alone, delaunator, with the ratios; with other,
+// another build's constrained run too.
+export async function constraintCost(geocdt, name, polylines, rounds, other) {
   const xy = flatPoints(polylines);
-  const results = await alternate([
+  const contenders = [
     { name: 'geocdt, constrained', run: () => geocdt.triangulate({ polylines }),
       describe: describeStats },
     { name: 'geocdt, points alone', run: () => geocdt.triangulate({ points: xy }),
       describe: describeStats },
     { name: 'delaunator, points', run: () => peers.delaunator(xy), describe: peers.summary },
-  ], rounds);
+  ];
+  if (other) {
+    contenders.push({ name: 'other build, constrained',
+      run: () => other.triangulate({ polylines }), describe: describeStats });
+  }
+  const results = await alternate(contenders, rounds);
   const base = results['delaunator, points']?.ms;
   const alone = results['geocdt, points alone']?.ms;
   const rows = Object.entries(results).map(([who, r]) => r.error
@@ -96,7 +104,10 @@ if (process.argv[1] === fileURLToPath(import.meta.url)) {
   const module = option('--module', null);
   const geocdt = await import(module ? pathToFileURL(module).href : 'geocdt');
   await geocdt.init();
+  const compare = option('--compare', null);
+  const other = compare ? await import(pathToFileURL(compare).href) : null;
+  await other?.init();
   console.log('## What constraints cost: constrained vs the same points alone\n');
   for (const { name, polylines } of constraintDatasets(dataDir))
-    await constraintCost(geocdt, name, polylines, rounds);
+    await constraintCost(geocdt, name, polylines, rounds, other);
 }

@@ -1,13 +1,22 @@
-// Run as a child process: a fresh module, one triangulation of n uniform points, and the
-// wasm heap it took (the allocator's peak, and the memory size) per point.
-import { init, memoryUsage, triangulate } from 'geocdt';
-import { uniform } from './datasets.js';
+// Run as a child process: a fresh module, one triangulation, and the wasm heap it took (the
+// allocator's peak, and the memory size) per input point.
+//   node bench/js/heap-peak.js [N | rings | arcs] [module path]
+// N uniform points (default 1M), or the Natural Earth 10m country rings or arcs as
+// constraints; the module path imports another build (its web/index.node.js).
+import { pathToFileURL } from 'node:url';
+import { countryArcs, countryRings, pointCount, uniform } from './datasets.js';
 
-const n = Number(process.argv[2] ?? 1_000_000);
+const what = process.argv[2] ?? '1000000';
+const module = process.argv[3];
+const { init, memoryUsage, triangulate } =
+  await import(module ? pathToFileURL(module).href : 'geocdt');
 await init();
+const input = what === 'rings' ? { polylines: countryRings('10m').polylines }
+  : what === 'arcs' ? { polylines: countryArcs('10m').polylines }
+    : { points: uniform(Number(what)) };
+const n = input.points ? input.points.length / 2 : pointCount(input.polylines);
 const before = memoryUsage();
-const xy = uniform(n);
-triangulate({ points: xy });
+triangulate(input);
 const after = memoryUsage();
 console.log(JSON.stringify({
   n,

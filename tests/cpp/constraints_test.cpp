@@ -735,6 +735,53 @@ TEST(Constraints, ConstraintsBeforeAnyTriangle) {
   EXPECT_EQ(constrained, 2);  // the segment 0-1 crossing the diagonal 2-3
 }
 
+TEST(Constraints, SegmentEndsAreNotLocated) {
+  // 400 disjoint jittered rings, each visited far from the one before: a segment starts from
+  // its first vertex's half-edges, found without a walk, so the constrained call locates
+  // only its points (and would locate each crossing it adds; these rings have none).
+  Polylines rings;
+  std::uint64_t seed = 12345;
+  const auto jitter = [&seed] {
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(seed >> 11) * 0x1p-53 - 0.5;
+  };
+  for (int k = 0; k < 400; ++k) {
+    const int cell = (k * 167) % 400;  // consecutive rings lie far apart
+    const double x0 = 10.0 * (cell % 20), y0 = 10.0 * (cell / 20);
+    std::vector<double> ring;
+    const double corners[5][2] = {{0, 0}, {6, 0}, {6, 6}, {0, 6}, {0, 0}};
+    for (int side = 0; side < 4; ++side)
+      for (int i = 0; i < 6; ++i) {
+        const double t = i / 6.0, dx = corners[side + 1][0] - corners[side][0],
+                     dy = corners[side + 1][1] - corners[side][1];
+        ring.push_back(x0 + corners[side][0] + t * dx + 0.2 * jitter());
+        ring.push_back(y0 + corners[side][1] + t * dy + 0.2 * jitter());
+      }
+    ring.push_back(ring[0]);
+    ring.push_back(ring[1]);
+    // First a diagonal between opposite corners, which the ring's triangles cross: it is
+    // flipped in, which moves half-edges out of the ring's vertices before the ring comes.
+    rings.push_back({ring[0], ring[1], ring[24], ring[25]});
+    rings.push_back(ring);
+  }
+  std::vector<double> all;
+  std::vector<PolylineView> views;
+  for (const auto& r : rings) {
+    all.insert(all.end(), r.begin(), r.end());
+    views.push_back({r.data(), r.size() / 2});
+  }
+  Triangulation points, constrained;
+  ASSERT_TRUE(points.insertPoints(all.data(), all.size() / 2).ok());
+  std::vector<std::uint32_t> ids(all.size() / 2);
+  ASSERT_TRUE(constrained.insertPolylines(views.data(), views.size(), ids.data()).ok());
+  EXPECT_EQ(constrained.stats().crossings, 0u);
+  EXPECT_GT(constrained.stats().flips, points.stats().flips);  // segments were flipped in
+  EXPECT_EQ(constrained.stats().locates, points.stats().locates);
+  const Mesh m = constrained.mesh();
+  EXPECT_EQ(testing::checkTriangulation(m), "");
+  EXPECT_EQ(testing::checkConstraints(m, rings, ids), "");
+}
+
 TEST(Constraints, InvalidPolylineNamesItAndInsertsNothing) {
   Triangulation t;
   const std::vector<double> good = {0, 0, 1, 0, 1, 1}, bad = {0, 0, NAN, 1};
