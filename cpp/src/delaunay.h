@@ -30,6 +30,13 @@ struct Hit {
   std::int32_t edge = -1;
 };
 
+// A vertex added by refinement, and where it was placed (Mesh::steiner says how).
+struct SteinerVertex {
+  std::uint32_t vertex;
+  std::uint32_t parents[3];
+  double weights[3];
+};
+
 class Delaunay {
  public:
   explicit Delaunay(const Options& options) : options_(options) {}
@@ -38,6 +45,7 @@ class Delaunay {
   Topology topo;
   ConstraintStore constraints;
   Stats stats;
+  std::vector<SteinerVertex> steiner;
 
   bool built() const { return built_; }
   const Options& options() const { return options_; }
@@ -55,6 +63,9 @@ class Delaunay {
   // Returns kGhost when location failed (an internal error, described by lastError()).
   std::uint32_t insertVertex(std::uint32_t v);
 
+  // Inserts vertex v (already in xy) where h, a location of it, says; as insertVertex.
+  std::uint32_t insertLocated(const Hit& h, std::uint32_t v);
+
   // Locates (x, y), starting from the grid's cell or from the last triangle.
   Hit locate(double x, double y, bool fromGrid);
   // Splits the edge of half-edge e at vertex v lying strictly inside it and restores
@@ -68,6 +79,7 @@ class Delaunay {
 
   bool isLocallyDelaunay(std::int32_t e) const;  // e's quad, whatever the fixed flags
   void setLastTriangle(std::int32_t t) { last_ = t; }
+  std::int32_t lastTriangle() const { return last_; }  // one around the last vertex inserted
   const Status& lastError() const { return error_; }
   // The grid's side as sized for the points inserted (a stale grid is resized on first use).
   std::uint32_t gridSize() const {

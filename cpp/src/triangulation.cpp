@@ -4,6 +4,7 @@
 #include <new>
 #include <string>
 
+#include "refinement.h"
 #include "triangulation_state.h"
 
 namespace geocdt {
@@ -138,6 +139,19 @@ Location Triangulation::locate(double x, double y) const {
   return loc;
 }
 
+Status Triangulation::refine(const RefineOptions& options) {
+  const std::string error = refineOptionsError(options);
+  if (!error.empty()) return {StatusCode::InvalidArgument, error};
+  State& state = *state_;
+  state.slotMapValid = false;
+  try {
+    return refineTriangulation(state.delaunay, options);
+  } catch (const std::bad_alloc&) {
+    state.delaunay.clear();
+    return outOfMemory();
+  }
+}
+
 Mesh Triangulation::mesh(const MeshOptions& options) const {
   return exportMesh(state_->delaunay, options, false);
 }
@@ -157,7 +171,7 @@ template <typename InsertPoints>
 Status triangulateWith(std::size_t count, InsertPoints insertPoints, const PolylineView* polylines,
                        std::size_t polylineCount, const Options& options,
                        const MeshOptions& meshOptions, Mesh& out,
-                       std::vector<std::uint32_t>* inputToVertex) {
+                       std::vector<std::uint32_t>* inputToVertex, const RefineOptions* refine) {
   if (polylineCount > 0 && polylines == nullptr)
     return {StatusCode::InvalidArgument, "null polylines with a count"};
   Triangulation t(options);
@@ -170,6 +184,12 @@ Status triangulateWith(std::size_t count, InsertPoints insertPoints, const Polyl
     s = insertPoints(t, ids.data());
     if (s.ok() && polylineCount > 0)
       s = t.insertPolylines(polylines, polylineCount, ids.data() + count);
+    if (s.ok() && refine) {
+      RefineOptions r = *refine;
+      r.keep = meshOptions.keep;
+      r.fill = meshOptions.fill;
+      s = t.refine(r);
+    }
     if (!s.ok()) return s;
     out = t.release(meshOptions);
   } catch (const std::bad_alloc&) {
@@ -184,20 +204,20 @@ Status triangulateWith(std::size_t count, InsertPoints insertPoints, const Polyl
 Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex) {
+                   std::vector<std::uint32_t>* inputToVertex, const RefineOptions* refine) {
   return triangulateWith(
       count, [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(xy, count, ids); },
-      polylines, polylineCount, options, meshOptions, out, inputToVertex);
+      polylines, polylineCount, options, meshOptions, out, inputToVertex, refine);
 }
 
 Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex) {
+                   std::vector<std::uint32_t>* inputToVertex, const RefineOptions* refine) {
   return triangulateWith(
       xy.size() / 2,
       [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(std::move(xy), ids); },
-      polylines, polylineCount, options, meshOptions, out, inputToVertex);
+      polylines, polylineCount, options, meshOptions, out, inputToVertex, refine);
 }
 
 }  // namespace geocdt

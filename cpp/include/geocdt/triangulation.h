@@ -97,6 +97,28 @@ struct MeshOptions {
 
 // Mesh::vertexSegments of a vertex on no constrained edge.
 inline constexpr std::uint32_t kNoSegment = 0xFFFFFFFFu;
+// Mesh::steinerParents' third entry for a Steiner vertex placed on an edge.
+inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
+
+// Delaunay refinement (Triangulation::refine): Steiner vertices are added until every
+// triangle of the refined part has all its angles at least minAngle and its area at most
+// maxArea, except where the input does not allow it (see Stats::refineSkipped).
+struct RefineOptions {
+  // Degrees, in [0, 60). Up to about 20.7 degrees refinement provably ends; beyond it the
+  // cap ends it when nothing else does (30 degrees ends on real data, 34 mostly does).
+  double minAngle = 20.0;
+  double maxArea = 0.0;  // squared input units; 0 (or infinity) for no bound
+  // A hard cap on the Steiner vertices one call adds. 0 means the default: none up to
+  // kProvenAngle, else 16 per vertex before refinement, plus 4 per maxArea of the domain's
+  // area, plus 1024.
+  std::uint64_t maxSteinerPoints = 0;
+  Keep keep = Keep::All;  // Inside refines only the inside of the rings; outside stays as is
+  FillRule fill = FillRule::EvenOdd;
+};
+
+// The largest minimum angle for which Delaunay refinement with concentric shells is proven
+// to end (Shewchuk): arcsin(1 / (2 sqrt 2)), about 20.7 degrees.
+inline constexpr double kProvenAngle = 20.7;
 
 // What a triangulation hands out: plain arrays the caller owns.
 struct Mesh {
@@ -119,6 +141,15 @@ struct Mesh {
   // past 2^32 - 2 polyline points. Where constraints cross, it names one of them: with heights
   // at the input points, a crossing's height can be interpolated along that segment.
   std::vector<std::uint32_t> vertexSegments;
+  // Refinement's Steiner vertices, in the order they were added: steiner[i] is a vertex id,
+  // placed between the vertices steinerParents[3i..3i+2] (a triangle's corners, or an edge's
+  // two ends and kNoVertex) with barycentric weights steinerWeights[3i..3i+2] (summing to 1;
+  // 0 for kNoVertex) at the time it was added: a value given at the parents interpolates
+  // linearly to it. A Steiner vertex on a constrained edge splits it; both halves keep the
+  // edge's provenance.
+  std::vector<std::uint32_t> steiner;
+  std::vector<std::uint32_t> steinerParents;
+  std::vector<double> steinerWeights;
 };
 
 // A polyline given as 2 * count doubles. A ring repeats its first point at its end.
@@ -158,6 +189,13 @@ struct Stats {
   // Times the constraints were snap-rounded because computed crossings would have broken
   // the guarantee (tangles of vertices a few ulps apart; never on real data so far).
   std::uint64_t snapRoundings = 0;
+  // Refinement, over all refine() calls: Steiner vertices added; triangles of the refined
+  // part that miss minAngle or maxArea when the last call ended (where two input segments
+  // meet at a smaller angle than minAngle, the triangles in that corner keep it; when the cap
+  // ended the call, what was left too); and whether the cap ended the last call.
+  std::uint64_t steinerPoints = 0;
+  std::uint64_t refineSkipped = 0;
+  bool refineCapped = false;
 };
 
 // One Triangulation serves one thread at a time. Its const functions leave the mesh as it
@@ -205,6 +243,10 @@ class Triangulation {
   const std::vector<double>& points() const;
   Stats stats() const;  // a copy of the counters as they are now
 
+  // Delaunay refinement of what is there now (see RefineOptions). Later insertions leave the
+  // quality to a later call. An invalid option is reported, and nothing changes.
+  Status refine(const RefineOptions& options = {});
+
   Mesh mesh(const MeshOptions& options = {}) const;  // a compact copy, no ghost triangles
   Mesh release(const MeshOptions& options = {});     // the same; leaves this empty
 
@@ -218,17 +260,20 @@ class Triangulation {
 };
 
 // One shot: points first, then polylines in order. inputToVertex, if not null, gets one
-// vertex id per input point (points first, then each polyline's points).
+// vertex id per input point (points first, then each polyline's points). With refine, the
+// triangulation is refined before export (its keep and fill are meshOptions').
 Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex = nullptr);
+                   std::vector<std::uint32_t>* inputToVertex = nullptr,
+                   const RefineOptions* refine = nullptr);
 // The same with the points in a buffer it takes over (see insertPoints(std::vector&&)):
 // out.points is then that buffer's memory unless polylines add points. On invalid
 // coordinates xy is left as it was.
 Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex = nullptr);
+                   std::vector<std::uint32_t>* inputToVertex = nullptr,
+                   const RefineOptions* refine = nullptr);
 
 }  // namespace geocdt
