@@ -75,6 +75,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("insertPolyline", &Incremental::insertPolyline)
       .function("mesh", &Incremental::mesh)
       .function("stats", &Incremental::stats)
+      .function("refine", &Incremental::refine)
       .function("locate", &Incremental::locate)
       .function("vertexCount", &Incremental::vertexCount)
       .function("triangleCount", &Incremental::triangleCount)

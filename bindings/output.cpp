@@ -30,10 +30,11 @@ struct StatField {
 #field, [](const Stats& s) { return static_cast<double>(s.field); } \
   }
 constexpr StatField kStatFields[] = {
-    GEOCDT_STAT(inserted), GEOCDT_STAT(duplicates), GEOCDT_STAT(walkSteps),
-    GEOCDT_STAT(locates),  GEOCDT_STAT(flips),      GEOCDT_STAT(walkFallbacks),
-    GEOCDT_STAT(gridSize), GEOCDT_STAT(crossings),  GEOCDT_STAT(polylines),
-    GEOCDT_STAT(segments),
+    GEOCDT_STAT(inserted),      GEOCDT_STAT(duplicates),    GEOCDT_STAT(walkSteps),
+    GEOCDT_STAT(locates),       GEOCDT_STAT(flips),         GEOCDT_STAT(walkFallbacks),
+    GEOCDT_STAT(gridSize),      GEOCDT_STAT(crossings),     GEOCDT_STAT(polylines),
+    GEOCDT_STAT(segments),      GEOCDT_STAT(snapRoundings), GEOCDT_STAT(steinerPoints),
+    GEOCDT_STAT(refineSkipped), GEOCDT_STAT(refineCapped),
 };
 #undef GEOCDT_STAT
 // Every counter takes 8 bytes (gridSize with its padding): a counter added to Stats and not
@@ -57,6 +58,9 @@ const char* jsName(Field field) {
     case Field::Z: return "z";
     case Field::InputToVertex: return "inputToVertex";
     case Field::VertexIds: return "vertexIds";
+    case Field::Steiner: return "steiner";
+    case Field::SteinerParents: return "steinerParents";
+    case Field::SteinerWeights: return "steinerWeights";
   }
   return nullptr;
 }
@@ -74,7 +78,8 @@ const char* jsName(ElementType type) {
 ElementType elementType(Field field) {
   switch (field) {
     case Field::Points:
-    case Field::Z: return ElementType::Float64;
+    case Field::Z:
+    case Field::SteinerWeights: return ElementType::Float64;
     case Field::Halfedges:
     case Field::Regions: return ElementType::Int32;
     case Field::Constrained:
@@ -84,7 +89,9 @@ ElementType elementType(Field field) {
     case Field::SourceOffsets:
     case Field::Sources:
     case Field::InputToVertex:
-    case Field::VertexIds: return ElementType::Uint32;
+    case Field::VertexIds:
+    case Field::Steiner:
+    case Field::SteinerParents: return ElementType::Uint32;
   }
   return ElementType::Uint32;
 }
@@ -103,6 +110,9 @@ std::uintptr_t Output::data(Field field) const {
     case Field::Z: return address(z);
     case Field::InputToVertex: return address(inputToVertex);
     case Field::VertexIds: return address(vertexIds);
+    case Field::Steiner: return address(mesh.steiner);
+    case Field::SteinerParents: return address(mesh.steinerParents);
+    case Field::SteinerWeights: return address(mesh.steinerWeights);
   }
   return 0;
 }
@@ -121,6 +131,9 @@ std::size_t Output::size(Field field) const {
     case Field::Z: return z.size();
     case Field::InputToVertex: return inputToVertex.size();
     case Field::VertexIds: return vertexIds.size();
+    case Field::Steiner: return mesh.steiner.size();
+    case Field::SteinerParents: return mesh.steinerParents.size();
+    case Field::SteinerWeights: return mesh.steinerWeights.size();
   }
   return 0;
 }

@@ -29,6 +29,9 @@ enum class Field : int {
   Z,
   InputToVertex,
   VertexIds,
+  Steiner,
+  SteinerParents,
+  SteinerWeights,
 };
 
 // Named after the JS typed array that holds such elements (Float64Array, ...).

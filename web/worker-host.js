@@ -38,6 +38,7 @@ export function createHost(api, post) {
     insertPolyline: (onProgress, id, xy) => live(id).insertPolyline(xy, { onProgress }),
     locate: (_, id, x, y) => live(id).locate(x, y),
     results: (onProgress, id, options) => live(id).results({ ...options, onProgress }),
+    refine: (_, id, options) => live(id).refine(options),
     stats: (_, id) => live(id).stats,
     counts: (_, id) => {
       const t = live(id);

@@ -3,8 +3,8 @@
 // transferred buffers, not copies.
 import type {
   Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, GeoJSONResult, Location, MemoryUsage,
-  Mesh, MeshOptions, ProgressOptions, ResultsOptions, TriangleFeatureCollection,
-  TriangulateInput, TriangulateResult,
+  Mesh, ProgressOptions, RefineOptions, ResultsOptions, TriangleFeatureCollection,
+  TriangulateInput, TriangulateOptions, TriangulateResult, Keep, FillRule,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -21,14 +21,14 @@ export class GeocdtWorker {
   /** Loads the wasm in the worker (every call does it if needed). */
   init(): Promise<void>;
   triangulate(
-    input: TriangulateInput, options?: MeshOptions & TransferOptions): Promise<TriangulateResult>;
+    input: TriangulateInput, options?: TriangulateOptions & TransferOptions): Promise<TriangulateResult>;
   /** The GeoJSON is read on the calling thread; the triangulation runs in the worker. */
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options?: MeshOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
+    options?: TriangulateOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options: MeshOptions & { output: 'arrays' }): Promise<GeoJSONResult>;
+    options: TriangulateOptions & { output: 'arrays' }): Promise<GeoJSONResult>;
   triangulateGeoJSON(
     geojson: GeoJSONInput,
     options?: GeoJSONOptions): Promise<TriangleFeatureCollection | GeoJSONResult>;
@@ -46,6 +46,7 @@ export class RemoteTriangulation {
     polyline: Coordinates, options?: TransferOptions & ProgressOptions): Promise<Uint32Array>;
   locate(x: number, y: number): Promise<Location>;
   results(options?: ResultsOptions): Promise<Mesh>;
+  refine(options?: RefineOptions & { keep?: Keep; fillRule?: FillRule }): Promise<CoreStats>;
   stats(): Promise<CoreStats>;
   counts(): Promise<{ vertexCount: number; triangleCount: number; polylineCount: number }>;
   dispose(): Promise<void>;

@@ -79,10 +79,11 @@ test('location kinds, keep, fill rules and phases', () => {
 test('output fields: the module\'s arrays are the result\'s, typed and documented', () => {
   const fields = names(wasm.Field);
   const elementTypes = names(wasm.ElementType);
-  // Every optional array asked for: inside flags, region labels (polygons) and heights (z).
+  // Every optional array asked for: inside flags, region labels (polygons), heights (z) and
+  // Steiner records (refine).
   const r = triangulate({
     points: [0, 0, 1, 0, 0, 1], polylines: [[0, 0, 1, 1]], polygons: [0, 1], z: [1, 2, 3, 4, 5],
-  }, { insideFlags: true });
+  }, { insideFlags: true, refine: { minAngle: 0 } });
   const documented = [...members('Mesh'), ...members('TriangulateResult')];
   for (const field of fields) {
     if (field === 'vertexIds') continue;  // the incremental insertions' return value
