@@ -90,7 +90,7 @@ export interface RefineOptions {
   maxArea?: number;
   /**
    * A hard cap on the Steiner vertices of the call; when it ends refinement,
-   * stats.refineCapped says so. Default: none up to 20.7 degrees, else 16 per vertex plus 4 per
+   * stats.refineCapped says so. Default: none up to 20.7 degrees, else 64 per vertex plus 4 per
    * maxArea of the refined area plus 1024.
    */
   maxSteinerPoints?: number;

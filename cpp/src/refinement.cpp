@@ -589,7 +589,7 @@ Status Refiner::run() {
     cap_ = std::numeric_limits<std::uint64_t>::max();
     if (minAngle_ > kProvenAngle) {
       const double byArea = std::isfinite(maxArea_) ? 4 * domainArea / maxArea_ : 0;
-      cap_ = 16 * static_cast<std::uint64_t>(d_.vertexCount()) + 1024 +
+      cap_ = 64 * static_cast<std::uint64_t>(d_.vertexCount()) + 1024 +
              static_cast<std::uint64_t>(std::min(byArea, 1e18));
     }
   }

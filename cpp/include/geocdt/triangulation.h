@@ -109,7 +109,7 @@ struct RefineOptions {
   double minAngle = 20.0;
   double maxArea = 0.0;  // squared input units; 0 (or infinity) for no bound
   // A hard cap on the Steiner vertices one call adds. 0 means the default: none up to
-  // kProvenAngle, else 16 per vertex before refinement, plus 4 per maxArea of the domain's
+  // kProvenAngle, else 64 per vertex before refinement, plus 4 per maxArea of the domain's
   // area, plus 1024.
   std::uint64_t maxSteinerPoints = 0;
   Keep keep = Keep::All;  // Inside refines only the inside of the rings; outside stays as is
