@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -58,6 +59,22 @@ struct Subsegment {
 };
 
 enum class Outcome { Done, Skipped, Retry, Failed };
+
+// The power of two 2^-e that scales the largest of the differences to magnitude ~1: scaled
+// by it (exactly), their products neither underflow nor overflow.
+int scaleExponent(std::initializer_list<double> differences) {
+  double size = 0;
+  for (const double d : differences) size = std::max(size, std::fabs(d));
+  return size > 0 ? std::ilogb(size) : 0;
+}
+
+// Where p projects on a -> b, as the fraction of the way from a, clamped to [0, 1].
+double projection(double ax, double ay, double bx, double by, double px, double py) {
+  const int e = scaleExponent({bx - ax, by - ay, px - ax, py - ay});
+  const double ex = std::ldexp(bx - ax, -e), ey = std::ldexp(by - ay, -e);
+  const double qx = std::ldexp(px - ax, -e), qy = std::ldexp(py - ay, -e);
+  return std::clamp((qx * ex + qy * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+}
 
 class Refiner {
  public:
@@ -169,8 +186,13 @@ void Refiner::queueSubsegment(std::int32_t e, bool forced) {
 
 void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
   const std::uint32_t a = topo_.tri[3 * t], b = topo_.tri[3 * t + 1], c = topo_.tri[3 * t + 2];
-  const double abx = x(b) - x(a), aby = y(b) - y(a), acx = x(c) - x(a), acy = y(c) - y(a);
-  const double bcx = x(c) - x(b), bcy = y(c) - y(b);
+  double abx = x(b) - x(a), aby = y(b) - y(a), acx = x(c) - x(a), acy = y(c) - y(a);
+  // In a frame scaled by a power of two (exactly) to the triangle's size, so that squares and
+  // their products neither overflow nor underflow at any coordinate magnitude.
+  const int e = scaleExponent({abx, aby, acx, acy});
+  abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e);
+  acx = std::ldexp(acx, -e), acy = std::ldexp(acy, -e);
+  const double bcx = acx - abx, bcy = acy - aby;
   const double lab = abx * abx + aby * aby, lac = acx * acx + acy * acy;
   const double lbc = bcx * bcx + bcy * bcy;
   const double cross = abx * acy - aby * acx;
@@ -179,7 +201,7 @@ void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
   const double shortest = std::min({lab, lac, lbc});
   const double product = lab * lac * lbc / shortest;
   sin2 = product > 0 ? cross * cross / product : 0;
-  area = 0.5 * std::fabs(cross);
+  area = std::ldexp(0.5 * std::fabs(cross), 2 * e);
 }
 
 void Refiner::checkTriangle(std::int32_t t) {
@@ -433,7 +455,9 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
     hullOf_[ConstraintStore::key(p, b)] = original;
   }
   const std::int32_t spoke = d_.splitEdge(e, p);
-  const double w = tb != ta ? std::clamp((t - ta) / (tb - ta), 0.0, 1.0) : 0.5;
+  // The weight from where the point landed, projected on the edge it split: accurate to the
+  // edge's length, where the segment's parameters are accurate to the segment's.
+  const double w = projection(x(a), y(a), x(b), y(b), px, py);
   record(p, a, b, kNoVertex, 1 - w, w, 0);
   afterInsert(spoke);
   // The point is near the edge, not on it: the spokes to the apexes may need flips that a
@@ -544,8 +568,14 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   std::uint32_t parent[3] = {topo_.tri[f], topo_.tri[f + 1], topo_.tri[f + 2]};
   double weight[3] = {0, 0, 0};
   if (h.kind == Hit::Kind::Face) {
+    const double ox = x(parent[0]), oy = y(parent[0]);
+    const int e = scaleExponent({x(parent[1]) - ox, y(parent[1]) - oy, x(parent[2]) - ox,
+                                 y(parent[2]) - oy, cx - ox, cy - oy});
     const auto area2 = [&](std::uint32_t a, std::uint32_t b) {
-      return (x(b) - x(a)) * (cy - y(a)) - (y(b) - y(a)) * (cx - x(a));
+      const double ax = std::ldexp(x(a) - ox, -e), ay = std::ldexp(y(a) - oy, -e);
+      const double bx = std::ldexp(x(b) - ox, -e), by = std::ldexp(y(b) - oy, -e);
+      const double qx = std::ldexp(cx - ox, -e), qy = std::ldexp(cy - oy, -e);
+      return (bx - ax) * (qy - ay) - (by - ay) * (qx - ax);
     };
     const double w0 = area2(parent[1], parent[2]), w1 = area2(parent[2], parent[0]);
     const double w2 = area2(parent[0], parent[1]), sum = w0 + w1 + w2;
@@ -556,8 +586,7 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
     parent[0] = topo_.tri[h.edge];
     parent[1] = topo_.tri[nextEdge(h.edge)];
     parent[2] = kNoVertex;
-    const double ex = x(parent[1]) - x(parent[0]), ey = y(parent[1]) - y(parent[0]);
-    const double w = ((cx - x(parent[0])) * ex + (cy - y(parent[0])) * ey) / (ex * ex + ey * ey);
+    const double w = projection(x(parent[0]), y(parent[0]), x(parent[1]), y(parent[1]), cx, cy);
     weight[0] = 1 - w;
     weight[1] = w;
   }

@@ -24,10 +24,16 @@ void corners(const Mesh& m, std::size_t t, double (&x)[3], double (&y)[3]) {
 double smallestAngle(const Mesh& m, std::size_t t) {
   double x[3], y[3];
   corners(m, t, x, y);
+  // Differences scaled by a power of two to magnitude ~1: subnormal ones would underflow.
+  double size = 0;
+  for (int k = 1; k < 3; ++k)
+    size = std::max({size, std::fabs(x[k] - x[0]), std::fabs(y[k] - y[0])});
+  const int e = size > 0 ? std::ilogb(size) : 0;
   double smallest = 180;
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const double ux = x[i] - x[k], uy = y[i] - y[k], vx = x[j] - x[k], vy = y[j] - y[k];
+    const double ux = std::ldexp(x[i] - x[k], -e), uy = std::ldexp(y[i] - y[k], -e);
+    const double vx = std::ldexp(x[j] - x[k], -e), vy = std::ldexp(y[j] - y[k], -e);
     const double angle = std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
     smallest = std::min(smallest, angle * 180 / kPi);
   }
