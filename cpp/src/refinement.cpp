@@ -582,6 +582,31 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
     weight[0] = w0 / sum;
     weight[1] = w1 / sum;
     weight[2] = w2 / sum;
+    // In a sliver the areas cancel: where they miss the point, it lies next to one of the
+    // edges (numerically on it), and the edge's ends with its projection place it better.
+    double spread = 0;
+    const double wx =
+        weight[0] * x(parent[0]) + weight[1] * x(parent[1]) + weight[2] * x(parent[2]);
+    const double wy =
+        weight[0] * y(parent[0]) + weight[1] * y(parent[1]) + weight[2] * y(parent[2]);
+    const double missed = std::max(std::fabs(wx - cx), std::fabs(wy - cy));
+    for (int k = 0; k < 3; ++k)
+      spread = std::max({spread, std::fabs(x(parent[k]) - cx), std::fabs(y(parent[k]) - cy)});
+    if (!(missed <= 1e-12 * spread)) {
+      double best = INFINITY;
+      const std::uint32_t corners[3] = {parent[0], parent[1], parent[2]};
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = corners[k], b = corners[(k + 1) % 3];
+        const double w = projection(x(a), y(a), x(b), y(b), cx, cy);
+        const double dx = (1 - w) * x(a) + w * x(b) - cx, dy = (1 - w) * y(a) + w * y(b) - cy;
+        const double d = std::max(std::fabs(dx), std::fabs(dy));
+        if (d < best) {
+          best = d;
+          parent[0] = a, parent[1] = b, parent[2] = kNoVertex;
+          weight[0] = 1 - w, weight[1] = w, weight[2] = 0;
+        }
+      }
+    }
   } else {
     parent[0] = topo_.tri[h.edge];
     parent[1] = topo_.tri[nextEdge(h.edge)];

@@ -85,6 +85,23 @@ std::string checkSteinerRecords(const Mesh& m, std::size_t firstSteiner) {
                          std::fabs(m.points[2 * p + 1] - m.points[2 * v + 1])});
     }
     if (std::fabs(sum - 1) > 1e-9) return where.str() + "weights do not sum to 1";
+    if (m.steinerParents[3 * i + 2] == kNoVertex) {
+      // On an edge: the weights project it on the edge. (It lies within the chains' bound of
+      // its input segment, which checkConstraints checks, not necessarily near the edge's
+      // line: with coordinates of very different magnitudes the bound can exceed the edge.)
+      const std::uint32_t a = m.steinerParents[3 * i], b = m.steinerParents[3 * i + 1];
+      const double ax = m.points[2 * a], ay = m.points[2 * a + 1];
+      double ex = m.points[2 * b] - ax, ey = m.points[2 * b + 1] - ay;
+      double px = m.points[2 * v] - ax, py = m.points[2 * v + 1] - ay;
+      const int e = std::ilogb(
+          std::max({std::fabs(ex), std::fabs(ey), std::fabs(px), std::fabs(py), 0x1p-1074}));
+      ex = std::ldexp(ex, -e), ey = std::ldexp(ey, -e), px = std::ldexp(px, -e);
+      py = std::ldexp(py, -e);
+      const double w = std::clamp((px * ex + py * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+      if (std::fabs(w - m.steinerWeights[3 * i + 1]) > 1e-9)
+        return where.str() + "weights are not its projection on its edge";
+      continue;
+    }
     const double error =
         std::max(std::fabs(x - m.points[2 * v]), std::fabs(y - m.points[2 * v + 1]));
     if (error > 1e-9 * spread + 0x1p-48 * magnitude) {
