@@ -48,8 +48,8 @@ double smallestAngle(const double (&x)[3], const double (&y)[3]) {
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     const double ux = x[i] - x[k], uy = y[i] - y[k], vx = x[j] - x[k], vy = y[j] - y[k];
-    smallest = std::min(smallest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) *
-                                      180 / kPi);
+    smallest =
+        std::min(smallest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / kPi);
   }
   return smallest;
 }
@@ -93,8 +93,9 @@ Run runGeocdt(const geocdt::testing::PolylineSet& set, double minAngle) {
 }
 
 // Parity of input segments on each constrained edge, flooded from the infinite face.
-void markDomain(Cdt& cdt, const std::map<std::pair<Cdt::Vertex_handle, Cdt::Vertex_handle>,
-                                         int>& multiplicity) {
+void markDomain(
+    Cdt& cdt,
+    const std::map<std::pair<Cdt::Vertex_handle, Cdt::Vertex_handle>, int>& multiplicity) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(false);
   std::map<Cdt::Face_handle, int> level;
   std::queue<Cdt::Face_handle> queue;
@@ -193,9 +194,10 @@ int main(int argc, char** argv) {
     c = runCgal(set, angle);
     theirs.push_back(c.seconds);
   }
-  std::printf("| engine | min angle | refine s (median of %d) | Steiner points | inside triangles | "
-              "worst angle | below min angle |\n| --- | --- | --- | --- | --- | --- | --- |\n",
-              runs);
+  std::printf(
+      "| engine | min angle | refine s (median of %d) | Steiner points | inside triangles | "
+      "worst angle | below min angle |\n| --- | --- | --- | --- | --- | --- | --- |\n",
+      runs);
   std::printf("| geocdt | %g | %.3f | %zu | %zu | %.2f | %zu |\n", angle, median(ours), g.steiner,
               g.inside, g.worst, g.bad);
   std::printf("| CGAL Delaunay_mesher_2 | %g | %.3f | %zu | %zu | %.2f | %zu |\n", angle,

@@ -217,8 +217,7 @@ struct Bound {
 
 // -1, 0 or 1 as a/b compares with c/d.
 int compareBounds(const Bound& a, const Bound& b) {
-  return compare(product(a.numerator, b.denominator),
-                 product(b.numerator, a.denominator));
+  return compare(product(a.numerator, b.denominator), product(b.numerator, a.denominator));
 }
 
 }  // namespace
@@ -315,8 +314,7 @@ bool withinDistance(const InputSegment& s, double x, double y, int e) {
   const Number r2 = product(r, r);
   const Number dot = sum(product(wx, dx), product(wy, dy));
   const Number length2 = sum(product(dx, dx), product(dy, dy));
-  if (detail::sign(dot) <= 0)
-    return compare(sum(product(wx, wx), product(wy, wy)), r2) <= 0;
+  if (detail::sign(dot) <= 0) return compare(sum(product(wx, wx), product(wy, wy)), r2) <= 0;
   if (compare(dot, length2) >= 0) {
     const Number vx = difference(x, s.bx, base), vy = difference(y, s.by, base);
     return compare(sum(product(vx, vx), product(vy, vy)), r2) <= 0;
@@ -333,9 +331,8 @@ int signAlong(const InputSegment& s, double px, double py, double qx, double qy)
   if (v > error) return 1;
   if (-v > error) return -1;
   const int base = baseOf({s.ax, s.ay, s.bx, s.by, px, py, qx, qy});
-  const Number dot =
-      sum(product(difference(qx, px, base), difference(s.bx, s.ax, base)),
-               product(difference(qy, py, base), difference(s.by, s.ay, base)));
+  const Number dot = sum(product(difference(qx, px, base), difference(s.bx, s.ax, base)),
+                         product(difference(qy, py, base), difference(s.by, s.ay, base)));
   return detail::sign(dot);
 }
 

@@ -84,8 +84,8 @@ Input decode(const std::uint8_t* data, std::size_t size) {
 
 void print(const Input& input) {
   std::fprintf(stderr, "%s minAngle=%.17g maxArea=%.17g cap=%llu keep=%s\n",
-               describeOptions(input.options).c_str(), input.refine.minAngle,
-               input.refine.maxArea, static_cast<unsigned long long>(input.refine.maxSteinerPoints),
+               describeOptions(input.options).c_str(), input.refine.minAngle, input.refine.maxArea,
+               static_cast<unsigned long long>(input.refine.maxSteinerPoints),
                input.refine.keep == Keep::Inside ? "inside" : "all");
   printPoints("free points", input.points.data(), input.points.size() / 2);
   for (std::size_t i = 0; i < input.lines.size(); ++i)
