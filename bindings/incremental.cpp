@@ -102,6 +102,21 @@ bool Incremental::rasterize(Output& out, double minX, double minY, double maxX, 
       "out of memory: the raster does not fit in the 4 GB a WebAssembly module can address");
 }
 
+bool Incremental::refine(Output& out, Keep keep, FillRule fill, double minAngle, double maxArea,
+                         double maxSteinerPoints) {
+  out.clear();
+  const bool ok = guarded(
+      out,
+      [&] {
+        return triangulation_.refine(
+            refineOptions(keep, fill, minAngle, maxArea, maxSteinerPoints));
+      },
+      "out of memory: the triangulation needs more than the 4 GB a WebAssembly module can "
+      "address; it was cleared");
+  if (out.status.code == StatusCode::OutOfMemory) triangulation_ = Triangulation(options());
+  return ok;
+}
+
 void Incremental::locate(double x, double y, std::uintptr_t into) const {
   const Location location = triangulation_.locate(x, y);
   int vertices = 0;

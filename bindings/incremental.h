@@ -33,6 +33,9 @@ class Incremental {
   bool hasValues() const { return triangulation_.hasValues(); }
 
   emscripten::val stats() const { return statsObject(triangulation_.stats()); }
+  // Refines the triangulation (see refineOptions in one_shot.h); the status lands in out.
+  bool refine(Output& out, Keep keep, FillRule fill, double minAngle, double maxArea,
+              double maxSteinerPoints);
 
   // Writes kind, triangle, the number of vertices that name the place, and those vertex ids
   // as six doubles at into.

@@ -89,6 +89,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("insertPolyline", &Incremental::insertPolyline)
       .function("mesh", &Incremental::mesh)
       .function("stats", &Incremental::stats)
+      .function("refine", &Incremental::refine)
       .function("locate", &Incremental::locate)
       .function("interpolate", &Incremental::interpolate)
       .function("rasterize", &Incremental::rasterize)

@@ -18,8 +18,20 @@ MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, const Input&
   return options;
 }
 
+RefineOptions refineOptions(Keep keep, FillRule fill, double minAngle, double maxArea,
+                            double maxSteinerPoints) {
+  RefineOptions r;
+  r.keep = keep;
+  r.fill = fill;
+  r.minAngle = minAngle;
+  r.maxArea = maxArea;
+  r.maxSteinerPoints = static_cast<std::uint64_t>(maxSteinerPoints);
+  return r;
+}
+
 bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-                     std::uint32_t valuesPerPoint, emscripten::val onProgress) {
+                     std::uint32_t valuesPerPoint, emscripten::val onProgress, bool refine,
+                     double minAngle, double maxArea, double maxSteinerPoints) {
   out.clear();
   ProgressRelay relay;
   const std::size_t points = input.pointCount();
@@ -49,6 +61,9 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
           status = triangulation.insertPolylines(lines.data(), lines.size(),
                                                  out.inputToVertex.data() + points, lineValues);
         input.clear();  // the core holds its own copy: the export runs without this one
+        if (status.ok() && refine)
+          status =
+              triangulation.refine(refineOptions(keep, fill, minAngle, maxArea, maxSteinerPoints));
         if (!status.ok()) {
           out.clear();  // a failed call hands back no arrays
           return status;

@@ -43,6 +43,9 @@ constexpr StatField kStatFields[] = {
     GEOCDT_STAT(snapRoundings),
     GEOCDT_STAT(valueDuplicates),
     GEOCDT_STAT(valueDisagreements),
+    GEOCDT_STAT(steinerPoints),
+    GEOCDT_STAT(refineSkipped),
+    GEOCDT_STAT(refineCapped),
 };
 #undef GEOCDT_STAT
 // Every counter takes 8 bytes (gridSize with its padding): a counter added to Stats and not
@@ -67,6 +70,9 @@ const char* jsName(Field field) {
     case Field::InputToVertex: return "inputToVertex";
     case Field::VertexIds: return "vertexIds";
     case Field::Raster: return "raster";
+    case Field::Steiner: return "steiner";
+    case Field::SteinerParents: return "steinerParents";
+    case Field::SteinerWeights: return "steinerWeights";
   }
   return nullptr;
 }
@@ -85,7 +91,8 @@ const char* jsName(ElementType type) {
 ElementType elementType(Field field) {
   switch (field) {
     case Field::Points:
-    case Field::Values: return ElementType::Float64;
+    case Field::Values:
+    case Field::SteinerWeights: return ElementType::Float64;
     case Field::Raster: return ElementType::Float32;
     case Field::Halfedges:
     case Field::Regions: return ElementType::Int32;
@@ -96,7 +103,9 @@ ElementType elementType(Field field) {
     case Field::SourceOffsets:
     case Field::Sources:
     case Field::InputToVertex:
-    case Field::VertexIds: return ElementType::Uint32;
+    case Field::VertexIds:
+    case Field::Steiner:
+    case Field::SteinerParents: return ElementType::Uint32;
   }
   return ElementType::Uint32;
 }
@@ -116,6 +125,9 @@ std::uintptr_t Output::data(int field) const {
     case Field::InputToVertex: return address(inputToVertex);
     case Field::VertexIds: return address(vertexIds);
     case Field::Raster: return address(raster);
+    case Field::Steiner: return address(mesh.steiner);
+    case Field::SteinerParents: return address(mesh.steinerParents);
+    case Field::SteinerWeights: return address(mesh.steinerWeights);
   }
   return 0;
 }
@@ -135,6 +147,9 @@ std::size_t Output::size(int field) const {
     case Field::InputToVertex: return inputToVertex.size();
     case Field::VertexIds: return vertexIds.size();
     case Field::Raster: return raster.size();
+    case Field::Steiner: return mesh.steiner.size();
+    case Field::SteinerParents: return mesh.steinerParents.size();
+    case Field::SteinerWeights: return mesh.steinerWeights.size();
   }
   return 0;
 }

@@ -30,6 +30,9 @@ enum class Field : int {
   InputToVertex,
   VertexIds,
   Raster,
+  Steiner,
+  SteinerParents,
+  SteinerWeights,
 };
 
 // Named after the JS typed array that holds such elements (Float64Array, ...).

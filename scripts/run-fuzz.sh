@@ -6,14 +6,14 @@
 #   scripts/run-fuzz.sh [seconds-per-target]     (default 60)
 #
 # Environment: GEOCDT_FUZZ_BUILD (build directory, default build-fuzz),
-# GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines"), GEOCDT_FUZZ_SEED and
+# GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines fuzz_refine"), GEOCDT_FUZZ_SEED and
 # GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: a reproducible run).
 # Replay one input:  build-fuzz/tests/fuzz/fuzz_polylines FILE   (GEOCDT_FUZZ_PRINT=1 prints it)
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 build=${GEOCDT_FUZZ_BUILD:-$root/build-fuzz}
-targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines}
+targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines fuzz_refine}
 
 # (0 would mean no limit to libFuzzer.)
 case $seconds in

@@ -54,7 +54,8 @@ export function createApi(instantiate) {
     const o = k.meshOptions(options);
     const valuesPerPoint = checkValuesPerPoint(options);
     const checked = checkInput(input, valuesPerPoint);
-    return finish(k.triangulate(checked, o, valuesPerPoint, options?.onProgress), started);
+    const r = k.refineOptions(options?.refine);
+    return finish(k.triangulate(checked, o, valuesPerPoint, options?.onProgress, r), started);
   }
 
   function triangulateGeoJSON(geojson, options) {
@@ -145,6 +146,19 @@ export function createApi(instantiate) {
         throw new RangeError(`geocdt: locate(${x}, ${y}): x and y must be finite numbers`);
       }
       return this.#kernel.locate(this.#live(), x, y);
+    }
+
+    // Delaunay refinement of what is there now: options.minAngle, maxArea, maxSteinerPoints,
+    // and keep / fillRule (keep: 'inside' refines only the inside). Returns the stats.
+    refine(options) {
+      const live = this.#live();
+      if (options != null && typeof options !== 'object') {
+        throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
+      }
+      const o = this.#kernel.meshOptions(
+        options == null ? undefined : { keep: options.keep, fillRule: options.fillRule });
+      const r = this.#kernel.refineOptions(options ?? {}, 'options');
+      return this.#kernel.refine(live, o, r);
     }
 
     // A copy of the current mesh; the triangulation stays as it is for more insertions.

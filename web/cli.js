@@ -21,6 +21,9 @@ Options:
   --keep <all|inside>        keep every triangle, or only those inside the rings (default: all)
   --fill-rule <evenodd|nonzero>  how rings decide inside (default: evenodd)
   --inside-flags             add inside to every triangle's properties
+  --min-angle <degrees>      refine until every kept triangle has angles at least this
+  --max-area <area>          refine until every kept triangle has at most this area
+  --max-steiner <count>      stop refining after this many added vertices
   --stats                    print statistics to stderr
   --quiet                    no progress (a bar on a terminal, lines otherwise)
   -h, --help                 show this help
@@ -34,7 +37,11 @@ class UsageError extends Error {}
 function parseArgs(argv) {
   const args = {
     input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false,
-    stats: false, quiet: false,
+    stats: false, quiet: false, refine: null,
+  };
+  const refine = (what, text) => {
+    args.refine ??= {};
+    args.refine[what] = Number(text);
   };
   const value = (i, flag) => {
     if (i + 1 >= argv.length) throw new UsageError(`${flag} needs a value`);
@@ -48,6 +55,9 @@ function parseArgs(argv) {
     else if (a === '--keep') args.keep = value(i++, a);
     else if (a === '--fill-rule') args.fillRule = value(i++, a);
     else if (a === '--inside-flags') args.insideFlags = true;
+    else if (a === '--min-angle') refine('minAngle', value(i++, a));
+    else if (a === '--max-area') refine('maxArea', value(i++, a));
+    else if (a === '--max-steiner') refine('maxSteinerPoints', value(i++, a));
     else if (a === '--stats') args.stats = true;
     else if (a === '--quiet') args.quiet = true;
     else if (a.startsWith('-') && a !== '-') throw new UsageError(`unknown option ${a}`);
@@ -151,6 +161,7 @@ async function main(argv) {
     keep: args.keep,
     fillRule: args.fillRule,
     insideFlags: args.insideFlags,
+    refine: args.refine ?? undefined,
     onProgress: show && (({ phase, fraction }) => show(`triangulating: ${phase}`, fraction)),
   });
   geoJSONResult(mesh, input, 'arrays', {});  // the features of the regions

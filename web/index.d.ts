@@ -80,6 +80,33 @@ export interface MeshOptions extends ProgressOptions {
   insideFlags?: boolean;
 }
 
+/**
+ * Delaunay refinement: Steiner vertices are added until every triangle of the refined part
+ * has all its angles at least minAngle and its area at most maxArea, except where two input
+ * segments meet at a smaller angle than minAngle (those triangles are counted in
+ * stats.refineSkipped). Steiner vertices are listed in the result's `steiner`.
+ */
+export interface RefineOptions {
+  /** Degrees, from 0 to less than 60; default 20. Up to about 20.7 refinement provably ends. */
+  minAngle?: number;
+  /** Squared input units; absent: no bound. */
+  maxArea?: number;
+  /**
+   * A hard cap on the Steiner vertices of the call; when it ends refinement,
+   * stats.refineCapped says so. Default: none up to 20.7 degrees, else 64 per vertex plus 4 per
+   * maxArea of the refined area plus 1024.
+   */
+  maxSteinerPoints?: number;
+}
+
+export interface TriangulateOptions extends MeshOptions {
+  /**
+   * Refine the triangulation before export (true: the defaults). With keep: 'inside' only the
+   * inside is refined; the outside stays as it is.
+   */
+  refine?: RefineOptions | boolean;
+}
+
 /** The counters of the core (Triangulation.stats). */
 export interface CoreStats {
   /** Points that became vertices. */
@@ -111,6 +138,16 @@ export interface CoreStats {
   valueDuplicates: number;
   /** Crossings whose input segments give different values (they get the mean). */
   valueDisagreements: number;
+  /** Steiner vertices added by refinement, over all calls. */
+  steinerPoints: number;
+  /**
+   * Triangles of the refined part that miss minAngle or maxArea after the last refinement:
+   * those in corners where input segments meet at a smaller angle, where rounding left a
+   * convex-hull edge unsplittable (keep: 'all'), and what the cap left.
+   */
+  refineSkipped: number;
+  /** 1 when maxSteinerPoints ended the last refinement, else 0. */
+  refineCapped: number;
 }
 
 /** triangulate()'s options. */
@@ -171,6 +208,15 @@ export interface Mesh {
    * given without values.
    */
   values?: Float64Array;
+   * Refinement's Steiner vertices, in the order they were added (present after refinement).
+   * steiner[i] is a vertex id, placed between the vertices steinerParents[3i..3i+2] (the
+   * corners of the triangle it fell in, or the two ends of the edge it split and 0xFFFFFFFF)
+   * with the barycentric weights steinerWeights[3i..3i+2] (summing to 1): values given at the
+   * parents interpolate linearly to it.
+   */
+  steiner?: Uint32Array;
+  steinerParents?: Uint32Array;
+  steinerWeights?: Float64Array;
   stats: Stats;
 }
 
@@ -235,7 +281,7 @@ export function triangulate(
 
 export type GeoJSONOutput = 'geojson' | 'arrays';
 
-export interface GeoJSONOptions extends MeshOptions {
+export interface GeoJSONOptions extends TriangulateOptions {
   /** 'geojson' (default): a FeatureCollection of triangles; 'arrays': the typed arrays. */
   output?: GeoJSONOutput;
 }
@@ -294,9 +340,10 @@ export interface GeoJSONResult extends TriangulateResult {
  * plane.
  */
 export function triangulateGeoJSON(
-  geojson: GeoJSONInput, options?: MeshOptions & { output?: 'geojson' }): TriangleFeatureCollection;
+  geojson: GeoJSONInput, options?: TriangulateOptions & { output?: 'geojson' },
+): TriangleFeatureCollection;
 export function triangulateGeoJSON(
-  geojson: GeoJSONInput, options: MeshOptions & { output: 'arrays' }): GeoJSONResult;
+  geojson: GeoJSONInput, options: TriangulateOptions & { output: 'arrays' }): GeoJSONResult;
 export function triangulateGeoJSON(
   geojson: GeoJSONInput, options?: GeoJSONOptions): TriangleFeatureCollection | GeoJSONResult;
 
@@ -405,6 +452,13 @@ export class Triangulation {
   locate(x: number, y: number): Location;
   /** A copy of the current mesh; insertions can go on. */
   results(options?: ResultsOptions): Mesh;
+  /**
+   * Delaunay refinement of what is there now (keep: 'inside' refines only the inside); later
+   * insertions leave quality to a later call. Returns the stats.
+   * @throws TypeError, RangeError on bad options; GeocdtError ('OutOfMemory', 'Disposed',
+   *   'Busy').
+   */
+  refine(options?: RefineOptions & { keep?: Keep; fillRule?: FillRule }): CoreStats;
   readonly vertexCount: number;
   readonly triangleCount: number;
   readonly polylineCount: number;

@@ -198,8 +198,9 @@ export class Kernel {
     return new Uint8Array(this.output.size(id));
   }
 
-  // Copies the output's mesh out, then frees it; the flags say which optional arrays to take.
-  takeMesh({ inputToVertex, inside, regions, values }) {
+  // Copies the output's mesh out, then frees it; the flags say which optional arrays to take
+  // (the Steiner records come whenever there are any, or refinement was asked for).
+  takeMesh({ inputToVertex, inside, regions, values, steiner }) {
     try {
       const mesh = {
         points: this.read('points'),
@@ -214,6 +215,11 @@ export class Kernel {
       if (inside) mesh.inside = this.read('inside');
       if (regions) mesh.regions = this.read('regions');
       if (values) mesh.values = this.read('values');
+      if (steiner || this.output.size(this.fields.steiner.id) > 0) {
+        mesh.steiner = this.read('steiner');
+        mesh.steinerParents = this.read('steinerParents');
+        mesh.steinerWeights = this.read('steinerWeights');
+      }
       mesh.stats = this.output.stats();
       return mesh;
     } finally {
@@ -246,6 +252,49 @@ export class Kernel {
     return { keep: k, fill: f, insideFlags: insideFlags || k === this.keep.inside };
   }
 
+  // options.refine -> { refine, minAngle, maxArea, maxSteinerPoints } for the binding (0 for
+  // no area bound and the default cap). true asks for the defaults.
+  refineOptions(refine, name = 'options.refine') {
+    if (refine == null || refine === false) {
+      return { refine: false, minAngle: 20, maxArea: 0, maxSteinerPoints: 0 };
+    }
+    if (refine === true) refine = {};
+    if (typeof refine !== 'object') {
+      throw new TypeError(`geocdt: ${name} must be an object or true, got ${describe(refine)}`);
+    }
+    const { minAngle = 20, maxArea, maxSteinerPoints } = refine;
+    const number = (what, value) => {
+      if (typeof value !== 'number') {
+        throw new TypeError(`geocdt: ${name}.${what} must be a number, got ${describe(value)}`);
+      }
+    };
+    number('minAngle', minAngle);
+    if (!(minAngle >= 0 && minAngle < 60)) {
+      throw new RangeError(
+        `geocdt: ${name}.minAngle must be a number of degrees from 0 to less than 60, `
+        + `got ${minAngle}`);
+    }
+    if (maxArea !== undefined) {
+      number('maxArea', maxArea);
+      if (!(maxArea > 0)) {
+        throw new RangeError(`geocdt: ${name}.maxArea must be a positive number, got ${maxArea}`);
+      }
+    }
+    if (maxSteinerPoints !== undefined) {
+      number('maxSteinerPoints', maxSteinerPoints);
+      if (!Number.isInteger(maxSteinerPoints) || maxSteinerPoints < 1) {
+        throw new RangeError(`geocdt: ${name}.maxSteinerPoints must be a positive integer, `
+          + `got ${maxSteinerPoints}`);
+      }
+    }
+    return {
+      refine: true,
+      minAngle,
+      maxArea: maxArea === undefined || maxArea === Infinity ? 0 : maxArea,
+      maxSteinerPoints: maxSteinerPoints ?? 0,
+    };
+  }
+
   // The binding's onProgress: (phase index, fraction) -> the caller's onProgress({ phase,
   // fraction }). An exception from the caller's function stops further reports and is thrown
   // once the core has returned (the core itself never sees it).
@@ -273,8 +322,9 @@ export class Kernel {
   }
 
   // checked: checkInput()'s { points, lines, polygons, values }; o: meshOptions();
-  // valuesPerPoint: checkValuesPerPoint()'s; onProgress: a function or undefined.
-  triangulate(checked, o, valuesPerPoint, onProgress) {
+  // valuesPerPoint: checkValuesPerPoint()'s; onProgress: a function or undefined; r:
+  // refineOptions().
+  triangulate(checked, o, valuesPerPoint, onProgress, r = this.refineOptions()) {
     const { points, lines, polygons, values } = checked;
     const progress = this.progress(onProgress);
     this.enter();
@@ -284,7 +334,7 @@ export class Kernel {
       this.writeInput(checked);
       const started = now();
       ok = this.wasm.triangulateInto(this.output, this.input, o.keep, o.fill, o.insideFlags,
-        valuesPerPoint, progress.callback);
+        valuesPerPoint, progress.callback, r.refine, r.minAngle, r.maxArea, r.maxSteinerPoints);
       coreMilliseconds = now() - started;
     } finally {
       this.input.clear();
@@ -300,7 +350,7 @@ export class Kernel {
     progress.rethrow();
     const mesh = this.takeMesh({
       inputToVertex: true, inside: o.insideFlags, regions: polygons !== undefined,
-      values: values !== undefined,
+      values: values !== undefined, steiner: r.refine,
     });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
@@ -404,6 +454,21 @@ export class Kernel {
     } finally {
       this.output.clear();
     }
+  }
+
+  // o: meshOptions() (keep and fill), r: refineOptions().
+  refine(incremental, o, r) {
+    this.enter();
+    let ok;
+    try {
+      ok = incremental.refine(this.output, o.keep, o.fill, r.minAngle, r.maxArea,
+        r.maxSteinerPoints);
+    } finally {
+      this.leave();
+    }
+    this.check(ok, () => null);
+    this.output.clear();
+    return incremental.stats();
   }
 
   locate(incremental, x, y) {

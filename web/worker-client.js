@@ -209,6 +209,7 @@ export class RemoteTriangulation {
     return this.#call('results', [rest], [], onProgress);
   }
 
+  refine(options) { return this.#call('refine', [options]); }
   stats() { return this.#call('stats'); }
   counts() { return this.#call('counts'); }
   dispose() { return this.#call('dispose'); }

@@ -42,6 +42,7 @@ export function createHost(api, post) {
     rasterize: (_, id, options) => live(id).rasterize(options),
     locate: (_, id, x, y) => live(id).locate(x, y),
     results: (onProgress, id, options) => live(id).results({ ...options, onProgress }),
+    refine: (_, id, options) => live(id).refine(options),
     stats: (_, id) => live(id).stats,
     counts: (_, id) => {
       const t = live(id);

@@ -3,9 +3,9 @@
 // transferred buffers, not copies.
 import type {
   Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, GeoJSONResult, InterpolateOptions,
-  Location, MemoryUsage, Mesh, MeshOptions, ProgressOptions, RasterOptions, ResultsOptions,
-  TriangleFeatureCollection, TriangulateInput, TriangulateOptions, TriangulateResult,
-  TriangulationOptions,
+  Location, MemoryUsage, Mesh, MeshOptions, ProgressOptions, RasterOptions, RefineOptions,
+  ResultsOptions, TriangleFeatureCollection, TriangulateInput, TriangulateOptions,
+  TriangulateResult, TriangulationOptions, Keep, FillRule,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -27,10 +27,10 @@ export class GeocdtWorker {
   /** The GeoJSON is read on the calling thread; the triangulation runs in the worker. */
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options?: MeshOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
+    options?: TriangulateOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options: MeshOptions & { output: 'arrays' }): Promise<GeoJSONResult>;
+    options: TriangulateOptions & { output: 'arrays' }): Promise<GeoJSONResult>;
   triangulateGeoJSON(
     geojson: GeoJSONInput,
     options?: GeoJSONOptions): Promise<TriangleFeatureCollection | GeoJSONResult>;
@@ -58,6 +58,7 @@ export class RemoteTriangulation {
   readonly valuesPerPoint: number;
   locate(x: number, y: number): Promise<Location>;
   results(options?: ResultsOptions): Promise<Mesh>;
+  refine(options?: RefineOptions & { keep?: Keep; fillRule?: FillRule }): Promise<CoreStats>;
   stats(): Promise<CoreStats>;
   counts(): Promise<{ vertexCount: number; triangleCount: number; polylineCount: number }>;
   dispose(): Promise<void>;

@@ -30,6 +30,29 @@ export function summary({ xy, triangles }) {
   return `${count} triangles${bad ? `, ${bad} INVALID (flipped or zero-area)` : ''}`;
 }
 
+// The smallest angle, in degrees, of the triangles keep(t) accepts.
+export function worstAngle(xy, triangles, keep = () => true) {
+  let worst = 180;
+  for (let t = 0; t < triangles.length / 3; t++) {
+    if (!keep(t)) continue;
+    for (let k = 0; k < 3; k++) {
+      const a = triangles[3 * t + k], b = triangles[3 * t + (k + 1) % 3];
+      const c = triangles[3 * t + (k + 2) % 3];
+      const ux = xy[2 * b] - xy[2 * a], uy = xy[2 * b + 1] - xy[2 * a + 1];
+      const vx = xy[2 * c] - xy[2 * a], vy = xy[2 * c + 1] - xy[2 * a + 1];
+      const deg = Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / Math.PI;
+      worst = Math.min(worst, deg);
+    }
+  }
+  return worst;
+}
+
+// A refined mesh: points added to the input's, triangles and the worst angle.
+export function refinedSummary(inputPoints, { xy, triangles }) {
+  return `${xy.length / 2 - inputPoints} Steiner points, ${summary({ xy, triangles })}, `
+    + `worst ${worstAngle(xy, triangles).toFixed(2)} deg`;
+}
+
 export function delaunator(xy) {
   return { xy, triangles: new Delaunator(xy).triangles };
 }
@@ -96,11 +119,12 @@ export function triangleInWorker(timeoutMs = 60_000) {
   };
 }
 
-export function triangle({ xy, edges }) {
+// switches: more of Triangle's switches (refine.js asks for quality).
+export function triangle({ xy, edges, switches = {} }) {
   const input = Triangle.makeIO({ pointlist: xy, segmentlist: Int32Array.from(edges.flat()) });
   const output = Triangle.makeIO();
   try {
-    Triangle.triangulate({ pslg: true, quiet: true }, input, output);
+    Triangle.triangulate({ pslg: true, quiet: true, ...switches }, input, output);
     const triangles = Uint32Array.from(output.trianglelist ?? []);
     if (triangles.length === 0) throw new Error('Triangle returned no triangles');
     return { xy: Float64Array.from(output.pointlist), triangles };

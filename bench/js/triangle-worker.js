@@ -8,6 +8,8 @@ parentPort.on('message', (graph) => {
   const started = performance.now();
   const mesh = peers.triangle(graph);
   const ms = performance.now() - started;
-  parentPort.postMessage({ output: peers.summary(mesh), ms });
+  const output = graph.switches?.quality
+    ? peers.refinedSummary(graph.xy.length / 2, mesh) : peers.summary(mesh);
+  parentPort.postMessage({ output, ms });
 });
 void workerData;

@@ -29,6 +29,7 @@ void Delaunay::clear() {
   grid_ = PointGrid();
   gridStale_ = false;
   stats = Stats();
+  steiner.clear();
 }
 
 std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
@@ -38,6 +39,12 @@ std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
   const bool fromGrid = options_.start == LocateStart::Grid || batchStart_ || smallBatch_;
   batchStart_ = false;
   const Hit h = locate(x, y, fromGrid);
+  const std::uint32_t r = constrained() ? insertAt<true>(h, v) : insertAt<false>(h, v);
+  if (r == v) grid_.grow(stats.inserted);
+  return r;
+}
+
+std::uint32_t Delaunay::insertLocated(const Hit& h, std::uint32_t v) {
   const std::uint32_t r = constrained() ? insertAt<true>(h, v) : insertAt<false>(h, v);
   if (r == v) grid_.grow(stats.inserted);
   return r;

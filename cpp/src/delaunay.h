@@ -25,6 +25,13 @@ struct Hit {
   std::int32_t edge = -1;
 };
 
+// A vertex added by refinement, and where it was placed (Mesh::steiner says how).
+struct SteinerVertex {
+  std::uint32_t vertex;
+  std::uint32_t parents[3];
+  double weights[3];
+};
+
 class Delaunay {
  public:
   explicit Delaunay(const Options& options) : options_(options) {}
@@ -33,6 +40,7 @@ class Delaunay {
   Topology topo;
   ConstraintStore constraints;
   Stats stats;
+  std::vector<SteinerVertex> steiner;
 
   bool built() const { return built_; }
   const Options& options() const { return options_; }
@@ -49,6 +57,9 @@ class Delaunay {
   // Inserts vertex v (already in xy); returns v or the existing vertex at its place.
   // Returns kGhost when location failed (an internal error, described by lastError()).
   std::uint32_t insertVertex(std::uint32_t v);
+
+  // Inserts vertex v (already in xy) where h, a location of it, says; as insertVertex.
+  std::uint32_t insertLocated(const Hit& h, std::uint32_t v);
 
   // Locates (x, y), starting from the grid's cell or from the last triangle.
   Hit locate(double x, double y, bool fromGrid);

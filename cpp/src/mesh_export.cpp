@@ -4,51 +4,18 @@
 
 #include "chunks.h"
 #include "region_labels.h"
+#include "slot_windings.h"
 #include "triangulation_state.h"
 
 namespace geocdt {
 
 namespace {
 
-// Winding number of every slot, spreading from the ghost triangles (outside every ring)
-// across edges; crossing a constrained edge adds the net ring traversals along it.
+// Inside flags of every slot by the fill rule.
 std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill) {
-  const Topology& topo = d.topo;
-  const std::int32_t slots = topo.slotCount();
-  std::vector<std::int32_t> winding(slots, 0);
-  std::vector<std::uint8_t> seen(slots, 0);
-  std::vector<std::int32_t> queue;
-  forChunks(0, slots, [&](std::size_t begin, std::size_t end) {
-    for (auto t = static_cast<std::int32_t>(begin); t < static_cast<std::int32_t>(end); ++t)
-      if (topo.isGhost(t)) {
-        seen[t] = 1;
-        queue.push_back(t);
-      }
-  });
-  // The queue grows as it is read: chunks up to its length at the time.
-  for (std::size_t head = 0; head < queue.size();) {
-    const std::size_t end = queue.size();
-    forChunks(head, end, [&](std::size_t first, std::size_t last) {
-      for (std::size_t i = first; i < last; ++i) {
-        const std::int32_t t = queue[i];
-        for (int k = 0; k < 3; ++k) {
-          const std::int32_t e = 3 * t + k, next = topo.adj[e] / 3;
-          if (seen[next]) continue;
-          seen[next] = 1;
-          winding[next] = winding[t];
-          if (topo.fixed[e])
-            winding[next] += d.constraints.windingAcross(topo.tri[e], topo.tri[nextEdge(e)]);
-          queue.push_back(next);
-        }
-      }
-    });
-    head = end;
-  }
-  std::vector<std::uint8_t> inside(slots, 0);
-  forChunks(0, slots, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-      inside[t] = fill == FillRule::EvenOdd ? (winding[t] & 1) != 0 : winding[t] != 0;
-  });
+  const std::vector<std::int32_t> winding = slotWindings(d);
+  std::vector<std::uint8_t> inside(winding.size(), 0);
+  for (std::size_t t = 0; t < winding.size(); ++t) inside[t] = insideByRule(winding[t], fill);
   return inside;
 }
 
@@ -200,6 +167,11 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
   if (options.regions) m.regions = std::move(regions);
   progress(Phase::Export, 2, 3);
   addProvenance(d, m);
+  for (const SteinerVertex& s : d.steiner) {
+    m.steiner.push_back(s.vertex);
+    m.steinerParents.insert(m.steinerParents.end(), s.parents, s.parents + 3);
+    m.steinerWeights.insert(m.steinerWeights.end(), s.weights, s.weights + 3);
+  }
   progress(Phase::Export, 3, 3);
   return m;
 }

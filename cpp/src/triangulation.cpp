@@ -4,6 +4,7 @@
 #include <new>
 #include <string>
 
+#include "refinement.h"
 #include "triangulation_state.h"
 
 namespace geocdt {
@@ -168,6 +169,20 @@ Mesh exportWithValues(Triangulation::State& state, const MeshOptions& options, b
 
 }  // namespace
 
+
+Status Triangulation::refine(const RefineOptions& options) {
+  const std::string error = refineOptionsError(options);
+  if (!error.empty()) return {StatusCode::InvalidArgument, error};
+  State& state = *state_;
+  state.slotMapValid = false;
+  try {
+    return refineTriangulation(state.delaunay, options);
+  } catch (const std::bad_alloc&) {
+    state.delaunay.clear();
+    return outOfMemory();
+  }
+}
+
 Mesh Triangulation::mesh(const MeshOptions& options) const {
   return exportWithValues(*state_, options, false);
 }
@@ -197,7 +212,8 @@ template <typename InsertPoints>
 Status triangulateWith(std::size_t count, InsertPoints insertPoints, const PolylineView* polylines,
                        std::size_t polylineCount, const Options& options,
                        const MeshOptions& meshOptions, Mesh& out,
-                       std::vector<std::uint32_t>* inputToVertex, const double* values) {
+                       std::vector<std::uint32_t>* inputToVertex, const double* values,
+                       const RefineOptions* refine) {
   if (polylineCount > 0 && polylines == nullptr)
     return {StatusCode::InvalidArgument, "null polylines with a count"};
   Triangulation t(options);
@@ -211,6 +227,12 @@ Status triangulateWith(std::size_t count, InsertPoints insertPoints, const Polyl
     if (s.ok() && polylineCount > 0)
       s = t.insertPolylines(polylines, polylineCount, ids.data() + count,
                             values ? values + count * options.valuesPerPoint : nullptr);
+    if (s.ok() && refine) {
+      RefineOptions r = *refine;
+      r.keep = meshOptions.keep;
+      r.fill = meshOptions.fill;
+      s = t.refine(r);
+    }
     if (!s.ok()) return s;
     out = t.release(meshOptions);
   } catch (const std::bad_alloc&) {
@@ -225,23 +247,27 @@ Status triangulateWith(std::size_t count, InsertPoints insertPoints, const Polyl
 Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex, const double* values) {
+                   std::vector<std::uint32_t>* inputToVertex, const double* values,
+                   const RefineOptions* refine) {
   return triangulateWith(
       count,
       [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(xy, count, ids, values); },
-      polylines, polylineCount, options, meshOptions, out, inputToVertex, values);
+      polylines, polylineCount, options, meshOptions, out, inputToVertex, values,
+      refine);
 }
 
 Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
-                   std::vector<std::uint32_t>* inputToVertex, const double* values) {
+                   std::vector<std::uint32_t>* inputToVertex, const double* values,
+                   const RefineOptions* refine) {
   return triangulateWith(
       xy.size() / 2,
       [&](Triangulation& t, std::uint32_t* ids) {
         return t.insertPoints(std::move(xy), ids, values);
       },
-      polylines, polylineCount, options, meshOptions, out, inputToVertex, values);
+      polylines, polylineCount, options, meshOptions, out, inputToVertex, values,
+      refine);
 }
 
 }  // namespace geocdt

@@ -14,6 +14,7 @@
 #include "invariants.h"
 #include "point_generators.h"
 #include "polyline_file.h"
+#include "refinement_checks.h"
 
 namespace geocdt {
 namespace {
@@ -232,6 +233,45 @@ TEST(RealData, CountriesAsPointsAndScaled) {
   EXPECT_EQ(testing::checkTriangulation(m2), "");
   EXPECT_EQ(testing::checkConstraints(m2, moved, ids2), "");
 }
+
+// Refinement of country and county rings, inside only: a valid CDT of the rings, Steiner
+// records that place their vertices, and every inside triangle within minAngle except those
+// the stats own up to (corners where the data's segments meet at smaller angles: a small
+// share of them). `polylines` takes the first that many rings.
+void checkRefinedDataset(const std::string& name, double minAngle, std::size_t polylines) {
+  const Loaded all = load(name);
+  testing::PolylineSet set;
+  testing::Polylines lines;
+  for (std::size_t i = 0; i < std::min(polylines, all.lines.size()); ++i) {
+    set.add(all.lines[i].data(), all.lines[i].size() / 2);
+    lines.push_back(all.lines[i]);
+  }
+  const std::vector<PolylineView> views = set.views();
+  Triangulation t;
+  std::vector<std::uint32_t> ids(set.pointCount());
+  ASSERT_TRUE(t.insertPolylines(views.data(), views.size(), ids.data()).ok());
+  RefineOptions ro;
+  ro.minAngle = minAngle;
+  ro.keep = Keep::Inside;
+  ASSERT_TRUE(t.refine(ro).ok());
+  const Stats stats = t.stats();
+  EXPECT_FALSE(stats.refineCapped) << name;
+  MeshOptions mo;
+  mo.insideFlags = true;
+  const Mesh m = t.mesh(mo);
+  std::size_t inside = 0;
+  for (const std::uint8_t f : m.inside) inside += f;
+  EXPECT_GT(stats.steinerPoints, 0u);
+  EXPECT_LT(stats.refineSkipped * 50, inside) << name << ": " << stats.refineSkipped;
+  EXPECT_EQ(testing::checkRefined(m, {}, lines, ids, minAngle, 0, true, stats.refineSkipped), "")
+      << name;
+}
+
+TEST(RealData, RefineNaturalEarth110mCountriesInside) {
+  checkRefinedDataset("ne_110m_rings.gpl", 20, 1u << 30);
+  checkRefinedDataset("ne_110m_rings.gpl", 30, 1u << 30);
+}
+TEST(RealData, RefineUsCountiesInside) { checkRefinedDataset("us_counties_rings.gpl", 30, 400); }
 
 }  // namespace
 }  // namespace geocdt

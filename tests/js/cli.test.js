@@ -97,6 +97,21 @@ test('--keep inside with polygons', () => {
   assert.ok(fc.features.every((f) => f.properties.inside === true));
 });
 
+test('--min-angle, --max-area and --max-steiner refine the triangles', () => {
+  const out = join(dir, 'refined.geojson');
+  const p = run([fixture, '-o', out, '--keep', 'inside', '--min-angle', '30', '--max-area', '1e9',
+    '--max-steiner', '100000', '--stats', '--quiet']);
+  assert.equal(p.status, 0, p.stderr);
+  assert.match(p.stderr, /steinerPoints\s+[1-9]/);
+  assert.match(p.stderr, /refineCapped\s+0/);
+  const fc = JSON.parse(readFileSync(out, 'utf8'));
+  const plain = JSON.parse(readFileSync(join(dir, 'inside.geojson'), 'utf8'));
+  assert.ok(fc.features.length > plain.features.length);
+  const bad = run([fixture, '--min-angle', '75']);
+  assert.equal(bad.status, 1);
+  assert.match(bad.stderr, /minAngle must be a number of degrees/);
+});
+
 test('usage errors exit 2, bad input exits 1, both with a message', () => {
   let p = run([]);
   assert.equal(p.status, 2);

@@ -103,6 +103,29 @@ struct MeshOptions {
   std::vector<std::int32_t> polylinePolygons;
 };
 
+// Mesh::steinerParents' third entry for a Steiner vertex placed on an edge.
+inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
+
+// Delaunay refinement (Triangulation::refine): Steiner vertices are added until every
+// triangle of the refined part has all its angles at least minAngle and its area at most
+// maxArea, except where the input does not allow it (see Stats::refineSkipped).
+struct RefineOptions {
+  // Degrees, in [0, 60). Up to about 20.7 degrees refinement provably ends; beyond it the
+  // cap ends it when nothing else does (30 degrees ends on real data, 34 mostly does).
+  double minAngle = 20.0;
+  double maxArea = 0.0;  // squared input units; 0 (or infinity) for no bound
+  // A hard cap on the Steiner vertices one call adds. 0 means the default: none up to
+  // kProvenAngle, else 64 per vertex before refinement, plus 4 per maxArea of the domain's
+  // area, plus 1024.
+  std::uint64_t maxSteinerPoints = 0;
+  Keep keep = Keep::All;  // Inside refines only the inside of the rings; outside stays as is
+  FillRule fill = FillRule::EvenOdd;
+};
+
+// The largest minimum angle for which Delaunay refinement with concentric shells is proven
+// to end (Shewchuk): arcsin(1 / (2 sqrt 2)), about 20.7 degrees.
+inline constexpr double kProvenAngle = 20.7;
+
 // What a triangulation hands out: plain arrays the caller owns.
 struct Mesh {
   std::vector<double> points;             // x0, y0, x1, y1, ... per vertex
@@ -134,6 +157,15 @@ struct Mesh {
   std::vector<std::uint32_t> derivedOffsets;
   std::vector<std::uint32_t> derivedParents;
   std::vector<double> derivedWeights;
+  // Refinement's Steiner vertices, in the order they were added: steiner[i] is a vertex id,
+  // placed between the vertices steinerParents[3i..3i+2] (a triangle's corners, or an edge's
+  // two ends and kNoVertex) with barycentric weights steinerWeights[3i..3i+2] (summing to 1;
+  // 0 for kNoVertex) at the time it was added: a value given at the parents interpolates
+  // linearly to it. A Steiner vertex on a constrained edge splits it; both halves keep the
+  // edge's provenance.
+  std::vector<std::uint32_t> steiner;
+  std::vector<std::uint32_t> steinerParents;
+  std::vector<double> steinerWeights;
 };
 
 // A raster for rasterize(): width x height pixels over [minX, maxX] x [minY, maxY]. Pixel
@@ -187,6 +219,13 @@ struct Stats {
   // Derived vertices whose input segments give values that differ (beyond 1e-9 of the
   // largest magnitude involved): they get the mean. Counted over the current mesh.
   std::uint64_t valueDisagreements = 0;
+  // Refinement, over all refine() calls: Steiner vertices added; triangles of the refined
+  // part that miss minAngle or maxArea when the last call ended (where two input segments
+  // meet at a smaller angle than minAngle, the triangles in that corner keep it; when the cap
+  // ended the call, what was left too); and whether the cap ended the last call.
+  std::uint64_t steinerPoints = 0;
+  std::uint64_t refineSkipped = 0;
+  bool refineCapped = false;
 };
 
 // One Triangulation serves one thread at a time. Its const functions leave the mesh as it
@@ -257,6 +296,10 @@ class Triangulation {
   const std::vector<double>& points() const;
   Stats stats() const;  // a copy of the counters as they are now
 
+  // Delaunay refinement of what is there now (see RefineOptions). Later insertions leave the
+  // quality to a later call. An invalid option is reported, and nothing changes.
+  Status refine(const RefineOptions& options = {});
+
   Mesh mesh(const MeshOptions& options = {}) const;  // a compact copy, no ghost triangles
   Mesh release(const MeshOptions& options = {});     // the same; leaves this empty
 
@@ -274,12 +317,13 @@ class Triangulation {
 };
 
 // One shot: points first, then polylines in order. inputToVertex, if not null, gets one
-// vertex id per input point (points first, then each polyline's points).
+// vertex id per input point (points first, then each polyline's points). With refine, the
+// triangulation is refined before export (its keep and fill are meshOptions').
 Status triangulate(const double* xy, std::size_t count, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
                    std::vector<std::uint32_t>* inputToVertex = nullptr,
-                   const double* values = nullptr);
+                   const double* values = nullptr, const RefineOptions* refine = nullptr);
 // values, if not null: Options::valuesPerPoint numbers per input point, in the same order.
 // The same with the points in a buffer it takes over (see insertPoints(std::vector&&)):
 // out.points is then that buffer's memory unless polylines add points. On invalid
@@ -288,6 +332,6 @@ Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
                    std::size_t polylineCount, const Options& options,
                    const MeshOptions& meshOptions, Mesh& out,
                    std::vector<std::uint32_t>* inputToVertex = nullptr,
-                   const double* values = nullptr);
+                   const double* values = nullptr, const RefineOptions* refine = nullptr);
 
 }  // namespace geocdt

@@ -1,0 +1,64 @@
+// Delaunay refinement in Node: geocdt's wasm against triangle-wasm (Triangle's -q), on the
+// Natural Earth country rings, alternating in one process (Triangle in a worker). geocdt
+// refines the inside (keep: 'inside', even-odd); Triangle refines its -p domain (everything
+// within the outer boundary: lakes given as rings stay filled). Prints, per engine, the median
+// time, the Steiner points, the triangles and the worst angle of the triangles refined.
+// With --uniform N: N uniform points in a square ring instead, where both domains are the
+// square.
+//   node bench/js/refine.js [--scale 110m | --uniform 20000] [--angle 30] [--rounds 3]
+import { init, triangulate } from 'geocdt';
+import { countryRings, indexedGraph, pointCount, uniform } from './datasets.js';
+import * as peers from './peers.js';
+import { alternate } from './timing.js';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const i = args.indexOf(`--${name}`);
+  return i >= 0 ? args[i + 1] : fallback;
+};
+const scale = option('scale', '110m');
+const angle = Number(option('angle', '30'));
+const rounds = Number(option('rounds', '3'));
+const uniformCount = Number(option('uniform', '0'));
+
+// N uniform points in [0, 1000)^2 inside a square ring around them.
+function pointsInSquare(n) {
+  const box = Float64Array.from([-1, -1, 1001, -1, 1001, 1001, -1, 1001, -1, -1]);
+  const points = uniform(n);
+  const xy = [...box.subarray(0, 8), ...points];
+  const edges = [[0, 1], [1, 2], [2, 3], [3, 0]];
+  return {
+    name: `${n} uniform points in a square`,
+    input: { points, polylines: [box] },
+    graph: { xy, edges },
+  };
+}
+
+await init();
+const { name, input, graph } = uniformCount > 0 ? pointsInSquare(uniformCount) : (() => {
+  const rings = countryRings(scale);
+  return { name: rings.name, input: { polylines: rings.polylines },
+    graph: indexedGraph(rings.polylines) };
+})();
+const vertices = graph.xy.length / 2;
+const triangle = peers.triangleInWorker(600_000);
+const results = await alternate([
+  {
+    name: 'geocdt',
+    run: () => triangulate(input, { keep: 'inside', refine: { minAngle: angle } }),
+    describe: (r) => `${r.steiner.length} Steiner points, ${r.triangles.length / 3} triangles, `
+      + `worst ${peers.worstAngle(r.points, r.triangles).toFixed(2)} deg, `
+      + `${r.stats.refineSkipped} left (capped: ${r.stats.refineCapped})`,
+  },
+  {
+    name: 'triangle-wasm',
+    run: () => triangle.run({ ...graph, switches: { quality: angle } }),
+    describe: (s) => s,
+  },
+], rounds);
+triangle.close();
+const points = (input.points?.length ?? 0) / 2 + pointCount(input.polylines);
+console.log(`${name}: ${points} points (${vertices} distinct), ${angle} degrees`);
+for (const [engine, r] of Object.entries(results)) {
+  console.log(`  ${engine}: ${r.error ?? `${r.ms.toFixed(0)} ms, ${r.summary}`}`);
+}

@@ -1,0 +1,712 @@
+#include "refinement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "exact_geometry.h"
+#include "geocdt/predicates.h"
+#include "slot_windings.h"
+
+namespace geocdt {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A triangle waiting to be split. The corners tell whether the slot still holds it when its
+// turn comes.
+struct BadTriangle {
+  std::int32_t slot;
+  std::uint32_t a, b, c;
+};
+
+// Bad triangles, worst first: keys in [0, 2) (smaller is worse) sorted into buckets, as
+// Triangle does; a heap of them all spent most of its time missing the cache.
+class BadQueue {
+ public:
+  void push(double key, const BadTriangle& t) {
+    const std::size_t b =
+        std::min<std::size_t>(static_cast<std::size_t>(key * (kBuckets / 2)), kBuckets - 1);
+    buckets_[b].push_back(t);
+    first_ = std::min(first_, b);
+    ++size_;
+  }
+  bool empty() const { return size_ == 0; }
+  BadTriangle pop() {
+    while (buckets_[first_].empty()) ++first_;
+    const BadTriangle t = buckets_[first_].back();
+    buckets_[first_].pop_back();
+    --size_;
+    return t;
+  }
+
+ private:
+  static constexpr std::size_t kBuckets = 4096;
+  std::vector<std::vector<BadTriangle>> buckets_ = std::vector<std::vector<BadTriangle>>(kBuckets);
+  std::size_t first_ = kBuckets, size_ = 0;
+};
+
+// A subsegment waiting to be split: encroached by a vertex, or by a rejected candidate
+// (forced: no vertex encroaches it, the candidate would have).
+struct Subsegment {
+  std::uint32_t u, v;
+  bool forced;
+};
+
+enum class Outcome { Done, Skipped, Retry, Failed };
+
+// The power of two 2^-e that scales the largest of the differences to magnitude ~1: scaled
+// by it (exactly), their products neither underflow nor overflow.
+int scaleExponent(std::initializer_list<double> differences) {
+  double size = 0;
+  for (const double d : differences) size = std::max(size, std::fabs(d));
+  return size > 0 ? std::ilogb(size) : 0;
+}
+
+// Where p projects on a -> b, as the fraction of the way from a, clamped to [0, 1].
+double projection(double ax, double ay, double bx, double by, double px, double py) {
+  const int e = scaleExponent({bx - ax, by - ay, px - ax, py - ay});
+  const double ex = std::ldexp(bx - ax, -e), ey = std::ldexp(by - ay, -e);
+  const double qx = std::ldexp(px - ax, -e), qy = std::ldexp(py - ay, -e);
+  return std::clamp((qx * ex + qy * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+}
+
+class Refiner {
+ public:
+  Refiner(Delaunay& d, const RefineOptions& o)
+      : d_(d),
+        topo_(d.topo),
+        keepAll_(o.keep == Keep::All),
+        fill_(o.fill),
+        maxArea_(o.maxArea > 0 ? o.maxArea : std::numeric_limits<double>::infinity()),
+        minAngle_(o.minAngle) {
+    const double s = std::sin(o.minAngle * kPi / 180);
+    sin2_ = s * s;
+    // Ungor's off-centre sits where the shortest edge subtends minAngle, a little closer
+    // (0.475 of the half-edge's cotangent, not 0.5) so that its triangle is not bad again.
+    offCentre_ = o.minAngle > 0 ? 0.475 / std::tan(o.minAngle * kPi / 360) : 0;
+    cap_ = o.maxSteinerPoints;
+  }
+
+  Status run();
+
+ private:
+  double x(std::uint32_t v) const { return d_.xy[2 * v]; }
+  double y(std::uint32_t v) const { return d_.xy[2 * v + 1]; }
+  bool ccw(std::uint32_t a, std::uint32_t b, double px, double py) const {
+    return orient2d(x(a), y(a), x(b), y(b), px, py) == Sign::Positive;
+  }
+  bool inRegion(std::int32_t t) const {
+    return !topo_.isGhost(t) && (keepAll_ || insideByRule(winding_[t], fill_));
+  }
+  // A constrained edge, or with keep all a hull edge: what refinement must not cross. e is
+  // either half-edge; none of a ghost vertex is one.
+  bool isSubsegment(std::int32_t e) const {
+    return topo_.fixed[e] || (keepAll_ && topo_.isGhost(e / 3) != topo_.isGhost(topo_.adj[e] / 3));
+  }
+  // The segment a subsegment lies on, and a number naming it: an input segment's index, or
+  // past 2^32 the hull edge it comes from.
+  InputSegment segmentOf(std::int32_t e, std::uint64_t& id) const;
+  static bool encroachedBy(double ux, double uy, double vx, double vy, double px, double py) {
+    return (ux - px) * (vx - px) + (uy - py) * (vy - py) < 0;
+  }
+  bool encroached(std::int32_t e) const;
+  void queueSubsegment(std::int32_t e, bool forced);
+  void queueIfEncroached(std::int32_t e) {
+    if (encroached(e)) queueSubsegment(e, false);
+  }
+  // sin^2 of the smallest angle and the area of a real triangle.
+  void measure(std::int32_t t, double& sin2, double& area) const;
+  void checkTriangle(std::int32_t t);
+  std::int32_t findEdge(std::uint32_t u, std::uint32_t v) const;
+  int constrainedDegree(std::uint32_t u) const;
+  bool smallInputAngle(std::int32_t t) const;
+  void rebuild();
+  void afterInsert(std::int32_t from);
+  void noteCorners(std::int32_t t);
+  void checkAround(std::int32_t t);  // the triangle and its subsegments
+  void restoreDelaunay(std::vector<std::int32_t>& stack);
+  Outcome splitSubsegment(std::int32_t e, bool forced);
+  Outcome splitTriangle(const BadTriangle& bad);
+  std::uint32_t newVertex(double px, double py) {
+    d_.xy.push_back(px);
+    d_.xy.push_back(py);
+    return d_.vertexCount() - 1;
+  }
+  void record(std::uint32_t v, std::uint32_t a, std::uint32_t b, std::uint32_t c, double wa,
+              double wb, double wc) {
+    d_.steiner.push_back({v, {a, b, c}, {wa, wb, wc}});
+    steinerFlag_.resize(d_.vertexCount(), 0);
+    steinerFlag_[v] = 1;
+    ++added_;
+  }
+  bool capReached() const { return added_ >= cap_ || d_.vertexCount() >= kGhost - 3; }
+
+  Delaunay& d_;
+  Topology& topo_;
+  bool keepAll_;
+  FillRule fill_;
+  double maxArea_, minAngle_, sin2_ = 0, offCentre_ = 0;
+  std::uint64_t cap_ = 0, added_ = 0;
+  bool capped_ = false;
+  std::vector<std::int32_t> winding_;      // per slot
+  std::vector<std::int32_t> vertexEdge_;   // per vertex: a half-edge out of it
+  std::vector<std::uint8_t> steinerFlag_;  // per vertex: 1 for refinement's vertices
+  std::vector<std::uint32_t> stamp_;       // per slot: the cavity search that saw it
+  std::uint32_t epoch_ = 0;
+  std::vector<Subsegment> subsegments_;
+  BadQueue bad_;
+  std::unordered_set<std::uint64_t> unsplittable_;
+  // With keep all, the hull's edges are segments too: each hull subsegment's original edge.
+  std::vector<InputSegment> hull_;
+  std::unordered_map<std::uint64_t, std::uint32_t> hullOf_;
+  std::vector<std::int32_t> cavity_, around_;
+};
+
+bool Refiner::encroached(std::int32_t e) const {
+  const std::uint32_t u = topo_.tri[e], v = topo_.tri[nextEdge(e)];
+  for (const std::int32_t h : {e, topo_.adj[e]}) {
+    if (!inRegion(h / 3)) continue;
+    const std::uint32_t w = topo_.tri[prevEdge(h)];
+    if (encroachedBy(x(u), y(u), x(v), y(v), x(w), y(w))) return true;
+  }
+  return false;
+}
+
+void Refiner::queueSubsegment(std::int32_t e, bool forced) {
+  const std::uint32_t u = topo_.tri[e], v = topo_.tri[nextEdge(e)];
+  if (unsplittable_.count(ConstraintStore::key(u, v))) return;
+  subsegments_.push_back({u, v, forced});
+}
+
+void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
+  const std::uint32_t a = topo_.tri[3 * t], b = topo_.tri[3 * t + 1], c = topo_.tri[3 * t + 2];
+  double abx = x(b) - x(a), aby = y(b) - y(a), acx = x(c) - x(a), acy = y(c) - y(a);
+  // In a frame scaled by a power of two (exactly) to the triangle's size, so that squares and
+  // their products neither overflow nor underflow at any coordinate magnitude.
+  const int e = scaleExponent({abx, aby, acx, acy});
+  abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e);
+  acx = std::ldexp(acx, -e), acy = std::ldexp(acy, -e);
+  const double bcx = acx - abx, bcy = acy - aby;
+  const double lab = abx * abx + aby * aby, lac = acx * acx + acy * acy;
+  const double lbc = bcx * bcx + bcy * bcy;
+  const double cross = abx * acy - aby * acx;
+  // The smallest angle faces the shortest edge; sin of it is 2 * area over the product of
+  // the two longer edges.
+  const double shortest = std::min({lab, lac, lbc});
+  const double product = lab * lac * lbc / shortest;
+  sin2 = product > 0 ? cross * cross / product : 0;
+  area = std::ldexp(0.5 * std::fabs(cross), 2 * e);
+}
+
+void Refiner::checkTriangle(std::int32_t t) {
+  if (!inRegion(t)) return;
+  double sin2, area;
+  measure(t, sin2, area);
+  double key;
+  if (sin2 < sin2_) {
+    key = sin2;  // in [0, 0.75): angles first, the smallest first
+  } else if (area > maxArea_) {
+    key = 1 + maxArea_ / area;  // in (1, 2): then areas, the largest first
+  } else {
+    return;
+  }
+  bad_.push(key, {t, topo_.tri[3 * t], topo_.tri[3 * t + 1], topo_.tri[3 * t + 2]});
+}
+
+std::int32_t Refiner::findEdge(std::uint32_t u, std::uint32_t v) const {
+  const std::int32_t start = vertexEdge_[u];
+  std::int32_t e = start;
+  do {
+    if (topo_.tri[nextEdge(e)] == v) return e;
+    e = topo_.adj[prevEdge(e)];
+  } while (e != start);
+  return -1;
+}
+
+InputSegment Refiner::segmentOf(std::int32_t e, std::uint64_t& id) const {
+  const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
+  if (topo_.fixed[e]) {
+    const EdgeSource* src = d_.constraints.find(a, b);
+    if (src) {
+      id = src->segment;
+      return d_.constraints.segments[src->segment];
+    }
+  }
+  const auto hull = hullOf_.find(ConstraintStore::key(a, b));
+  if (hull != hullOf_.end()) {
+    id = (std::uint64_t{1} << 32) + hull->second;
+    return hull_[hull->second];
+  }
+  id = (std::uint64_t{1} << 33) + ConstraintStore::key(a, b);  // a hull edge made by flips
+  return {x(a), y(a), x(b), y(b)};
+}
+
+int Refiner::constrainedDegree(std::uint32_t u) const {
+  const std::int32_t start = vertexEdge_[u];
+  std::int32_t e = start;
+  int degree = 0;
+  do {
+    degree += topo_.tri[nextEdge(e)] != kGhost && isSubsegment(e);
+    e = topo_.adj[prevEdge(e)];
+  } while (e != start);
+  return degree;
+}
+
+// Whether t's shortest edge joins two points on two input segments that meet at an input
+// vertex, at equal distances from it: the concentric shells put them there, and the angle
+// between the segments is then the triangle's. Splitting it would go on for ever.
+bool Refiner::smallInputAngle(std::int32_t t) const {
+  std::uint32_t corner[3] = {topo_.tri[3 * t], topo_.tri[3 * t + 1], topo_.tri[3 * t + 2]};
+  int shortest = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t a = corner[k], b = corner[(k + 1) % 3];
+    const double l = (x(b) - x(a)) * (x(b) - x(a)) + (y(b) - y(a)) * (y(b) - y(a));
+    if (l < best) best = l, shortest = k;
+  }
+  const std::uint32_t p = corner[shortest], q = corner[(shortest + 1) % 3];
+  // The segments through a vertex, from its subsegments (a few).
+  struct Through {
+    InputSegment s;
+    std::uint64_t id;
+  };
+  const auto segmentsAt = [&](std::uint32_t u, Through* out) {
+    int n = 0;
+    const std::int32_t start = vertexEdge_[u];
+    std::int32_t e = start;
+    do {
+      if (n < 8 && topo_.tri[nextEdge(e)] != kGhost && isSubsegment(e)) {
+        out[n].s = segmentOf(e, out[n].id);
+        ++n;
+      }
+      e = topo_.adj[prevEdge(e)];
+    } while (e != start);
+    return n;
+  };
+  Through sp[8], sq[8];
+  const int np = segmentsAt(p, sp), nq = segmentsAt(q, sq);
+  for (int i = 0; i < np; ++i)
+    for (int j = 0; j < nq; ++j) {
+      if (sp[i].id == sq[j].id) continue;
+      const InputSegment& a = sp[i].s;
+      const InputSegment& b = sq[j].s;
+      const double ends[2][2] = {{a.ax, a.ay}, {a.bx, a.by}};
+      for (const auto& z : ends) {
+        const bool shared = (z[0] == b.ax && z[1] == b.ay) || (z[0] == b.bx && z[1] == b.by);
+        if (!shared) continue;
+        const double dp = std::hypot(x(p) - z[0], y(p) - z[1]);
+        const double dq = std::hypot(x(q) - z[0], y(q) - z[1]);
+        if (dp < 1.001 * dq && dq < 1.001 * dp) return true;
+      }
+    }
+  return false;
+}
+
+void Refiner::rebuild() {
+  winding_ = slotWindings(d_);
+  vertexEdge_.assign(d_.vertexCount(), -1);
+  for (std::int32_t e = 0; e < static_cast<std::int32_t>(topo_.tri.size()); ++e)
+    if (topo_.tri[e] != kGhost) vertexEdge_[topo_.tri[e]] = e;
+}
+
+// After a vertex was inserted: the triangles around it take their windings from the unchanged
+// triangles beyond them (every triangle the insertion changed has it as a corner), tell
+// their corners where they are, and are checked. `from` is a half-edge out of it.
+void Refiner::afterInsert(std::int32_t from) {
+  winding_.resize(topo_.slotCount());
+  vertexEdge_.resize(d_.vertexCount(), -1);
+  around_.clear();
+  std::int32_t e = from;
+  do {
+    around_.push_back(e);
+    e = topo_.adj[prevEdge(e)];
+  } while (e != from);
+  for (const std::int32_t h : around_) {
+    const std::int32_t t = h / 3, outer = nextEdge(h);
+    if (topo_.isGhost(t)) {
+      winding_[t] = 0;
+    } else {
+      const std::int32_t g = topo_.adj[outer];
+      winding_[t] = winding_[g / 3];
+      if (topo_.fixed[outer])
+        winding_[t] += d_.constraints.windingAcross(topo_.tri[g], topo_.tri[nextEdge(g)]);
+    }
+    noteCorners(t);
+  }
+  for (const std::int32_t h : around_) checkAround(h / 3);
+}
+
+void Refiner::noteCorners(std::int32_t t) {
+  for (std::int32_t k = 3 * t; k < 3 * t + 3; ++k)
+    if (topo_.tri[k] != kGhost) vertexEdge_[topo_.tri[k]] = k;
+}
+
+void Refiner::checkAround(std::int32_t t) {
+  checkTriangle(t);
+  if (topo_.isGhost(t)) return;
+  for (std::int32_t k = 3 * t; k < 3 * t + 3; ++k)
+    if (isSubsegment(k)) queueIfEncroached(k);
+}
+
+// Flips the edges on the stack until each is locally Delaunay, as Delaunay::restoreDelaunay
+// does, keeping windings (a flipped edge is unconstrained: both its triangles wind alike),
+// corners and checks up to date.
+void Refiner::restoreDelaunay(std::vector<std::int32_t>& stack) {
+  while (!stack.empty()) {
+    const std::int32_t e = stack.back();
+    stack.pop_back();
+    if (topo_.fixed[e] || d_.isLocallyDelaunay(e)) continue;
+    const std::int32_t f = topo_.adj[e];
+    topo_.flip(e);
+    ++d_.stats.flips;
+    winding_[f / 3] = winding_[e / 3];
+    for (const std::int32_t t : {e / 3, f / 3}) {
+      noteCorners(t);
+      checkAround(t);
+    }
+    stack.push_back(e);
+    stack.push_back(nextEdge(e));
+    stack.push_back(f);
+    stack.push_back(nextEdge(f));
+  }
+}
+
+Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
+  if (topo_.isGhost(e / 3)) e = topo_.adj[e];
+  const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
+  const std::uint32_t c = topo_.tri[prevEdge(e)], dv = topo_.tri[prevEdge(topo_.adj[e])];
+  if (!forced && !encroached(e)) return Outcome::Done;
+  // The point is placed on the segment, from the segment's own ends, so that it stays within
+  // the chains' bound of it however often it is split.
+  std::uint64_t id;
+  const InputSegment s = segmentOf(e, id);
+  const bool input = id < (std::uint64_t{1} << 32);
+  const double dx = s.bx - s.ax, dy = s.by - s.ay, length2 = dx * dx + dy * dy;
+  const double ta = ((x(a) - s.ax) * dx + (y(a) - s.ay) * dy) / length2;
+  const double tb = ((x(b) - s.ax) * dx + (y(b) - s.ay) * dy) / length2;
+  // Concentric shells: next to an input vertex where constraints meet, split at a power of
+  // two from it, so that the splits on its segments line up instead of chasing each other.
+  const bool acuteA = !(a < steinerFlag_.size() && steinerFlag_[a]) && constrainedDegree(a) > 1;
+  const bool acuteB = !(b < steinerFlag_.size() && steinerFlag_[b]) && constrainedDegree(b) > 1;
+  double f = 0.5;
+  if (acuteA != acuteB) {
+    const double length = std::hypot(x(b) - x(a), y(b) - y(a));
+    int exponent;
+    std::frexp(length, &exponent);
+    double n = std::ldexp(1.0, exponent);
+    while (length > 3 * n) n *= 2;
+    while (length < 1.5 * n) n *= 0.5;
+    f = acuteA ? n / length : 1 - n / length;
+  }
+  const double t = ta + (tb - ta) * f;
+  double px = (1 - t) * s.ax + t * s.bx, py = (1 - t) * s.ay + t * s.by;
+  const bool hull = topo_.isGhost(topo_.adj[e] / 3);
+  const auto strictlyBetween = [&](double qx, double qy) {
+    const int along = signAlong(s, x(a), y(a), x(b), y(b));
+    return along != 0 && signAlong(s, x(a), y(a), qx, qy) == along &&
+           signAlong(s, qx, qy, x(b), y(b)) == along;
+  };
+  // The four triangles around the point must be counter-clockwise, and a constrained
+  // edge's point within the bound of its segment, strictly between the ends along it.
+  const auto fitsAt = [&](double qx, double qy) {
+    if (!ccw(c, a, qx, qy) || !ccw(b, c, qx, qy) || !strictlyBetween(qx, qy)) return false;
+    if (!hull && !(ccw(a, dv, qx, qy) && ccw(dv, b, qx, qy))) return false;
+    return !input || withinDistance(s, qx, qy, chainBoundExponent(s));
+  };
+  bool fits = fitsAt(px, py);
+  if (hull) {
+    // On the hull the point must neither fall inside (the hull would turn reflex) nor
+    // beyond the hull's next edges (the hull would wrap round it, and the vertices it wraps
+    // would encroach the new hull edges ulps away from them): try it and its neighbouring
+    // doubles.
+    const std::int32_t f = topo_.adj[e];
+    const std::uint32_t before = topo_.tri[prevEdge(topo_.adj[nextEdge(f)])];
+    const std::uint32_t after = topo_.tri[prevEdge(topo_.adj[prevEdge(f)])];
+    const double x0 = px, y0 = py;
+    fits = false;
+    for (int k = 0; k < 9 && !fits; ++k) {
+      px = k % 3 == 0 ? x0 : std::nextafter(x0, k % 3 == 1 ? -INFINITY : INFINITY);
+      py = k / 3 == 0 ? y0 : std::nextafter(y0, k / 3 == 1 ? -INFINITY : INFINITY);
+      fits =
+          !ccw(a, b, px, py) && !ccw(a, before, px, py) && !ccw(after, b, px, py) && fitsAt(px, py);
+    }
+  }
+  if (!fits) {
+    unsplittable_.insert(ConstraintStore::key(a, b));
+    return Outcome::Skipped;
+  }
+  if (capReached()) {
+    capped_ = true;
+    return Outcome::Done;
+  }
+  const std::uint32_t p = newVertex(px, py);
+  if (topo_.fixed[e]) d_.constraints.split(a, b, p);
+  const auto hullEdge = hullOf_.find(ConstraintStore::key(a, b));
+  if (hullEdge != hullOf_.end()) {
+    const std::uint32_t original = hullEdge->second;
+    hullOf_.erase(hullEdge);
+    hullOf_[ConstraintStore::key(a, p)] = original;
+    hullOf_[ConstraintStore::key(p, b)] = original;
+  }
+  const std::int32_t spoke = d_.splitEdge(e, p);
+  // The weight from where the point landed, projected on the edge it split: accurate to the
+  // edge's length, where the segment's parameters are accurate to the segment's.
+  const double w = projection(x(a), y(a), x(b), y(b), px, py);
+  record(p, a, b, kNoVertex, 1 - w, w, 0);
+  afterInsert(spoke);
+  // The point is near the edge, not on it: the spokes to the apexes may need flips that a
+  // point on the edge would not.
+  std::vector<std::int32_t>& stack = d_.flipStack();
+  for (std::int32_t h = spoke;;) {
+    stack.push_back(h);
+    h = topo_.adj[prevEdge(h)];
+    if (h == spoke) break;
+  }
+  restoreDelaunay(stack);
+  return Outcome::Done;
+}
+
+Outcome Refiner::splitTriangle(const BadTriangle& bad) {
+  const std::int32_t t = bad.slot;
+  if (smallInputAngle(t)) return Outcome::Skipped;
+  // The shortest edge p -> q, the third corner r on its left.
+  std::uint32_t corner[3] = {bad.a, bad.b, bad.c};
+  int k0 = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t a = corner[k], b = corner[(k + 1) % 3];
+    const double l = (x(b) - x(a)) * (x(b) - x(a)) + (y(b) - y(a)) * (y(b) - y(a));
+    if (l < best) best = l, k0 = k;
+  }
+  const std::uint32_t p = corner[k0], q = corner[(k0 + 1) % 3], r = corner[(k0 + 2) % 3];
+  const double qx = x(q) - x(p), qy = y(q) - y(p), rx = x(r) - x(p), ry = y(r) - y(p);
+  const double twice = 2 * (qx * ry - qy * rx);
+  const double q2 = qx * qx + qy * qy, r2 = rx * rx + ry * ry;
+  double cx = (ry * q2 - qy * r2) / twice, cy = (qx * r2 - rx * q2) / twice;  // from p
+  double sin2, area;
+  measure(t, sin2, area);
+  if (sin2 < sin2_ && offCentre_ > 0) {
+    // The off-centre lies on the shortest edge's bisector, like the circumcentre; use it
+    // when it is nearer to the edge.
+    const double mx = 0.5 * qx, my = 0.5 * qy;
+    const double ox = mx - offCentre_ * qy, oy = my + offCentre_ * qx;
+    if ((ox - mx) * (ox - mx) + (oy - my) * (oy - my) <
+        (cx - mx) * (cx - mx) + (cy - my) * (cy - my)) {
+      cx = ox;
+      cy = oy;
+    }
+  }
+  cx += x(p);
+  cy += y(p);
+  if (!std::isfinite(cx) || !std::isfinite(cy)) return Outcome::Skipped;
+  // Walk towards the candidate; a subsegment in the way is split if the candidate
+  // encroaches it (then the triangle is tried again), else the triangle is left.
+  std::int32_t cur = t;
+  for (int step = 0;; ++step) {
+    if (step > 100000) return Outcome::Skipped;
+    std::int32_t exit = -1;
+    for (int k = 0; k < 3 && exit < 0; ++k) {
+      const std::int32_t e = 3 * cur + (k + step) % 3;
+      const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
+      if (orient2d(x(a), y(a), x(b), y(b), cx, cy) == Sign::Negative) exit = e;
+    }
+    if (exit < 0) break;
+    if (isSubsegment(exit)) {
+      const std::uint32_t a = topo_.tri[exit], b = topo_.tri[nextEdge(exit)];
+      if (!encroachedBy(x(a), y(a), x(b), y(b), cx, cy)) return Outcome::Skipped;
+      const std::size_t before = subsegments_.size();
+      queueSubsegment(exit, true);
+      return subsegments_.size() > before ? Outcome::Retry : Outcome::Skipped;
+    }
+    cur = topo_.adj[exit] / 3;
+    if (topo_.isGhost(cur)) return Outcome::Skipped;
+  }
+  // The cavity: the triangles whose circumcircles hold the candidate, reached without
+  // crossing subsegments. A subsegment on its border that the candidate encroaches is split
+  // instead.
+  ++epoch_;
+  stamp_.resize(topo_.slotCount(), 0);
+  cavity_.assign(1, cur);
+  stamp_[cur] = epoch_;
+  const std::size_t before = subsegments_.size();
+  for (std::size_t i = 0; i < cavity_.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t e = 3 * cavity_[i] + k;
+      const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
+      if (isSubsegment(e)) {
+        if (encroachedBy(x(a), y(a), x(b), y(b), cx, cy)) queueSubsegment(e, true);
+        continue;
+      }
+      const std::int32_t n = topo_.adj[e] / 3;
+      if (stamp_[n] == epoch_ || topo_.isGhost(n)) continue;
+      const std::uint32_t u = topo_.tri[3 * n], v = topo_.tri[3 * n + 1], w = topo_.tri[3 * n + 2];
+      if (incircle(x(u), y(u), x(v), y(v), x(w), y(w), cx, cy) != Sign::Positive) continue;
+      stamp_[n] = epoch_;
+      cavity_.push_back(n);
+    }
+  }
+  if (subsegments_.size() > before) return Outcome::Retry;
+  if (capReached()) {
+    capped_ = true;
+    return Outcome::Done;
+  }
+  const std::uint32_t v = newVertex(cx, cy);
+  d_.setLastTriangle(cur);
+  const Hit h = d_.locate(cx, cy, false);
+  if (h.kind != Hit::Kind::Face && h.kind != Hit::Kind::Edge) {
+    d_.xy.resize(d_.xy.size() - 2);
+    return h.kind == Hit::Kind::Failed ? Outcome::Failed : Outcome::Skipped;
+  }
+  // Where the point falls, for interpolation: its triangle's corners or its edge's ends.
+  const std::int32_t f = h.edge - h.edge % 3;
+  std::uint32_t parent[3] = {topo_.tri[f], topo_.tri[f + 1], topo_.tri[f + 2]};
+  double weight[3] = {0, 0, 0};
+  if (h.kind == Hit::Kind::Face) {
+    const double ox = x(parent[0]), oy = y(parent[0]);
+    const int e = scaleExponent({x(parent[1]) - ox, y(parent[1]) - oy, x(parent[2]) - ox,
+                                 y(parent[2]) - oy, cx - ox, cy - oy});
+    const auto area2 = [&](std::uint32_t a, std::uint32_t b) {
+      const double ax = std::ldexp(x(a) - ox, -e), ay = std::ldexp(y(a) - oy, -e);
+      const double bx = std::ldexp(x(b) - ox, -e), by = std::ldexp(y(b) - oy, -e);
+      const double qx = std::ldexp(cx - ox, -e), qy = std::ldexp(cy - oy, -e);
+      return (bx - ax) * (qy - ay) - (by - ay) * (qx - ax);
+    };
+    const double w0 = area2(parent[1], parent[2]), w1 = area2(parent[2], parent[0]);
+    const double w2 = area2(parent[0], parent[1]), sum = w0 + w1 + w2;
+    weight[0] = w0 / sum;
+    weight[1] = w1 / sum;
+    weight[2] = w2 / sum;
+    // In a sliver the areas cancel: where they miss the point, it lies next to one of the
+    // edges (numerically on it), and the edge's ends with its projection place it better.
+    double spread = 0;
+    const double wx =
+        weight[0] * x(parent[0]) + weight[1] * x(parent[1]) + weight[2] * x(parent[2]);
+    const double wy =
+        weight[0] * y(parent[0]) + weight[1] * y(parent[1]) + weight[2] * y(parent[2]);
+    const double missed = std::max(std::fabs(wx - cx), std::fabs(wy - cy));
+    for (int k = 0; k < 3; ++k)
+      spread = std::max({spread, std::fabs(x(parent[k]) - cx), std::fabs(y(parent[k]) - cy)});
+    if (!(missed <= 1e-12 * spread)) {
+      double best = INFINITY;
+      const std::uint32_t corners[3] = {parent[0], parent[1], parent[2]};
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = corners[k], b = corners[(k + 1) % 3];
+        const double w = projection(x(a), y(a), x(b), y(b), cx, cy);
+        const double dx = (1 - w) * x(a) + w * x(b) - cx, dy = (1 - w) * y(a) + w * y(b) - cy;
+        const double d = std::max(std::fabs(dx), std::fabs(dy));
+        if (d < best) {
+          best = d;
+          parent[0] = a, parent[1] = b, parent[2] = kNoVertex;
+          weight[0] = 1 - w, weight[1] = w, weight[2] = 0;
+        }
+      }
+    }
+  } else {
+    parent[0] = topo_.tri[h.edge];
+    parent[1] = topo_.tri[nextEdge(h.edge)];
+    parent[2] = kNoVertex;
+    const double w = projection(x(parent[0]), y(parent[0]), x(parent[1]), y(parent[1]), cx, cy);
+    weight[0] = 1 - w;
+    weight[1] = w;
+  }
+  if (d_.insertLocated(h, v) != v) {
+    d_.xy.resize(d_.xy.size() - 2);
+    return Outcome::Failed;
+  }
+  record(v, parent[0], parent[1], parent[2], weight[0], weight[1], weight[2]);
+  const std::int32_t last = d_.lastTriangle();
+  std::int32_t from = 3 * last;
+  while (topo_.tri[from] != v) ++from;
+  afterInsert(from);
+  return Outcome::Done;
+}
+
+Status Refiner::run() {
+  if (!d_.built()) return Status::success();
+  rebuild();
+  steinerFlag_.assign(d_.vertexCount(), 0);
+  for (const SteinerVertex& s : d_.steiner) steinerFlag_[s.vertex] = 1;
+  double domainArea = 0;
+  for (std::int32_t t = 0; t < topo_.slotCount(); ++t) {
+    if (!inRegion(t)) continue;
+    double sin2, area;
+    measure(t, sin2, area);
+    domainArea += area;
+  }
+  if (cap_ == 0) {
+    cap_ = std::numeric_limits<std::uint64_t>::max();
+    if (minAngle_ > kProvenAngle) {
+      const double byArea = std::isfinite(maxArea_) ? 4 * domainArea / maxArea_ : 0;
+      cap_ = 64 * static_cast<std::uint64_t>(d_.vertexCount()) + 1024 +
+             static_cast<std::uint64_t>(std::min(byArea, 1e18));
+    }
+  }
+  for (std::int32_t e = 0; keepAll_ && e < static_cast<std::int32_t>(topo_.tri.size()); ++e) {
+    if (topo_.isGhost(e / 3) || !topo_.isGhost(topo_.adj[e] / 3) || topo_.fixed[e]) continue;
+    const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
+    hullOf_[ConstraintStore::key(a, b)] = static_cast<std::uint32_t>(hull_.size());
+    hull_.push_back({x(a), y(a), x(b), y(b)});
+  }
+  for (std::int32_t t = 0; t < topo_.slotCount(); ++t) {
+    checkTriangle(t);
+    if (topo_.isGhost(t)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t e = 3 * t + k, twin = topo_.adj[e];
+      if (isSubsegment(e) && (topo_.isGhost(twin / 3) || e < twin)) queueIfEncroached(e);
+    }
+  }
+  std::vector<BadTriangle> retry;
+  while (!capped_) {
+    if (!subsegments_.empty()) {
+      const Subsegment s = subsegments_.back();
+      subsegments_.pop_back();
+      const std::int32_t e = findEdge(s.u, s.v);
+      if (e < 0) continue;
+      if (splitSubsegment(e, s.forced) == Outcome::Failed) break;
+      continue;
+    }
+    for (const BadTriangle& b : retry) checkTriangle(b.slot);
+    retry.clear();
+    if (bad_.empty()) break;
+    const BadTriangle b = bad_.pop();
+    const std::int32_t t = b.slot;
+    if (topo_.tri[3 * t] != b.a || topo_.tri[3 * t + 1] != b.b || topo_.tri[3 * t + 2] != b.c)
+      continue;
+    const Outcome o = splitTriangle(b);
+    if (o == Outcome::Failed) return d_.lastError();
+    if (o == Outcome::Retry) retry.push_back(b);
+  }
+  std::uint64_t left = 0;
+  for (std::int32_t t = 0; t < topo_.slotCount(); ++t) {
+    if (!inRegion(t)) continue;
+    double sin2, area;
+    measure(t, sin2, area);
+    left += sin2 < sin2_ || area > maxArea_;
+  }
+  d_.stats.steinerPoints += added_;
+  d_.stats.refineSkipped = left;
+  d_.stats.refineCapped = capped_;
+  return Status::success();
+}
+
+}  // namespace
+
+std::string refineOptionsError(const RefineOptions& o) {
+  if (!(o.minAngle >= 0 && o.minAngle < 60))
+    return "refine: minAngle must be a number of degrees from 0 to less than 60";
+  if (!(o.maxArea >= 0)) return "refine: maxArea must be a positive number of squared units";
+  return "";
+}
+
+Status refineTriangulation(Delaunay& d, const RefineOptions& options) {
+  Refiner refiner(d, options);
+  return refiner.run();
+}
+
+}  // namespace geocdt

@@ -1,0 +1,17 @@
+#pragma once
+// Delaunay refinement after Ruppert and Chew, made robust as Shewchuk describes: encroached
+// subsegments are split first (on concentric shells around input vertices, so that small
+// input angles do not make it loop), then bad triangles, worst first, at their off-centre or
+// circumcentre; a candidate that would encroach a subsegment splits the subsegment instead.
+// Steiner points are computed in floating point and inserted through the exact core.
+#include "delaunay.h"
+
+namespace geocdt {
+
+// Refines d as options say (already validated); adds to d.stats and d.steiner.
+Status refineTriangulation(Delaunay& d, const RefineOptions& options);
+
+// The message for an invalid RefineOptions, or "" when they are valid.
+std::string refineOptionsError(const RefineOptions& options);
+
+}  // namespace geocdt

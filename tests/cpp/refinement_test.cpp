@@ -1,0 +1,297 @@
+// Delaunay refinement: valid constrained Delaunay triangulations with their input intact,
+// every triangle within the bounds except those the stats own up to, Steiner records that
+// place their vertices.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "geocdt/triangulation.h"
+#include "invariants.h"
+#include "point_generators.h"
+#include "refinement_checks.h"
+
+namespace geocdt {
+namespace {
+
+using testing::Polylines;
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Refined {
+  Status status;
+  Mesh mesh;
+  Stats stats;
+  std::vector<std::uint32_t> ids;
+};
+
+// Points, then polylines, refined, exported with inside flags and all triangles.
+Refined refine(const std::vector<double>& points, const Polylines& lines, RefineOptions ro) {
+  Refined r;
+  Triangulation t;
+  r.ids.resize(points.size() / 2);
+  r.status = t.insertPoints(points.data(), points.size() / 2, r.ids.data());
+  std::vector<PolylineView> views;
+  std::size_t count = 0;
+  for (const auto& l : lines) {
+    views.push_back({l.data(), l.size() / 2});
+    count += l.size() / 2;
+  }
+  std::vector<std::uint32_t> lineIds(count);
+  if (r.status.ok()) r.status = t.insertPolylines(views.data(), views.size(), lineIds.data());
+  r.ids.insert(r.ids.end(), lineIds.begin(), lineIds.end());
+  if (r.status.ok()) r.status = t.refine(ro);
+  MeshOptions mo;
+  mo.insideFlags = true;
+  mo.fill = ro.fill;
+  r.mesh = t.mesh(mo);
+  r.stats = t.stats();
+  return r;
+}
+
+std::vector<double> circle(double cx, double cy, double radius, int n) {
+  std::vector<double> ring;
+  for (int i = 0; i <= n; ++i) {
+    const double a = 2 * kPi * (i % n) / n;
+    ring.push_back(cx + radius * std::cos(a));
+    ring.push_back(cy + radius * std::sin(a));
+  }
+  return ring;
+}
+
+const Polylines kSquareWithHole = {{0, 0, 10, 0, 10, 10, 0, 10, 0, 0}, circle(5, 5, 2, 24)};
+
+TEST(Refinement, SquareWithAHoleInsideAtSeveralAngles) {
+  for (const double angle : {0.0, 20.0, 25.0, 30.0, 33.0}) {
+    RefineOptions ro;
+    ro.minAngle = angle;
+    ro.keep = Keep::Inside;
+    const Refined r = refine({}, kSquareWithHole, ro);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_FALSE(r.stats.refineCapped) << angle;
+    EXPECT_EQ(r.stats.refineSkipped, 0u) << angle;
+    EXPECT_EQ(r.stats.steinerPoints, r.mesh.steiner.size());
+    EXPECT_EQ(testing::checkRefined(r.mesh, {}, kSquareWithHole, r.ids, angle, 0, true, 0), "")
+        << angle;
+  }
+}
+
+TEST(Refinement, InsideOnlyLeavesTheOutsideAlone) {
+  RefineOptions ro;
+  ro.minAngle = 30;
+  ro.keep = Keep::Inside;
+  const Refined r = refine({}, kSquareWithHole, ro);
+  ASSERT_TRUE(r.status.ok());
+  // No Steiner vertex inside the hole (the outside): its triangles are those of its ring.
+  for (const std::uint32_t v : r.mesh.steiner) {
+    const double dx = r.mesh.points[2 * v] - 5, dy = r.mesh.points[2 * v + 1] - 5;
+    EXPECT_GT(dx * dx + dy * dy, 2 * 2 * 0.98) << v;
+  }
+  EXPECT_GT(r.mesh.steiner.size(), 0u);
+  // keep all refines the hole as well.
+  ro.keep = Keep::All;
+  const Refined all = refine({}, kSquareWithHole, ro);
+  EXPECT_GT(all.mesh.steiner.size(), r.mesh.steiner.size());
+  EXPECT_EQ(testing::checkRefined(all.mesh, {}, kSquareWithHole, all.ids, 30, 0, false, 0), "");
+}
+
+TEST(Refinement, MaximumArea) {
+  RefineOptions ro;
+  ro.minAngle = 20;
+  ro.maxArea = 0.05;
+  ro.keep = Keep::Inside;
+  const Refined r = refine({}, kSquareWithHole, ro);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_EQ(r.stats.refineSkipped, 0u);
+  EXPECT_EQ(testing::checkRefined(r.mesh, {}, kSquareWithHole, r.ids, 20, 0.05, true, 0), "");
+  // Area alone, no angle bound.
+  ro.minAngle = 0;
+  const Refined a = refine({}, kSquareWithHole, ro);
+  EXPECT_EQ(testing::checkRefined(a.mesh, {}, kSquareWithHole, a.ids, 0, 0.05, true, 0), "");
+  EXPECT_GT(a.mesh.steiner.size(), 100u);
+}
+
+TEST(Refinement, LatticesAndRandomPoints) {
+  const Polylines box = {{-1, -1, 64, -1, 64, 64, -1, 64, -1, -1}};
+  for (const auto& points : {testing::latticePoints(24), testing::uniformPoints(2000, 3),
+                             testing::gaussianClusters(2000, 4)}) {
+    // Points in [0, 1)^2 or on the lattice: scale the random ones into the box.
+    std::vector<double> p = points;
+    if (p[2] < 1) p = testing::transformed(points, 32, 8, 8);
+    RefineOptions ro;
+    ro.minAngle = 28;
+    const Refined r = refine(p, box, ro);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_FALSE(r.stats.refineCapped);
+    EXPECT_EQ(testing::checkRefined(r.mesh, p, box, r.ids, 28, 0, false, 0), "");
+  }
+}
+
+// Points alone: the convex hull bounds the domain. A split point on a hull edge must keep
+// the hull convex without wrapping it round earlier vertices; where rounding leaves no such
+// double, the edge stays, and its triangles are counted.
+TEST(Refinement, PointsAloneRefineTheirConvexHull) {
+  const std::vector<double> p = testing::uniformPoints(500, 9);
+  RefineOptions ro;
+  ro.minAngle = 25;
+  const Refined r = refine(p, {}, ro);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_FALSE(r.stats.refineCapped);
+  EXPECT_LT(r.stats.refineSkipped * 10, r.mesh.triangles.size() / 3);
+  EXPECT_EQ(testing::checkRefined(r.mesh, p, {}, r.ids, 25, 0, false, r.stats.refineSkipped), "");
+  // An axis-aligned hull splits exactly: nothing is left.
+  const std::vector<double> lattice = testing::latticePoints(12);
+  const Refined l = refine(lattice, {}, ro);
+  EXPECT_EQ(l.stats.refineSkipped, 0u);
+  EXPECT_EQ(testing::checkRefined(l.mesh, lattice, {}, l.ids, 25, 0, false, 0), "");
+}
+
+// A fan of segments from one vertex, a degree apart: the angles between them cannot be
+// mended; refinement ends anyway, owning up to what it left in the fan.
+TEST(Refinement, TinyInputAnglesEndAndAreCounted) {
+  Polylines lines;
+  for (int i = 0; i < 6; ++i) {
+    const double a = (40 + i) * kPi / 180;
+    lines.push_back({0, 0, 100 * std::cos(a), 100 * std::sin(a)});
+  }
+  lines.push_back({-50, -50, 150, -50, 150, 150, -50, 150, -50, -50});
+  RefineOptions ro;
+  ro.minAngle = 20;
+  const Refined r = refine({}, lines, ro);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_FALSE(r.stats.refineCapped);
+  EXPECT_GT(r.stats.refineSkipped, 0u);
+  EXPECT_EQ(testing::checkRefined(r.mesh, {}, lines, r.ids, 20, 0, false, r.stats.refineSkipped),
+            "");
+  // Every triangle left bad has a corner at the fan's apex, or lies within the fan.
+  for (std::size_t t = 0; t < r.mesh.triangles.size() / 3; ++t) {
+    if (testing::smallestAngle(r.mesh, t) >= 20 * (1 - 1e-9)) continue;
+    double cx = 0, cy = 0;
+    for (int k = 0; k < 3; ++k) {
+      cx += r.mesh.points[2 * r.mesh.triangles[3 * t + k]] / 3;
+      cy += r.mesh.points[2 * r.mesh.triangles[3 * t + k] + 1] / 3;
+    }
+    const double a = std::atan2(cy, cx) * 180 / kPi;
+    EXPECT_TRUE(a > 39.5 && a < 45.5) << "a bad triangle at angle " << a;
+  }
+}
+
+TEST(Refinement, TheCapStopsItAndSaysSo) {
+  RefineOptions ro;
+  ro.minAngle = 30;
+  ro.maxSteinerPoints = 7;
+  ro.keep = Keep::Inside;
+  const Refined r = refine({}, kSquareWithHole, ro);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_TRUE(r.stats.refineCapped);
+  EXPECT_EQ(r.mesh.steiner.size(), 7u);
+  EXPECT_GT(r.stats.refineSkipped, 0u);
+  EXPECT_EQ(
+      testing::checkRefined(r.mesh, {}, kSquareWithHole, r.ids, 30, 0, true, r.stats.refineSkipped),
+      "");
+  // Beyond the proven angle with no cap given, a default cap still ends it.
+  ro.maxSteinerPoints = 0;
+  ro.minAngle = 45;
+  const Refined d = refine({}, kSquareWithHole, ro);
+  ASSERT_TRUE(d.status.ok());
+  EXPECT_TRUE(d.stats.refineCapped);
+  EXPECT_EQ(testing::checkRefined(d.mesh, {}, kSquareWithHole, d.ids, 0, 0, true, 0), "");
+}
+
+TEST(Refinement, SteinerPointsOnConstraintsKeepProvenance) {
+  // Two overlapping polylines along y = 0 and a third crossing: the split edges keep all.
+  const Polylines lines = {{0, 0, 10, 0},
+                           {2, 0, 8, 0},
+                           {5, -1, 5, 3},
+                           {0, 0.1, 10, 0.1},
+                           {-2, -2, 12, -2, 12, 4, -2, 4, -2, -2}};
+  RefineOptions ro;
+  ro.minAngle = 30;
+  const Refined r = refine({}, lines, ro);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_EQ(testing::checkRefined(r.mesh, {}, lines, r.ids, 30, 0, false, 0), "");
+  // Constrained edges between x = 2 and 8 on y = 0 list polylines 0 and 1.
+  const Mesh& m = r.mesh;
+  int shared = 0;
+  for (std::size_t i = 0; i < m.constraintEdges.size(); ++i) {
+    const std::uint32_t e = m.constraintEdges[i];
+    const std::uint32_t a = m.triangles[e], b = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
+    if (m.points[2 * a + 1] != 0 || m.points[2 * b + 1] != 0) continue;
+    const double mid = 0.5 * (m.points[2 * a] + m.points[2 * b]);
+    const std::size_t n = m.sourceOffsets[i + 1] - m.sourceOffsets[i];
+    EXPECT_EQ(n, mid > 2 && mid < 8 ? 2u : 1u) << mid;
+    shared += n == 2;
+  }
+  EXPECT_GT(shared, 2);
+}
+
+TEST(Refinement, AgainAfterMoreInsertions) {
+  Triangulation t;
+  const std::vector<double> ring = kSquareWithHole[0];
+  ASSERT_TRUE(t.insertPolyline(ring.data(), ring.size() / 2).ok());
+  RefineOptions ro;
+  ro.minAngle = 25;
+  ASSERT_TRUE(t.refine(ro).ok());
+  const std::size_t first = t.stats().steinerPoints;
+  const std::vector<double> more = testing::transformed(testing::uniformPoints(50, 2), 10, 0, 0);
+  ASSERT_TRUE(t.insertPoints(more.data(), more.size() / 2).ok());
+  const std::vector<double> line = {1, 1, 9, 2};
+  ASSERT_TRUE(t.insertPolyline(line.data(), 2).ok());
+  ASSERT_TRUE(t.refine(ro).ok());
+  EXPECT_GT(t.stats().steinerPoints, first);
+  MeshOptions mo;
+  mo.insideFlags = true;
+  const Mesh m = t.mesh(mo);
+  EXPECT_EQ(testing::checkTriangulation(m), "");
+  EXPECT_EQ(testing::countBadTriangles(m, 25, 0, false), 0u);
+  EXPECT_EQ(m.steiner.size(), t.stats().steinerPoints);
+}
+
+TEST(Refinement, OneShotTriangulateRefinesBeforeExport) {
+  std::vector<PolylineView> views;
+  for (const auto& l : kSquareWithHole) views.push_back({l.data(), l.size() / 2});
+  RefineOptions ro;
+  ro.minAngle = 30;
+  MeshOptions mo;
+  mo.keep = Keep::Inside;
+  Mesh m;
+  ASSERT_TRUE(triangulate(nullptr, 0, views.data(), views.size(), {}, mo, m, nullptr, &ro).ok());
+  EXPECT_GT(m.steiner.size(), 0u);
+  for (std::size_t t = 0; t < m.triangles.size() / 3; ++t)
+    EXPECT_GE(testing::smallestAngle(m, t), 30 * (1 - 1e-9));
+}
+
+TEST(Refinement, InvalidOptionsChangeNothing) {
+  Triangulation t;
+  const std::vector<double> ring = kSquareWithHole[0];
+  ASSERT_TRUE(t.insertPolyline(ring.data(), ring.size() / 2).ok());
+  for (const double angle : {-1.0, 60.0, std::nan("")}) {
+    RefineOptions ro;
+    ro.minAngle = angle;
+    EXPECT_EQ(t.refine(ro).code, StatusCode::InvalidArgument);
+  }
+  RefineOptions ro;
+  ro.maxArea = -1;
+  EXPECT_EQ(t.refine(ro).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(t.vertexCount(), 4u);
+  // Nothing to refine: no triangles yet.
+  Triangulation empty;
+  EXPECT_TRUE(empty.refine({}).ok());
+}
+
+TEST(Refinement, ScaleFreeFromTinyToHugeCoordinates) {
+  for (const double scale : {0x1p-30, 1.0, 0x1p40}) {
+    Polylines lines;
+    for (const auto& l : kSquareWithHole)
+      lines.push_back(testing::transformed(l, scale, 3 * scale, 0));
+    RefineOptions ro;
+    ro.minAngle = 30;
+    ro.keep = Keep::Inside;
+    const Refined r = refine({}, lines, ro);
+    ASSERT_TRUE(r.status.ok());
+    EXPECT_EQ(testing::checkRefined(r.mesh, {}, lines, r.ids, 30, 0, true, 0), "") << scale;
+  }
+}
+
+}  // namespace
+}  // namespace geocdt
