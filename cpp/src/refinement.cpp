@@ -235,7 +235,7 @@ InputSegment Refiner::segmentOf(std::int32_t e, std::uint64_t& id) const {
     const EdgeSource* src = d_.constraints.find(a, b);
     if (src) {
       id = src->segment;
-      return d_.constraints.segments[src->segment];
+      return d_.constraints.geometry(src->segment, d_.xy);
     }
   }
   const auto hull = hullOf_.find(ConstraintStore::key(a, b));
