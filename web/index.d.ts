@@ -208,6 +208,7 @@ export interface Mesh {
    * given without values.
    */
   values?: Float64Array;
+  /**
    * Refinement's Steiner vertices, in the order they were added (present after refinement).
    * steiner[i] is a vertex id, placed between the vertices steinerParents[3i..3i+2] (the
    * corners of the triangle it fell in, or the two ends of the edge it split and 0xFFFFFFFF)

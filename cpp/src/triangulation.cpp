@@ -169,7 +169,6 @@ Mesh exportWithValues(Triangulation::State& state, const MeshOptions& options, b
 
 }  // namespace
 
-
 Status Triangulation::refine(const RefineOptions& options) {
   const std::string error = refineOptionsError(options);
   if (!error.empty()) return {StatusCode::InvalidArgument, error};
@@ -252,8 +251,7 @@ Status triangulate(const double* xy, std::size_t count, const PolylineView* poly
   return triangulateWith(
       count,
       [&](Triangulation& t, std::uint32_t* ids) { return t.insertPoints(xy, count, ids, values); },
-      polylines, polylineCount, options, meshOptions, out, inputToVertex, values,
-      refine);
+      polylines, polylineCount, options, meshOptions, out, inputToVertex, values, refine);
 }
 
 Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
@@ -266,8 +264,7 @@ Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
       [&](Triangulation& t, std::uint32_t* ids) {
         return t.insertPoints(std::move(xy), ids, values);
       },
-      polylines, polylineCount, options, meshOptions, out, inputToVertex, values,
-      refine);
+      polylines, polylineCount, options, meshOptions, out, inputToVertex, values, refine);
 }
 
 }  // namespace geocdt

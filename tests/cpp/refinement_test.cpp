@@ -255,7 +255,8 @@ TEST(Refinement, OneShotTriangulateRefinesBeforeExport) {
   MeshOptions mo;
   mo.keep = Keep::Inside;
   Mesh m;
-  ASSERT_TRUE(triangulate(nullptr, 0, views.data(), views.size(), {}, mo, m, nullptr, nullptr, &ro).ok());
+  ASSERT_TRUE(
+      triangulate(nullptr, 0, views.data(), views.size(), {}, mo, m, nullptr, nullptr, &ro).ok());
   EXPECT_GT(m.steiner.size(), 0u);
   for (std::size_t t = 0; t < m.triangles.size() / 3; ++t)
     EXPECT_GE(testing::smallestAngle(m, t), 30 * (1 - 1e-9));
