@@ -175,7 +175,17 @@ Status Triangulation::refine(const RefineOptions& options) {
   State& state = *state_;
   state.slotMapValid = false;
   try {
-    return refineTriangulation(state.delaunay, options);
+    const std::size_t before = state.delaunay.steiner.size();
+    const Status s = refineTriangulation(state.delaunay, options);
+    // Steiner vertices interpolate their values linearly from where they were placed.
+    if (state.values.active()) {
+      for (std::size_t i = before; i < state.delaunay.steiner.size(); ++i) {
+        const SteinerVertex& v = state.delaunay.steiner[i];
+        state.values.derive(v.vertex, v.parents, v.weights, v.parents[2] == kNoVertex ? 2 : 3);
+      }
+      state.values.invalidate();
+    }
+    return s;
   } catch (const std::bad_alloc&) {
     state.delaunay.clear();
     return outOfMemory();

@@ -296,3 +296,36 @@ TEST(Refinement, ScaleFreeFromTinyToHugeCoordinates) {
 
 }  // namespace
 }  // namespace geocdt
+
+namespace geocdt {
+namespace {
+
+TEST(Refinement, SteinerVerticesInterpolateTheValues) {
+  // A linear function given at the input points (a square ring and points inside) must come
+  // out exactly linear at every Steiner vertex, on constrained edges and inside alike.
+  const auto f = [](double x, double y) { return 3.0 * x - 2.0 * y + 7.0; };
+  Options options;
+  options.valuesPerPoint = 1;
+  Triangulation t(options);
+  std::vector<double> xy = testing::uniformPoints(200, 5);
+  std::vector<double> values;
+  for (std::size_t i = 0; i < xy.size(); i += 2) values.push_back(f(xy[i], xy[i + 1]));
+  ASSERT_TRUE(t.insertPoints(xy.data(), xy.size() / 2, nullptr, values.data()).ok());
+  const std::vector<double> ring{-0.5, -0.5, 1.5, -0.5, 1.5, 1.5, -0.5, 1.5, -0.5, -0.5};
+  std::vector<double> ringValues;
+  for (std::size_t i = 0; i < ring.size(); i += 2) ringValues.push_back(f(ring[i], ring[i + 1]));
+  ASSERT_TRUE(t.insertPolyline(ring.data(), ring.size() / 2, nullptr, ringValues.data()).ok());
+  RefineOptions ro;
+  ro.minAngle = 30;
+  ASSERT_TRUE(t.refine(ro).ok());
+  const Mesh m = t.mesh();
+  ASSERT_FALSE(m.steiner.empty());
+  ASSERT_EQ(m.values.size(), m.points.size() / 2);
+  for (const std::uint32_t v : m.steiner) {
+    const double expected = f(m.points[2 * v], m.points[2 * v + 1]);
+    EXPECT_NEAR(m.values[v], expected, 1e-12 * 16) << "Steiner vertex " << v;
+  }
+}
+
+}  // namespace
+}  // namespace geocdt
