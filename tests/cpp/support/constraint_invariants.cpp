@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 #include <unordered_map>
 
 #include "geocdt/predicates.h"
@@ -275,20 +276,25 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   };
 
   // How far v strays from segment i in units of the spacing of doubles on each axis there
-  // (snap rounding keeps a chain within one such unit).
+  // (snap rounding keeps a chain within one such unit). In double, exactly as the core's
+  // chain check computes it, so that both pick the same chain where several stray equally
+  // (in a tangle, the choice decides whether two chains seem to cross).
   const auto stray = [&](std::size_t i, std::uint32_t v) {
     const Segment& s = segments[i];
     const double gx = spacing(std::max(std::fabs(s.ax), std::fabs(s.bx)));
     const double gy = spacing(std::max(std::fabs(s.ay), std::fabs(s.by)));
-    return distanceToSegment({s.ax / gx, s.ay / gy, s.bx / gx, s.by / gy}, p[2 * v] / gx,
-                             p[2 * v + 1] / gy);
+    const double dx = (s.bx - s.ax) / gx, dy = (s.by - s.ay) / gy;
+    const double wx = (p[2 * v] - s.ax) / gx, wy = (p[2 * v + 1] - s.ay) / gy;
+    const double t = std::clamp((wx * dx + wy * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    return std::hypot(wx - t * dx, wy - t * dy);
   };
   // From each segment's start, constrained edges to vertices within the bound and further
   // along lead to its end (a graph without cycles: positions increase). Where several chains
   // would do, the one that strays least is the segment's: the chain snap rounding gives.
+  // Ties go to the lower vertex ids, as in the core.
   std::vector<std::uint32_t> seenAt(p.size() / 2, 0xFFFFFFFFu), from(p.size() / 2);
   struct Step {
-    long double cost;  // the most a chain to here strays
+    double cost;  // the most a chain to here strays
     std::uint32_t at, before;
   };
   std::vector<Step> queue;
@@ -297,8 +303,10 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   const auto search = [&](std::size_t i, double bound, bool ordered) {
     const Segment& s = segments[i];
     const std::uint32_t goal = ends[i].second, mark = searches++;
-    queue.assign(1, {0.0L, ends[i].first, ends[i].first});
-    const auto later = [](const Step& a, const Step& b) { return a.cost > b.cost; };
+    queue.assign(1, {0.0, ends[i].first, ends[i].first});
+    const auto later = [](const Step& a, const Step& b) {
+      return std::tie(a.cost, a.at, a.before) > std::tie(b.cost, b.at, b.before);
+    };
     while (!queue.empty()) {
       std::pop_heap(queue.begin(), queue.end(), later);
       const Step step = queue.back();
@@ -342,12 +350,46 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   // The output names polylines, not segments: in a tangle a few ulps wide, a segment's chain
   // can borrow edges of a neighbouring segment of its polyline, or pass one of its own
   // vertices by, and still keep the bound. So a pair of chains that seems to cross is checked
-  // again with every chain of the two segments (up to 64 each): it fails only when every
-  // choice crosses.
+  // again with other chains of the two segments: first the one through the most vertices
+  // (snap rounding routes a segment through every vertex whose rounding cell it meets, where
+  // the least-straying chain may take a shortcut along a neighbouring segment of the
+  // polyline), then every chain (up to 64 each): it fails only when every choice crosses.
+  // Positions along the segment increase along a chain: in that order, one pass finds a
+  // longest chain.
+  const auto densestChain = [&](std::size_t i) {
+    const Segment& s = segments[i];
+    const std::uint32_t a = ends[i].first, b = ends[i].second;
+    const auto forward = [&](std::uint32_t u, std::uint32_t n) {
+      return names(u, n, polylineOf[i]) && within(s, p[2 * n], p[2 * n + 1], bounds[i]) &&
+             alongSign(s, p[2 * u], p[2 * u + 1], p[2 * n], p[2 * n + 1]) > 0;
+    };
+    // Vertex -> (vertices on the longest chain from a to it, the one before it there).
+    std::unordered_map<std::uint32_t, std::pair<std::size_t, std::uint32_t>> longest{{a, {1, a}}};
+    std::vector<std::uint32_t> order(1, a);  // the vertices reached from a
+    for (std::size_t k = 0; k < order.size(); ++k)
+      for (const std::uint32_t n : next[order[k]])
+        if (!longest.count(n) && forward(order[k], n)) {
+          longest[n] = {0, n};
+          order.push_back(n);
+        }
+    std::sort(order.begin(), order.end(), [&](std::uint32_t u, std::uint32_t v) {
+      return alongSign(s, p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]) > 0;
+    });
+    for (const std::uint32_t u : order)
+      for (const std::uint32_t n : next[u])
+        if (longest.count(n) && longest[u].first + 1 > longest[n].first && forward(u, n))
+          longest[n] = {longest[u].first + 1, u};
+    std::vector<std::uint32_t> chain;
+    if (!longest.count(b)) return chain;
+    for (std::uint32_t v = b; v != a; v = longest[v].second) chain.push_back(v);
+    chain.push_back(a);
+    std::reverse(chain.begin(), chain.end());
+    return chain;
+  };
   const auto everyChain = [&](std::size_t i) {
     const Segment& s = segments[i];
     const std::uint32_t a = ends[i].first, b = ends[i].second;
-    std::vector<std::vector<std::uint32_t>> found;
+    std::vector<std::vector<std::uint32_t>> found(1, densestChain(i));
     std::vector<std::uint32_t> path(1, a);
     std::vector<std::size_t> choice(1, 0);
     while (!path.empty() && found.size() < 64) {
