@@ -57,6 +57,11 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     } else if (!flipIn(piece.a, w.reached, piece.src)) {
       return broken("re-triangulating along a segment failed");
     }
+    // Through a vertex on the segment: a crossing added earlier can lie exactly on it, off
+    // the segment whose chain it bends, so that the two chains meet there: checked.
+    if (w.reached != piece.b)
+      d_.constraints.forEachSegment(piece.src,
+                                    [&](std::uint32_t i) { touchedSegments_.push_back(i); });
     pieces_.back().a = w.reached;
     ++d_.stats.segments;
   }
