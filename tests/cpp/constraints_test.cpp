@@ -604,6 +604,165 @@ TEST(Constraints, FuzzCrossingOfBentPiecesCrossesChains) {
   EXPECT_EQ(broken, "");
 }
 
+TEST(Constraints, FuzzTangleCoreAndCheckerPickTheSameChains) {
+  // One polyline within 4e-11 of zero: several chains of a segment strayed equally far, and
+  // the core's check and the checker picked different ones (the core's did not cross, the
+  // checker's did). Both now pick the same: the computed crossings are kept, and pass.
+  const Polylines lines = {{1.9172148313373326e-11, 3.4960976336151359e-11, 1.9172148313373326e-11,
+                            3.4960976336151359e-11, 1.9172148313373326e-11, 3.4960976336151359e-11,
+                            1.2369127944111822e-11, 2.2555468603968621e-11, 1.2369127944111822e-11,
+                            2.2555468603968624e-11, 1.9172148313373326e-11, 3.4960976336151359e-11,
+                            1.5770638128742572e-11, 2.8758222470059989e-11, 1.5770638128742572e-11,
+                            2.8758222470059989e-11, 1.5770638128742572e-11, 2.8758222470059989e-11,
+                            1.2369127944111822e-11, 2.2555468603968624e-11, 1.9172148313373326e-11,
+                            3.4960976336151359e-11, 1.5770638128742572e-11, 2.8758222470059992e-11,
+                            1.4069883036427197e-11, 2.5656845537014306e-11, 1.7471393221057949e-11,
+                            3.1859599403105677e-11, 1.2369127944111822e-11, 2.2555468603968621e-11,
+                            1.9172148313373326e-11, 3.4960976336151359e-11, 1.9172148313373326e-11,
+                            3.4960976336151359e-11}};
+  Options o;
+  o.start = LocateStart::Grid;
+  o.gridDensity = 2;
+  std::string broken;
+  EXPECT_EQ(snapRoundings(lines, o, true, broken), 0);
+  EXPECT_EQ(broken, "");
+}
+
+TEST(Constraints, FuzzSnapRoundedTangleChainThroughMostVertices) {
+  // Within 2e-11 of (-12345.678, 0): snap rounding routes each segment through every vertex
+  // whose rounding cell it meets, and the chains it routes do not cross; the least-straying
+  // chain of one segment took a shortcut along its polyline's neighbouring segment and
+  // seemed to cross. The checker also tries the chain through the most vertices.
+  const Polylines lines = {{-12345.67800000002, 1.9936406003383105e-11, -12345.678, 0},
+                           {-12345.678000000016, 1.6720856647998733e-11,
+                            -12345.678000000011, 9.9682030016915524e-12,
+                            -12345.678000000014, 1.4952304502537328e-11,
+                            -12345.678000000018, 1.9936406003383108e-11,
+                            -12345.678,          0,
+                            -12345.678000000011, 9.9682030016915524e-12,
+                            -12345.678000000004, 3.2155493553843714e-12,
+                            -12345.678000000013, 1.2460253752114439e-11,
+                            -12345.678,          0,
+                            -12345.678,          0,
+                            -12345.678000000002, 2.5724394843074972e-12,
+                            -12345.678000000018, 1.8328631325690922e-11,
+                            -12345.678,          0,
+                            -12345.678,          0,
+                            -12345.678000000016, 1.6720856647998733e-11}};
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.gridDensity = 0.25;
+  std::string broken;
+  EXPECT_EQ(snapRoundings(lines, o, true, broken), 1);
+  EXPECT_EQ(broken, "");
+}
+
+TEST(Constraints, FuzzTangleSegmentThroughCrossingOfEarlierCall) {
+  // Within 3e-11 of (1, -12345.678), one call each: the second polyline passes exactly
+  // through a crossing the first call added off its segment, so that their chains cross
+  // there; the second call's segment met no crossing and was not checked.
+  const Polylines lines = {{1.0000000000265572,
+                            -12345.677999999991,
+                            1.0000000000023648,
+                            -12345.677999999998,
+                            1.0000000000023648,
+                            -12345.677999999998,
+                            1.0000000000144609,
+                            -12345.677999999994,
+                            1.0000000000144609,
+                            -12345.677999999994,
+                            1.0000000000130966,
+                            -12345.677999999996,
+                            1,
+                            -12345.678,
+                            1,
+                            -12345.678,
+                            1.0000000000158251,
+                            -12345.677999999993,
+                            1.000000000022701,
+                            -12345.677999999993,
+                            1.0000000000106593,
+                            -12345.677999999985,
+                            1.0000000000158251,
+                            -12345.677999999993,
+                            1.0000000000265572,
+                            -12345.677999999991},
+                           {1.0000000000016007, -12345.677999999996, 1.0000000000079126,
+                            -12345.677999999996, 1, -12345.678, 1, -12345.678, 1, -12345.678}};
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::Grid;
+  std::string broken;
+  EXPECT_GE(snapRoundings(lines, o, false, broken), 1);
+  EXPECT_EQ(broken, "");
+}
+
+TEST(Constraints, FuzzTangleSplitPiecePassesVertex) {
+  // Within 4e-11 of (1, -12345.678), one call each: a crossing split inside the crossed
+  // edge's two triangles bent the piece being inserted around a vertex farther along it;
+  // that piece's chain was not checked.
+  const Polylines lines = {
+      {1.0000000000191722,
+       -12345.677999999965,
+       1.0000000000247746,
+       -12345.677999999984,
+       1.0000000000008731,
+       -12345.678,
+       0.99999999999872669,
+       -12345.677999999996,
+       1.0000000000265572,
+       -12345.677999999991,
+       1.0000000000021101,
+       -12345.677999999998,
+       1.0000000000053477,
+       -12345.677999999973,
+       1.0000000000100226,
+       -12345.677999999982,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1.0000000000052387,
+       -12345.677999999998,
+       1.0000000000191722,
+       -12345.677999999965},
+      {1, -12345.678},
+      {1, -12345.678},
+      {0.99999999999210554, -12345.677999999973, 1.0000000000219735, -12345.677999999974,
+       1.0000000000008731, -12345.678, 1, -12345.678, 1, -12345.678},
+      {1.0000000000158251, -12345.677999999993},
+      {0.99999999999592548,
+       -12345.677999999985,
+       1.0000000000047293,
+       -12345.677999999974,
+       1.0000000000268119,
+       -12345.677999999991,
+       0.99999999999487044,
+       -12345.677999999976,
+       1.0000000000105864,
+       -12345.677999999971,
+       1.0000000000016007,
+       -12345.677999999996,
+       1.0000000000079126,
+       -12345.677999999996,
+       1.0000000000079126,
+       -12345.677999999996,
+       1.000000000023574,
+       -12345.677999999993,
+       1,
+       -12345.678,
+       1,
+       -12345.678}};
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::Grid;
+  std::string broken;
+  EXPECT_GE(snapRoundings(lines, o, false, broken), 1);
+  EXPECT_EQ(broken, "");
+}
+
 TEST(Constraints, SnapRoundingAcrossBinadeEnds) {
   // Where the spacing of doubles doubles (at 1 and at 2^24), rounding cells are uneven; a
   // vertex left between a segment and its chain joins the chain. Subnormal steps on the
