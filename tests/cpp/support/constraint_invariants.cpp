@@ -68,6 +68,23 @@ bool within(const Segment& s, double x, double y, double bound) {
   return withinExactly(s, x, y, bound);
 }
 
+// Whether segment s meets the rounding cell of (x, y), the box of the points that round to
+// it (closed here, and in long double: it only ranks chains, it decides nothing).
+bool meetsCell(const Segment& s, double x, double y) {
+  long double lo = 0, hi = 1;
+  const auto clip = [&](double a, double b, double c) {
+    const long double below = (c - std::nextafter(c, -INFINITY)) / 2.0L;
+    const long double above = (std::nextafter(c, INFINITY) - c) / 2.0L;
+    const long double w = (long double)a - c, d = (long double)b - a;
+    if (d == 0) return -below <= w && w <= above;
+    const long double t0 = (-below - w) / d, t1 = (above - w) / d;
+    lo = std::max(lo, std::min(t0, t1));
+    hi = std::min(hi, std::max(t0, t1));
+    return true;
+  };
+  return clip(s.ax, s.bx, x) && clip(s.ay, s.by, y) && lo <= hi;
+}
+
 // The sign of (q - p) . (b - a): whether q lies beyond p along the segment's direction.
 int alongSign(const Segment& s, double px, double py, double qx, double qy) {
   const long double ux = (long double)qx - px, uy = (long double)qy - py;
@@ -350,38 +367,50 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   // The output names polylines, not segments: in a tangle a few ulps wide, a segment's chain
   // can borrow edges of a neighbouring segment of its polyline, or pass one of its own
   // vertices by, and still keep the bound. So a pair of chains that seems to cross is checked
-  // again with other chains of the two segments: first the one through the most vertices
-  // (snap rounding routes a segment through every vertex whose rounding cell it meets, where
-  // the least-straying chain may take a shortcut along a neighbouring segment of the
-  // polyline), then every chain (up to 64 each): it fails only when every choice crosses.
-  // Positions along the segment increase along a chain: in that order, one pass finds a
-  // longest chain.
-  const auto densestChain = [&](std::size_t i) {
+  // again with other chains of the two segments: first the one snap rounding would route
+  // (through the most vertices whose rounding cells the segment meets, then through the
+  // fewest others), where the least-straying chain may take a shortcut along a neighbouring
+  // segment; then every chain (up to 64 each): it fails only when every choice crosses.
+  // Positions along the segment increase along a chain: in that order, one pass finds the
+  // best chain.
+  const auto snappedChain = [&](std::size_t i) {
     const Segment& s = segments[i];
     const std::uint32_t a = ends[i].first, b = ends[i].second;
     const auto forward = [&](std::uint32_t u, std::uint32_t n) {
       return names(u, n, polylineOf[i]) && within(s, p[2 * n], p[2 * n + 1], bounds[i]) &&
              alongSign(s, p[2 * u], p[2 * u + 1], p[2 * n], p[2 * n + 1]) > 0;
     };
-    // Vertex -> (vertices on the longest chain from a to it, the one before it there).
-    std::unordered_map<std::uint32_t, std::pair<std::size_t, std::uint32_t>> longest{{a, {1, a}}};
+    struct Best {
+      long cells = 0, others = 0;  // vertices on the best chain to here, in s's cells or not
+      std::uint32_t before = 0;
+      bool reached = false;
+    };
+    std::unordered_map<std::uint32_t, Best> best{{a, {0, 0, a, true}}};
     std::vector<std::uint32_t> order(1, a);  // the vertices reached from a
     for (std::size_t k = 0; k < order.size(); ++k)
       for (const std::uint32_t n : next[order[k]])
-        if (!longest.count(n) && forward(order[k], n)) {
-          longest[n] = {0, n};
+        if (!best.count(n) && forward(order[k], n)) {
+          best[n] = {};
           order.push_back(n);
         }
     std::sort(order.begin(), order.end(), [&](std::uint32_t u, std::uint32_t v) {
       return alongSign(s, p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]) > 0;
     });
-    for (const std::uint32_t u : order)
-      for (const std::uint32_t n : next[u])
-        if (longest.count(n) && longest[u].first + 1 > longest[n].first && forward(u, n))
-          longest[n] = {longest[u].first + 1, u};
+    for (const std::uint32_t u : order) {
+      const Best from = best[u];
+      for (const std::uint32_t n : next[u]) {
+        if (!best.count(n) || !forward(u, n)) continue;
+        const bool cell = meetsCell(s, p[2 * n], p[2 * n + 1]);
+        const Best to{from.cells + cell, from.others + !cell, u, true};
+        Best& at = best[n];
+        if (!at.reached ||
+            std::make_pair(to.cells, -to.others) > std::make_pair(at.cells, -at.others))
+          at = to;
+      }
+    }
     std::vector<std::uint32_t> chain;
-    if (!longest.count(b)) return chain;
-    for (std::uint32_t v = b; v != a; v = longest[v].second) chain.push_back(v);
+    if (!best.count(b)) return chain;
+    for (std::uint32_t v = b; v != a; v = best[v].before) chain.push_back(v);
     chain.push_back(a);
     std::reverse(chain.begin(), chain.end());
     return chain;
@@ -389,7 +418,7 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   const auto everyChain = [&](std::size_t i) {
     const Segment& s = segments[i];
     const std::uint32_t a = ends[i].first, b = ends[i].second;
-    std::vector<std::vector<std::uint32_t>> found(1, densestChain(i));
+    std::vector<std::vector<std::uint32_t>> found(1, snappedChain(i));
     std::vector<std::uint32_t> path(1, a);
     std::vector<std::size_t> choice(1, 0);
     while (!path.empty() && found.size() < 64) {
