@@ -57,9 +57,9 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     } else if (!flipIn(piece.a, w.reached, piece.src)) {
       return broken("re-triangulating along a segment failed");
     }
-    // Through a vertex on the segment: a crossing added earlier can lie exactly on it, off
-    // the segment whose chain it bends, so that the two chains meet there: checked.
-    if (w.reached != piece.b)
+    // Through a vertex on the segment where an earlier call bent another chain, off that
+    // chain's segment: the two chains meet there though the segments may not: checked.
+    if (w.reached != piece.b && bendsAChain(w.reached))
       d_.constraints.forEachSegment(piece.src,
                                     [&](std::uint32_t i) { touchedSegments_.push_back(i); });
     pieces_.back().a = w.reached;
@@ -230,6 +230,25 @@ void SegmentInserter::bendThrough(std::uint32_t r, std::uint32_t l, std::uint32_
   pieces_.push_back({w, l, moved});
   d_.flipStack().push_back(e);  // no longer constrained: it may have to flip now
   d_.restoreDelaunay();
+}
+
+bool SegmentInserter::bendsAChain(std::uint32_t v) {
+  const std::int32_t start = edgeOutOf(v);
+  if (start < 0) return true;
+  const double* p = d_.xy.data();
+  const ConstraintStore& store = d_.constraints;
+  bool bent = false;
+  std::int32_t e = start;
+  do {
+    const EdgeSource* src = d_.topo.fixed[e] ? store.find(v, d_.topo.tri[nextEdge(e)]) : nullptr;
+    if (src)
+      store.forEachSegment(*src, [&](std::uint32_t i) {
+        const InputSegment& g = store.segments[i];
+        bent = bent || orient2d(g.ax, g.ay, g.bx, g.by, p[2 * v], p[2 * v + 1]) != Sign::Zero;
+      });
+    e = d_.topo.adj[prevEdge(e)];
+  } while (e != start && !bent);
+  return bent;
 }
 
 std::int32_t SegmentInserter::findEdge(std::uint32_t u, std::uint32_t v) {

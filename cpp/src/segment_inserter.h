@@ -58,6 +58,8 @@ class SegmentInserter {
   Walk walk(std::uint32_t a, std::uint32_t b);
   std::int32_t edgeOutOf(std::uint32_t a);
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v);  // half-edge u -> v, or -1
+  // Whether v lies on a chain off that chain's input segment (where it bends).
+  bool bendsAChain(std::uint32_t v);
   void markConstrained(std::int32_t e, const EdgeSource& src);
   bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);
   // A piece crossing constrained half-edge h = r -> l, whose triangles' apexes are c1 and c2,
