@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "edge_map.h"
 #include "exact_geometry.h"
@@ -98,7 +99,10 @@ class Chains {
     };
     EdgeMap<std::uint32_t> settled;  // vertex -> the one before it on the chain
     std::vector<Step> queue(1, {0, first, first, out});
-    const auto later = [](const Step& x, const Step& y) { return x.cost > y.cost; };
+    // Ties go to the lower vertex ids, as in the test checker: both pick the same chain.
+    const auto later = [](const Step& x, const Step& y) {
+      return std::tie(x.cost, x.at, x.before) > std::tie(y.cost, y.at, y.before);
+    };
     const Topology& topo = d_.topo;
     while (!queue.empty()) {
       std::pop_heap(queue.begin(), queue.end(), later);

@@ -57,10 +57,9 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     } else if (!flipIn(piece.a, w.reached, piece.src)) {
       return broken("re-triangulating along a segment failed");
     }
-    // Through a vertex exactly on the piece where another chain bends: that chain may be
-    // crossed there (fuzz: a vertex that snap rounding put on an earlier call's chain), so
-    // the check looks. (T-junctions of real data, where chains end, need no check.)
-    if (w.reached != piece.b && crossings_ == Crossings::Computed && chainBendsAt(w.reached))
+    // Through a vertex on the segment where an earlier call bent another chain, off that
+    // chain's segment: the two chains meet there though the segments may not: checked.
+    if (w.reached != piece.b && chainBendsAt(w.reached))
       d_.constraints.forEachSegment(piece.src,
                                     [&](std::uint32_t i) { touchedSegments_.push_back(i); });
     pieces_.back().a = w.reached;

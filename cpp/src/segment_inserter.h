@@ -41,8 +41,9 @@ class SegmentInserter {
   // Inserts u -> v carrying src.
   Outcome insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
   const Status& error() const { return error_; }
-  // The input segments whose constraints met a crossing since the last clearTouchedSegments(): the
-  // only ones whose chains may have left their segment.
+  // The input segments whose constraints met a crossing, or passed through a vertex on them,
+  // since the last clearTouchedSegments(): the only ones whose chains may have left their
+  // segment or met another chain where their segments do not meet.
   const std::vector<std::uint32_t>& touchedSegments() const { return touchedSegments_; }
   void clearTouchedSegments() { touchedSegments_.clear(); }
 

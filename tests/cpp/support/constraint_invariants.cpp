@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 #include <unordered_map>
 
 #include "geocdt/predicates.h"
@@ -65,6 +66,23 @@ bool within(const Segment& s, double x, double y, double bound) {
   if (d <= 0.9L * bound) return true;
   if (d >= 1.1L * bound) return false;
   return withinExactly(s, x, y, bound);
+}
+
+// Whether segment s meets the rounding cell of (x, y), the box of the points that round to
+// it (closed here, and in long double: it only ranks chains, it decides nothing).
+bool meetsCell(const Segment& s, double x, double y) {
+  long double lo = 0, hi = 1;
+  const auto clip = [&](double a, double b, double c) {
+    const long double below = (c - std::nextafter(c, -INFINITY)) / 2.0L;
+    const long double above = (std::nextafter(c, INFINITY) - c) / 2.0L;
+    const long double w = (long double)a - c, d = (long double)b - a;
+    if (d == 0) return -below <= w && w <= above;
+    const long double t0 = (-below - w) / d, t1 = (above - w) / d;
+    lo = std::max(lo, std::min(t0, t1));
+    hi = std::min(hi, std::max(t0, t1));
+    return true;
+  };
+  return clip(s.ax, s.bx, x) && clip(s.ay, s.by, y) && lo <= hi;
 }
 
 // The sign of (q - p) . (b - a): whether q lies beyond p along the segment's direction.
@@ -275,20 +293,25 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   };
 
   // How far v strays from segment i in units of the spacing of doubles on each axis there
-  // (snap rounding keeps a chain within one such unit).
+  // (snap rounding keeps a chain within one such unit). In double, exactly as the core's
+  // chain check computes it, so that both pick the same chain where several stray equally
+  // (in a tangle, the choice decides whether two chains seem to cross).
   const auto stray = [&](std::size_t i, std::uint32_t v) {
     const Segment& s = segments[i];
     const double gx = spacing(std::max(std::fabs(s.ax), std::fabs(s.bx)));
     const double gy = spacing(std::max(std::fabs(s.ay), std::fabs(s.by)));
-    return distanceToSegment({s.ax / gx, s.ay / gy, s.bx / gx, s.by / gy}, p[2 * v] / gx,
-                             p[2 * v + 1] / gy);
+    const double dx = (s.bx - s.ax) / gx, dy = (s.by - s.ay) / gy;
+    const double wx = (p[2 * v] - s.ax) / gx, wy = (p[2 * v + 1] - s.ay) / gy;
+    const double t = std::clamp((wx * dx + wy * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    return std::hypot(wx - t * dx, wy - t * dy);
   };
   // From each segment's start, constrained edges to vertices within the bound and further
   // along lead to its end (a graph without cycles: positions increase). Where several chains
   // would do, the one that strays least is the segment's: the chain snap rounding gives.
+  // Ties go to the lower vertex ids, as in the core.
   std::vector<std::uint32_t> seenAt(p.size() / 2, 0xFFFFFFFFu), from(p.size() / 2);
   struct Step {
-    long double cost;  // the most a chain to here strays
+    double cost;  // the most a chain to here strays
     std::uint32_t at, before;
   };
   std::vector<Step> queue;
@@ -297,8 +320,10 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   const auto search = [&](std::size_t i, double bound, bool ordered) {
     const Segment& s = segments[i];
     const std::uint32_t goal = ends[i].second, mark = searches++;
-    queue.assign(1, {0.0L, ends[i].first, ends[i].first});
-    const auto later = [](const Step& a, const Step& b) { return a.cost > b.cost; };
+    queue.assign(1, {0.0, ends[i].first, ends[i].first});
+    const auto later = [](const Step& a, const Step& b) {
+      return std::tie(a.cost, a.at, a.before) > std::tie(b.cost, b.at, b.before);
+    };
     while (!queue.empty()) {
       std::pop_heap(queue.begin(), queue.end(), later);
       const Step step = queue.back();
@@ -342,12 +367,58 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   // The output names polylines, not segments: in a tangle a few ulps wide, a segment's chain
   // can borrow edges of a neighbouring segment of its polyline, or pass one of its own
   // vertices by, and still keep the bound. So a pair of chains that seems to cross is checked
-  // again with every chain of the two segments (up to 64 each): it fails only when every
-  // choice crosses.
+  // again with other chains of the two segments: first the one snap rounding would route
+  // (through the most vertices whose rounding cells the segment meets, then through the
+  // fewest others), where the least-straying chain may take a shortcut along a neighbouring
+  // segment; then every chain (up to 64 each): it fails only when every choice crosses.
+  // Positions along the segment increase along a chain: in that order, one pass finds the
+  // best chain.
+  const auto snappedChain = [&](std::size_t i) {
+    const Segment& s = segments[i];
+    const std::uint32_t a = ends[i].first, b = ends[i].second;
+    const auto forward = [&](std::uint32_t u, std::uint32_t n) {
+      return names(u, n, polylineOf[i]) && within(s, p[2 * n], p[2 * n + 1], bounds[i]) &&
+             alongSign(s, p[2 * u], p[2 * u + 1], p[2 * n], p[2 * n + 1]) > 0;
+    };
+    struct Best {
+      long cells = 0, others = 0;  // vertices on the best chain to here, in s's cells or not
+      std::uint32_t before = 0;
+      bool reached = false;
+    };
+    std::unordered_map<std::uint32_t, Best> best{{a, {0, 0, a, true}}};
+    std::vector<std::uint32_t> order(1, a);  // the vertices reached from a
+    for (std::size_t k = 0; k < order.size(); ++k)
+      for (const std::uint32_t n : next[order[k]])
+        if (!best.count(n) && forward(order[k], n)) {
+          best[n] = {};
+          order.push_back(n);
+        }
+    std::sort(order.begin(), order.end(), [&](std::uint32_t u, std::uint32_t v) {
+      return alongSign(s, p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]) > 0;
+    });
+    for (const std::uint32_t u : order) {
+      const Best from = best[u];
+      for (const std::uint32_t n : next[u]) {
+        if (!best.count(n) || !forward(u, n)) continue;
+        const bool cell = meetsCell(s, p[2 * n], p[2 * n + 1]);
+        const Best to{from.cells + cell, from.others + !cell, u, true};
+        Best& at = best[n];
+        if (!at.reached ||
+            std::make_pair(to.cells, -to.others) > std::make_pair(at.cells, -at.others))
+          at = to;
+      }
+    }
+    std::vector<std::uint32_t> chain;
+    if (!best.count(b)) return chain;
+    for (std::uint32_t v = b; v != a; v = best[v].before) chain.push_back(v);
+    chain.push_back(a);
+    std::reverse(chain.begin(), chain.end());
+    return chain;
+  };
   const auto everyChain = [&](std::size_t i) {
     const Segment& s = segments[i];
     const std::uint32_t a = ends[i].first, b = ends[i].second;
-    std::vector<std::vector<std::uint32_t>> found;
+    std::vector<std::vector<std::uint32_t>> found(1, snappedChain(i));
     std::vector<std::uint32_t> path(1, a);
     std::vector<std::size_t> choice(1, 0);
     while (!path.empty() && found.size() < 64) {
