@@ -664,6 +664,7 @@ TEST(Constraints, FuzzRingAndLineNearlyCollinearOneCallEach) {
     EXPECT_GE(snapRoundings(lines, o, oneCall, broken), 1);
     EXPECT_EQ(broken, "") << (oneCall ? "one call" : "a call each");
   }
+}
 
 TEST(Constraints, FuzzTangleCoreAndCheckerPickTheSameChains) {
   // One polyline within 4e-11 of zero: several chains of a segment strayed equally far, and
