@@ -128,11 +128,10 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   // Two input segments meet at one vertex: once their crossing has one, later crossings of
   // their pieces (after rounding bent them) go there too, so no run of ever new vertices.
   c.pair = ConstraintStore::key(piece.src.segment, crossedSource ? crossedSource->segment : kGhost);
-  // Both chains may now leave their segments; the crossed one not when the crossing splits
-  // (see split).
+  // Both chains may now leave their segments, unless the crossing splits (see split).
+  const std::size_t untouched = touchedSegments_.size();
   const auto touch = [&](std::uint32_t i) { touchedSegments_.push_back(i); };
   store.forEachSegment(piece.src, touch);
-  const std::size_t pieceTouched = touchedSegments_.size();
   if (crossedSource) store.forEachSegment(*crossedSource, touch);
 
   // The crossing point: where the pair met before; else the crossing of the two input
@@ -169,9 +168,8 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
       strictlyLeft(c.l, c.c1) && strictlyLeft(c.c2, c.l)) {
     // The crossed constraint bends inside its own two triangles, where no vertex lies, and
     // (found from them) the two segments cross at x: nothing for chainsKeepTheGuarantee to
-    // check there. The piece bends through x too, and in a tangle a vertex can lie between
-    // it and a -> x -> b, away from those triangles: its chain is checked.
-    if (!ofPieces) touchedSegments_.resize(pieceTouched);
+    // check here.
+    if (!ofPieces) touchedSegments_.resize(untouched);
     return split(c, x, y);
   }
 
