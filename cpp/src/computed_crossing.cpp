@@ -129,12 +129,23 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   // Two input segments meet at one vertex: once their crossing has one, later crossings of
   // their pieces (after rounding bent them) go there too, so no run of ever new vertices.
   c.pair = ConstraintStore::key(piece.src.segment, crossedSource ? crossedSource->segment : kGhost);
-  // Both chains may now leave their segments; the crossed one not when the crossing splits
-  // (see split).
+  // Both chains may now leave their segments, unless the crossing splits (see split).
+  const std::size_t untouched = touchedSegments_.size();
   const auto touch = [&](std::uint32_t i) { touchedSegments_.push_back(i); };
   store.forEachSegment(piece.src, touch);
-  const std::size_t pieceTouched = touchedSegments_.size();
+  const std::size_t crossedFrom = touchedSegments_.size();
   if (crossedSource) store.forEachSegment(*crossedSource, touch);
+
+  // Whether every segment of the piece crosses every segment of the crossed edge, exactly.
+  const auto allCross = [&] {
+    const std::size_t end = touchedSegments_.size();
+    for (std::size_t i = untouched; i < crossedFrom; ++i)
+      for (std::size_t j = crossedFrom; j < end; ++j)
+        if (!crossProperly(store.geometry(touchedSegments_[i], d_.xy),
+                           store.geometry(touchedSegments_[j], d_.xy)))
+          return false;
+    return crossedFrom < end;
+  };
 
   // The crossing point: where the pair met before; else the crossing of the two input
   // segments, unless rounding and earlier bends put it outside the two pieces that cross
@@ -168,11 +179,11 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
   };
   if (w == kGhost && !near && strictlyLeft(c.c1, c.r) && strictlyLeft(c.r, c.c2) &&
       strictlyLeft(c.l, c.c1) && strictlyLeft(c.c2, c.l)) {
-    // The crossed constraint bends inside its own two triangles, where no vertex lies, and
-    // (found from them) the two segments cross at x: nothing for chainsKeepTheGuarantee to
-    // check there. The piece bends through x too, and in a tangle a vertex can lie between
-    // it and a -> x -> b, away from those triangles: its chain is checked.
-    if (!ofPieces) touchedSegments_.resize(pieceTouched);
+    // The crossed constraint bends inside its own two triangles, where no vertex lies: when
+    // x was found from the input segments and every segment of one edge crosses every one of
+    // the other (an edge can hold several, one of them bent onto it: fuzz), nothing for
+    // chainsKeepTheGuarantee to check here.
+    if (!ofPieces && allCross()) touchedSegments_.resize(untouched);
     return split(c, x, y);
   }
 
