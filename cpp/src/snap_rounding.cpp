@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -188,19 +189,28 @@ std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, 
   return w == piece.a || w == piece.b ? kGhost : w;
 }
 
-Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& options) {
-  Delaunay fresh(options);
+namespace {
+
+Status finishSnapRounding(Delaunay& d, std::uint32_t keep, Delaunay& fresh);
+
+// One round of snap rounding into fresh: hot pixels are the first keep vertices of d, the
+// rounded crossings of the segments, and extra (x, y pairs: vertices that bent crossing links
+// in an earlier round). bent tells whether links crossed and were bent through new vertices,
+// which chains routed before them may not pass through: then another round is due.
+Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<double>& extra,
+                     Delaunay& fresh, bool& bent) {
+  bent = false;
   std::vector<std::uint32_t> ids(keep);
   Status status = fresh.insertBatch(d.xy.data(), keep, ids.data());
   if (!status.ok()) return status;
   for (std::uint32_t i = 0; i < keep; ++i)
     if (ids[i] != i) return {StatusCode::InternalError, "snap rounding renumbered a vertex"};
   ConstraintStore& store = fresh.constraints;
-  store.segments = std::move(d.constraints.segments);
-  store.segmentStarts = std::move(d.constraints.segmentStarts);
+  store.segments = d.constraints.segments;
+  store.segmentStarts = d.constraints.segmentStarts;
   store.polylinePoints = d.constraints.polylinePoints;
-  store.firstSegment = std::move(d.constraints.firstSegment);
-  store.ring = std::move(d.constraints.ring);
+  store.firstSegment = d.constraints.firstSegment;
+  store.ring = d.constraints.ring;
   store.polylineCount = d.constraints.polylineCount;
   const std::size_t n = store.segments.size();
   // The geometry of segment i (its ends keep their ids and coordinates in fresh).
@@ -258,6 +268,12 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
     roundedCrossing(s, t, c.x, c.y);
     crossings.push_back(c);
   }
+  for (std::size_t k = 0; k + 1 < extra.size(); k += 2) {
+    Crossing c{};
+    c.x = extra[k];
+    c.y = extra[k + 1];
+    crossings.push_back(c);
+  }
   std::sort(crossings.begin(), crossings.end());
   crossings.erase(
       std::unique(crossings.begin(), crossings.end(),
@@ -293,16 +309,61 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   ends.build(fresh);  // with the rounded crossings
   SegmentInserter inserter(fresh, ends, Crossings::Snapped);
   std::vector<std::uint32_t> chain;
+  const std::uint32_t hotPixels = fresh.vertexCount();
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<std::uint32_t>& list = candidates[i];
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
     chainOf(segment(i), store.segments[i].a, store.segments[i].b, list, fresh.xy.data(), chain);
     const EdgeSource src = store.sourceOf(static_cast<std::uint32_t>(i));
-    for (std::size_t k = 0; k + 1 < chain.size(); ++k)
-      if (inserter.insert(chain[k], chain[k + 1], src) == Outcome::Broken) return inserter.error();
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+      if (inserter.insert(chain[k], chain[k + 1], src) == Outcome::Broken) {
+        bent = true;
+        return inserter.error();
+      }
+    }
   }
+  bent = fresh.vertexCount() > hotPixels;
+  return Status::success();
+}
 
+}  // namespace
+
+// Iterated: where links crossed and were bent through new vertices, the round starts again
+// with those vertices as hot pixels too, so that every chain is routed through them (the
+// hot pixels only grow, and each round is bounded; after the last round the result stands
+// or its error is reported).
+Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& options) {
+  constexpr int kRounds = 8;
+  std::vector<double> extra;
+  std::set<std::pair<double, double>> hot;
+  for (int round = 0;; ++round) {
+    Delaunay fresh(options);
+    bool bent = false;
+    const Status status = snapRoundOnce(d, keep, extra, fresh, bent);
+    if (bent && round + 1 < kRounds) {
+      // Every vertex past the input points becomes a hot pixel of the next round.
+      const std::size_t before = hot.size();
+      for (std::size_t k = 2 * static_cast<std::size_t>(keep); k + 1 < fresh.xy.size(); k += 2)
+        hot.insert({fresh.xy[k], fresh.xy[k + 1]});
+      if (hot.size() > before) {
+        extra.clear();
+        for (const auto& [x, y] : hot) {
+          extra.push_back(x);
+          extra.push_back(y);
+        }
+        continue;
+      }
+    }
+    if (!status.ok()) return status;
+    return finishSnapRounding(d, keep, fresh);
+  }
+}
+
+namespace {
+
+// d becomes fresh, with d's counts carried over.
+Status finishSnapRounding(Delaunay& d, std::uint32_t keep, Delaunay& fresh) {
   // The old triangulation's counts, less the crossings it added in the attempt that failed,
   // plus those snap rounding added.
   const std::uint32_t dropped = d.vertexCount() - keep, rounded = fresh.vertexCount() - keep;
@@ -319,5 +380,7 @@ Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& opti
   d = std::move(fresh);
   return Status::success();
 }
+
+}  // namespace
 
 }  // namespace geocdt

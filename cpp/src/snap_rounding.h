@@ -21,6 +21,8 @@ namespace geocdt {
 // Rebuilds d from its first `keep` vertices and every segment in its constraint store:
 // the vertices keep their ids, rounded crossings come after them, and each segment becomes
 // its snap-rounded chain. Vertices from `keep` on (crossings added since) are dropped.
+// Where links of the chains still cross (uneven spacing of doubles) and are bent through new
+// vertices, it starts again with those vertices as hot pixels, at most 8 rounds.
 Status snapRoundConstraints(Delaunay& d, std::uint32_t keep, const Options& options);
 
 }  // namespace geocdt
