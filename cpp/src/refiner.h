@@ -1,0 +1,155 @@
+#pragma once
+// The state of one Delaunay refinement (refinement.cpp): the queues of bad triangles and
+// encroached subsegments, and the refiner that works through them.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "delaunay.h"
+#include "exact_geometry.h"
+#include "geocdt/predicates.h"
+#include "slot_windings.h"
+
+namespace geocdt::refinement {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+// A triangle waiting to be split. The corners tell whether the slot still holds it when its
+// turn comes.
+struct BadTriangle {
+  std::int32_t slot;
+  std::uint32_t a, b, c;
+};
+
+// Bad triangles, worst first: keys in [0, 2) (smaller is worse) sorted into buckets, as
+// Triangle does; a heap of them all spent most of its time missing the cache.
+class BadQueue {
+ public:
+  void push(double key, const BadTriangle& t) {
+    const std::size_t b =
+        std::min<std::size_t>(static_cast<std::size_t>(key * (kBuckets / 2)), kBuckets - 1);
+    buckets_[b].push_back(t);
+    first_ = std::min(first_, b);
+    ++size_;
+  }
+  bool empty() const { return size_ == 0; }
+  BadTriangle pop() {
+    while (buckets_[first_].empty()) ++first_;
+    const BadTriangle t = buckets_[first_].back();
+    buckets_[first_].pop_back();
+    --size_;
+    return t;
+  }
+
+ private:
+  static constexpr std::size_t kBuckets = 4096;
+  std::vector<std::vector<BadTriangle>> buckets_ = std::vector<std::vector<BadTriangle>>(kBuckets);
+  std::size_t first_ = kBuckets, size_ = 0;
+};
+
+// A subsegment waiting to be split: encroached by a vertex, or by a rejected candidate
+// (forced: no vertex encroaches it, the candidate would have).
+struct Subsegment {
+  std::uint32_t u, v;
+  bool forced;
+};
+
+enum class Outcome { Done, Skipped, Retry, Failed };
+
+class Refiner {
+ public:
+  Refiner(Delaunay& d, const RefineOptions& o)
+      : d_(d),
+        topo_(d.topo),
+        keepAll_(o.keep == Keep::All),
+        fill_(o.fill),
+        maxArea_(o.maxArea > 0 ? o.maxArea : std::numeric_limits<double>::infinity()),
+        minAngle_(o.minAngle) {
+    const double s = std::sin(o.minAngle * kPi / 180);
+    sin2_ = s * s;
+    // Ungor's off-centre sits where the shortest edge subtends minAngle, a little closer
+    // (0.475 of the half-edge's cotangent, not 0.5) so that its triangle is not bad again.
+    offCentre_ = o.minAngle > 0 ? 0.475 / std::tan(o.minAngle * kPi / 360) : 0;
+    cap_ = o.maxSteinerPoints;
+  }
+
+  Status run();
+
+ private:
+  double x(std::uint32_t v) const { return d_.xy[2 * v]; }
+  double y(std::uint32_t v) const { return d_.xy[2 * v + 1]; }
+  bool ccw(std::uint32_t a, std::uint32_t b, double px, double py) const {
+    return orient2d(x(a), y(a), x(b), y(b), px, py) == Sign::Positive;
+  }
+  bool inRegion(std::int32_t t) const {
+    return !topo_.isGhost(t) && (keepAll_ || insideByRule(winding_[t], fill_));
+  }
+  // A constrained edge, or with keep all a hull edge: what refinement must not cross. e is
+  // either half-edge; none of a ghost vertex is one.
+  bool isSubsegment(std::int32_t e) const {
+    return topo_.fixed[e] || (keepAll_ && topo_.isGhost(e / 3) != topo_.isGhost(topo_.adj[e] / 3));
+  }
+  // The segment a subsegment lies on, and a number naming it: an input segment's index, or
+  // past 2^32 the hull edge it comes from.
+  InputSegment segmentOf(std::int32_t e, std::uint64_t& id) const;
+  static bool encroachedBy(double ux, double uy, double vx, double vy, double px, double py) {
+    return (ux - px) * (vx - px) + (uy - py) * (vy - py) < 0;
+  }
+  bool encroached(std::int32_t e) const;
+  void queueSubsegment(std::int32_t e, bool forced);
+  void queueIfEncroached(std::int32_t e) {
+    if (encroached(e)) queueSubsegment(e, false);
+  }
+  // sin^2 of the smallest angle and the area of a real triangle.
+  void measure(std::int32_t t, double& sin2, double& area) const;
+  void checkTriangle(std::int32_t t);
+  std::int32_t findEdge(std::uint32_t u, std::uint32_t v) const;
+  int constrainedDegree(std::uint32_t u) const;
+  bool smallInputAngle(std::int32_t t) const;
+  void rebuild();
+  void afterInsert(std::int32_t from);
+  void noteCorners(std::int32_t t);
+  void checkAround(std::int32_t t);  // the triangle and its subsegments
+  void restoreDelaunay(std::vector<std::int32_t>& stack);
+  Outcome splitSubsegment(std::int32_t e, bool forced);
+  Outcome splitTriangle(const BadTriangle& bad);
+  std::uint32_t newVertex(double px, double py) {
+    d_.xy.push_back(px);
+    d_.xy.push_back(py);
+    return d_.vertexCount() - 1;
+  }
+  void record(std::uint32_t v, std::uint32_t a, std::uint32_t b, std::uint32_t c, double wa,
+              double wb, double wc) {
+    d_.steiner.push_back({v, {a, b, c}, {wa, wb, wc}});
+    steinerFlag_.resize(d_.vertexCount(), 0);
+    steinerFlag_[v] = 1;
+    ++added_;
+  }
+  bool capReached() const { return added_ >= cap_ || d_.vertexCount() >= kGhost - 3; }
+
+  Delaunay& d_;
+  Topology& topo_;
+  bool keepAll_;
+  FillRule fill_;
+  double maxArea_, minAngle_, sin2_ = 0, offCentre_ = 0;
+  std::uint64_t cap_ = 0, added_ = 0;
+  bool capped_ = false;
+  std::vector<std::int32_t> winding_;      // per slot
+  std::vector<std::int32_t> vertexEdge_;   // per vertex: a half-edge out of it
+  std::vector<std::uint8_t> steinerFlag_;  // per vertex: 1 for refinement's vertices
+  std::vector<std::uint32_t> stamp_;       // per slot: the cavity search that saw it
+  std::uint32_t epoch_ = 0;
+  std::vector<Subsegment> subsegments_;
+  BadQueue bad_;
+  std::unordered_set<std::uint64_t> unsplittable_;
+  // With keep all, the hull's edges are segments too: each hull subsegment's original edge.
+  std::vector<InputSegment> hull_;
+  std::unordered_map<std::uint64_t, std::uint32_t> hullOf_;
+  std::vector<std::int32_t> cavity_, around_;
+};
+
+}  // namespace geocdt::refinement
