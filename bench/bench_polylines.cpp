@@ -1,9 +1,10 @@
 // One triangulate() call on a .gpl dataset, for profilers and for checking that a change
 // leaves the output as it was: valgrind --tool=callgrind counts its instructions, and the
 // hash covers every array of the mesh with inside flags and regions.
-// Usage: bench_polylines FILE.gpl [constrained|points] [hash]
+// Usage: bench_polylines FILE.gpl [constrained|points|always] [hash]
 //   constrained (default): the polylines as constraints, in one call;
-//   points: the same points with no constraints, for the cost of the constraints alone.
+//   points: the same points with no constraints, for the cost of the constraints alone;
+//   always: constrained, snap-rounded in every call (snap rounding's cost on real data).
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -40,7 +41,7 @@ class Hash {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_polylines FILE.gpl [constrained|points] [hash]\n");
+    std::fprintf(stderr, "usage: bench_polylines FILE.gpl [constrained|points|always] [hash]\n");
     return 2;
   }
   geocdt::testing::PolylineSet set;
@@ -50,6 +51,9 @@ int main(int argc, char** argv) {
     return 1;
   }
   const bool pointsOnly = argc > 2 && std::strcmp(argv[2], "points") == 0;
+  geocdt::Options options;
+  if (argc > 2 && std::strcmp(argv[2], "always") == 0)
+    options.snapRounding = geocdt::SnapRounding::Always;
   const bool hash = argc > 3 && std::strcmp(argv[3], "hash") == 0;
   const std::vector<geocdt::PolylineView> views = set.views();
   geocdt::MeshOptions meshOptions;
@@ -62,7 +66,7 @@ int main(int argc, char** argv) {
   const std::size_t heapBefore = bench::heapInUse();
   bench::resetHeapPeak();
   const auto start = std::chrono::steady_clock::now();
-  geocdt::Triangulation t;
+  geocdt::Triangulation t(options);
   std::vector<std::uint32_t> ids(set.pointCount());
   const geocdt::Status s = pointsOnly ? t.insertPoints(set.xy.data(), set.pointCount(), ids.data())
                                       : t.insertPolylines(views.data(), views.size(), ids.data());
