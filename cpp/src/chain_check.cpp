@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "edge_map.h"
+#include "euclidean_norm.h"
 #include "exact_geometry.h"
 #include "geocdt/predicates.h"
 
@@ -95,7 +96,7 @@ class Chains {
     const auto stray = [&](std::uint32_t v) {
       const double wx = (p[2 * v] - s.ax) / gx, wy = (p[2 * v + 1] - s.ay) / gy;
       const double t = std::clamp((wx * dx + wy * dy) / length2, 0.0, 1.0);
-      return std::hypot(wx - t * dx, wy - t * dy);
+      return euclideanNorm(wx - t * dx, wy - t * dy);
     };
     EdgeMap<std::uint32_t> settled;  // vertex -> the one before it on the chain
     std::vector<Step> queue(1, {0, first, first, out});

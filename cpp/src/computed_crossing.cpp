@@ -35,6 +35,7 @@
 #include <cmath>
 #include <utility>
 
+#include "euclidean_norm.h"
 #include "exact_geometry.h"
 #include "geocdt/predicates.h"
 #include "segment_inserter.h"
@@ -43,62 +44,24 @@ namespace geocdt {
 
 namespace {
 
-using Long = long double;
-
-// Where the lines through (a, b) and (c, d) meet, in floating point. In long double, whose
-// exponent range keeps the products of tiny coordinates (1e-171 squared) from underflowing.
-// The point is p + s * (direction of p's segment) for an end p of one segment, with s
-// found from an end q of the other. Rounding moves it by about |q - p| (through the
-// cancellation in s's numerator) plus |s| times the direction (through the step from p),
-// so the pair (p, q) that makes the least of both is used: from the far end of a
-// 1e67-long segment, one rounding of s moved the point by 1e47.
-bool lineCrossing(const InputSegment& ab, const InputSegment& cd, double& x, double& y) {
-  const Long ex = (Long)ab.bx - ab.ax, ey = (Long)ab.by - ab.ay, fx = (Long)cd.bx - cd.ax,
-             fy = (Long)cd.by - cd.ay;
-  const Long denominator = ex * fy - ey * fx;
-  const Long lengthE = std::hypot(ex, ey), lengthF = std::hypot(fx, fy);
-  Long bestError = 0, bestX = 0, bestY = 0;
-  bool found = false;
-  // p moves along (dx, dy); q is on the other line, whose direction is (gx, gy).
-  const auto tryPair = [&](Long px, Long py, Long dx, Long dy, Long length, Long qx, Long qy,
-                           Long gx, Long gy, Long sign) {
-    const Long u = (qx - px) * gy, v = (qy - py) * gx;
-    const Long s = sign * (u - v) / denominator;
-    const Long error =
-        (std::fabs(u) + std::fabs(v)) / std::fabs(denominator) * length + std::fabs(s) * length;
-    if (!(found && bestError <= error)) {
-      found = true;
-      bestError = error;
-      bestX = px + s * dx;
-      bestY = py + s * dy;
-    }
-  };
-  for (const auto& [qx, qy] :
-       {std::pair<Long, Long>{cd.ax, cd.ay}, std::pair<Long, Long>{cd.bx, cd.by}}) {
-    tryPair(ab.ax, ab.ay, ex, ey, lengthE, qx, qy, fx, fy, 1);
-    tryPair(ab.bx, ab.by, ex, ey, lengthE, qx, qy, fx, fy, 1);
-  }
-  for (const auto& [qx, qy] :
-       {std::pair<Long, Long>{ab.ax, ab.ay}, std::pair<Long, Long>{ab.bx, ab.by}}) {
-    tryPair(cd.ax, cd.ay, fx, fy, lengthF, qx, qy, ex, ey, -1);
-    tryPair(cd.bx, cd.by, fx, fy, lengthF, qx, qy, ex, ey, -1);
-  }
-  x = static_cast<double>(bestX);
-  y = static_cast<double>(bestY);
-  return std::isfinite(x) && std::isfinite(y);
+// How far v lies from the line through u0 and u1, times 2^scale: a choice between nearby
+// vertices, in double (alike on every platform), on coordinates scaled so that their
+// differences neither underflow nor overflow.
+double offLine(const double* p, std::uint32_t v, std::uint32_t u0, std::uint32_t u1, int scale) {
+  const auto at = [&](std::uint32_t i) { return std::ldexp(p[i], scale); };
+  const double dx = at(2 * u1) - at(2 * u0), dy = at(2 * u1 + 1) - at(2 * u0 + 1);
+  const double cross = dx * (at(2 * v + 1) - at(2 * u0 + 1)) - dy * (at(2 * v) - at(2 * u0));
+  return std::fabs(cross) / euclideanNorm(dx, dy);
 }
 
 }  // namespace
 
 // Where (x, y) lies along g's direction, compared with vertex u: the sign of the projection
-// of their difference. Differences, not positions: near the end of a segment 1e-63 long, a
-// vertex 1e-182 away must still compare apart. In long double, whose exponent range keeps
-// products of subnormal differences from underflowing.
+// of their difference, exactly (near the end of a segment 1e-63 long, a vertex 1e-182 away
+// must still compare apart).
 int SegmentInserter::Crossing::beyond(const double* p, const InputSegment& g, double x, double y,
                                       std::uint32_t u) {
-  const Long t =
-      ((Long)x - p[2 * u]) * ((Long)g.bx - g.ax) + ((Long)y - p[2 * u + 1]) * ((Long)g.by - g.ay);
-  return (t > 0) - (t < 0);
+  return signAlong(g, p[2 * u], p[2 * u + 1], x, y);
 }
 
 // Between lo and hi along g's direction: beyond one and short of the other.
@@ -157,17 +120,19 @@ std::uint32_t SegmentInserter::resolveCrossing(const Piece& piece, std::int32_t 
     w = *met;
     x = p[2 * w];
     y = p[2 * w + 1];
-  } else if (!lineCrossing(c.ab, c.cd, x, y) || !c.fits(p, x, y)) {
+  } else if (!roundedLineCrossing(c.ab, c.cd, x, y) || !c.fits(p, x, y)) {
     const InputSegment part{p[2 * piece.a], p[2 * piece.a + 1], p[2 * piece.b], p[2 * piece.b + 1]};
-    if (!lineCrossing(part, edge, x, y) || !c.fits(p, x, y)) return meetAtAnEnd(c, x, y);
+    if (!roundedLineCrossing(part, edge, x, y) || !c.fits(p, x, y)) return meetAtAnEnd(c, x, y);
     ofPieces = true;
   }
 
   // Snapping is for rounding, relative to the shorter of the two pieces that cross here
   // (an input segment can be 1e76 long and still cross a short one).
-  const auto distance = [&](std::uint32_t v) { return std::hypot(p[2 * v] - x, p[2 * v + 1] - y); };
+  const auto distance = [&](std::uint32_t v) {
+    return euclideanNorm(p[2 * v] - x, p[2 * v + 1] - y);
+  };
   const auto length = [&](std::uint32_t u, std::uint32_t v) {
-    return std::hypot(p[2 * v] - p[2 * u], p[2 * v + 1] - p[2 * u + 1]);
+    return euclideanNorm(p[2 * v] - p[2 * u], p[2 * v + 1] - p[2 * u + 1]);
   };
   const double snapDistance = 1e-12 * std::min(length(piece.a, piece.b), length(c.r, c.l));
   std::uint32_t nearest = c.r;
@@ -230,14 +195,19 @@ std::uint32_t SegmentInserter::split(const Crossing& c, double x, double y) {
 
 std::uint32_t SegmentInserter::meetAtAnEnd(const Crossing& c, double x, double y) {
   const double* p = d_.xy.data();
-  const auto offLine = [&](std::uint32_t v, std::uint32_t u0, std::uint32_t u1) {
-    const Long dx = (Long)p[2 * u1] - p[2 * u0], dy = (Long)p[2 * u1 + 1] - p[2 * u0 + 1];
-    const Long cross =
-        dx * ((Long)p[2 * v + 1] - p[2 * u0 + 1]) - dy * ((Long)p[2 * v] - p[2 * u0]);
-    return std::fabs(cross) / std::sqrt(dx * dx + dy * dy);
-  };
+  // One scale for the four vertices: their largest difference (halved here, which cannot
+  // overflow) becomes about 1.
+  double largest = 0;
+  for (const std::uint32_t v : {c.piece.b, c.r, c.l})
+    for (int k = 0; k < 2; ++k)
+      largest = std::fmax(largest, std::fabs(0.5 * p[2 * v + k] - 0.5 * p[2 * c.piece.a + k]));
+  int scale = 0;
+  if (largest > 0) {
+    std::frexp(largest, &scale);
+    scale = -scale - 1;
+  }
   std::uint32_t best = kGhost;
-  Long bestOff = 0;
+  double bestOff = 0;
   const auto consider = [&](std::uint32_t v, const InputSegment& g, std::uint32_t u0,
                             std::uint32_t u1) {
     // Ends count as within: ends that nearly coincide must be able to meet.
@@ -245,7 +215,7 @@ std::uint32_t SegmentInserter::meetAtAnEnd(const Crossing& c, double x, double y
             Crossing::beyond(p, g, p[2 * v], p[2 * v + 1], u1) >
         0)
       return;
-    const Long off = offLine(v, u0, u1);
+    const double off = offLine(p, v, u0, u1, scale);
     if (best == kGhost || off < bestOff) {
       best = v;
       bestOff = off;
@@ -255,7 +225,9 @@ std::uint32_t SegmentInserter::meetAtAnEnd(const Crossing& c, double x, double y
   consider(c.piece.b, c.cd, c.r, c.l);
   consider(c.r, c.ab, c.piece.a, c.piece.b);
   consider(c.l, c.ab, c.piece.a, c.piece.b);
-  const auto distance = [&](std::uint32_t v) { return std::hypot(p[2 * v] - x, p[2 * v + 1] - y); };
+  const auto distance = [&](std::uint32_t v) {
+    return euclideanNorm(p[2 * v] - x, p[2 * v + 1] - y);
+  };
   if (best == kGhost) best = distance(c.r) <= distance(c.l) ? c.r : c.l;
   if (best == c.r || best == c.l) return best;  // the piece bends through it
   bendThrough(c.r, c.l, best);                  // the crossed constraint bends through a piece end

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "bigint.h"
+#include "double_double.h"
 #include "geocdt/predicates.h"
 
 namespace geocdt {
@@ -100,60 +101,109 @@ long double approximate(const BigInt<C>& a, int unit) {
   return a.negative ? -v : v;
 }
 
-// Sign of 2 X - (c + n), where X is the coordinate (axis 0: x, 1: y) of the crossing of the
-// lines of s and t: whether X lies above the midpoint of c and its neighbour n.
-int crossingAgainstMidpoint(const InputSegment& s, const InputSegment& t, int axis, double c,
-                            double n) {
-  {  // Decided in floating point unless the crossing lies within its error of the midpoint.
+// One coordinate X (axis 0: x, 1: y) of the crossing of the lines of s and t, compared with
+// midpoints of doubles. The filters' parts that do not depend on the midpoint are computed
+// once: most crossings take four comparisons.
+class CrossingCoordinate {
+ public:
+  CrossingCoordinate(const InputSegment& s, const InputSegment& t, int axis)
+      : s_(s), t_(t), axis_(axis) {
+    // Each difference errs by eps/2 of itself, so num and den by 3 eps of their magnitudes
+    // (numError, denError); the quotient by (3 eps)(numError / |num| + denError / |den|) of
+    // itself, and the last products and sums by a few eps more. Sixteen times that.
     const double dx = s.bx - s.ax, dy = s.by - s.ay, fx = t.bx - t.ax, fy = t.by - t.ay;
     const double gx = t.ax - s.ax, gy = t.ay - s.ay;
     const double den = dx * fy - dy * fx, num = gx * fy - gy * fx;
     const double denError = std::fabs(dx * fy) + std::fabs(dy * fx);
     const double numError = std::fabs(gx * fy) + std::fabs(gy * fx);
     const double a = axis == 0 ? s.ax : s.ay, d = axis == 0 ? dx : dy;
-    const double along = num / den, x = a + d * along;
-    // Each difference errs by eps/2 of itself, so num and den by 3 eps of their magnitudes
-    // (numError, denError); the quotient by (3 eps)(numError / |num| + denError / |den|) of
-    // itself, and the last products and sums by a few eps more. Sixteen times that.
+    const double along = num / den;
+    x_ = a + d * along;
     const double relative = numError / std::fabs(num) + denError / std::fabs(den);
-    const double error =
-        16 * kEpsilon * (std::fabs(a) + std::fabs(d * along) * (1 + relative)) + kUnderflow;
-    const double v = 2 * x - (c + n);
+    const double magnitude = std::fabs(a) + std::fabs(d * along) * (1 + relative);
+    error_ = 16 * kEpsilon * magnitude + kUnderflow;
     // Underflow in num, den or their quotient (whose error d would magnify) leaves it to the
     // exact path.
-    if (std::isfinite(error) && std::isfinite(v) && std::fabs(den) > 0x1p-900 &&
-        std::fabs(num) > 0x1p-900 && std::fabs(along) > 0x1p-900) {
-      if (v > 2 * error + 4 * kEpsilon * std::fabs(c + n)) return 1;
-      if (-v > 2 * error + 4 * kEpsilon * std::fabs(c + n)) return -1;
+    usable_ = std::isfinite(error_) && std::isfinite(x_) && std::fabs(den) > 0x1p-900 &&
+              std::fabs(num) > 0x1p-900 && std::fabs(along) > 0x1p-900;
+    // The same in double-double, with exact differences and eps squared: a crossing rounded
+    // to the nearest double lies within half a spacing of it, too near the midpoints for
+    // double's bound.
+    const DoubleDouble ex = exactDifference(s.bx, s.ax), ey = exactDifference(s.by, s.ay);
+    const DoubleDouble ux = exactDifference(t.bx, t.ax), uy = exactDifference(t.by, t.ay);
+    const DoubleDouble vx = exactDifference(t.ax, s.ax), vy = exactDifference(t.ay, s.ay);
+    const DoubleDouble den2 = ex * uy - ey * ux, num2 = vx * uy - vy * ux;
+    const DoubleDouble along2 = num2 / den2, d2 = axis == 0 ? ex : ey;
+    xx_ = DoubleDouble{a} + d2 * along2;
+    const double relative2 = numError / std::fabs(num2.hi) + denError / std::fabs(den2.hi);
+    error2_ =
+        16 * kEpsilon * kEpsilon * (std::fabs(a) + std::fabs(d2.hi * along2.hi) * (1 + relative2)) +
+        kUnderflow;
+    usable2_ = std::isfinite(error2_) && std::isfinite(xx_.hi) && std::isfinite(xx_.lo) &&
+               std::fabs(den2.hi) > 0x1p-900 && std::fabs(num2.hi) > 0x1p-900 &&
+               std::fabs(along2.hi) > 0x1p-900;
+  }
+
+  // Sign of 2 X - (c + n): whether X lies above the midpoint of c and its neighbour n.
+  int against(double c, double n) const {
+    if (usable_) {
+      const double v = 2 * x_ - (c + n);
+      if (std::isfinite(v)) {
+        const double bound = 2 * error_ + 4 * kEpsilon * std::fabs(c + n);
+        if (v > bound) return 1;
+        if (-v > bound) return -1;
+      }
     }
+    if (usable2_) {
+      const DoubleDouble w = DoubleDouble{2 * xx_.hi, 2 * xx_.lo} - exactSum(c, n);
+      const double bound = 2 * error2_ + 4 * kEpsilon * kEpsilon * std::fabs(c + n);
+      if (w.hi > bound) return 1;
+      if (-w.hi > bound) return -1;
+    }
+    return exactAgainst(c, n);
   }
-  const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by, c, n});
-  const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
-  const Number fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
-  const Number gx = difference(t.ax, s.ax, base), gy = difference(t.ay, s.ay, base);
-  // X = a + d * num / den along the axis.
-  Number den = sum(product(dx, fy), product(dy, fx), true);
-  const Number num = sum(product(gx, fy), product(gy, fx), true);
-  const Number a = fixed(axis == 0 ? s.ax : s.ay, base);
-  Number scaled = sum(product(a, den), product(axis == 0 ? dx : dy, num));
-  if (detail::sign(den) < 0) {
-    negate(den);
-    negate(scaled);
+
+ private:
+  int exactAgainst(double c, double n) const {
+    const InputSegment& s = s_;
+    const InputSegment& t = t_;
+    const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by, c, n});
+    const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+    const Number fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
+    const Number gx = difference(t.ax, s.ax, base), gy = difference(t.ay, s.ay, base);
+    // X = a + d * num / den along the axis.
+    Number den = sum(product(dx, fy), product(dy, fx), true);
+    const Number num = sum(product(gx, fy), product(gy, fx), true);
+    const Number a = fixed(axis_ == 0 ? s.ax : s.ay, base);
+    Number scaled = sum(product(a, den), product(axis_ == 0 ? dx : dy, num));
+    if (detail::sign(den) < 0) {
+      negate(den);
+      negate(scaled);
+    }
+    const Number twice = sum(scaled, scaled);
+    const Number midpoint = product(sum(fixed(c, base), fixed(n, base)), den);
+    return compare(twice, midpoint);
   }
-  const Number twice = sum(scaled, scaled);
-  const Number midpoint = product(sum(fixed(c, base), fixed(n, base)), den);
-  return compare(twice, midpoint);
-}
+
+  const InputSegment& s_;
+  const InputSegment& t_;
+  int axis_;
+  double x_ = 0, error_ = 0, error2_ = 0;
+  DoubleDouble xx_;
+  bool usable_ = false, usable2_ = false;
+};
 
 // The double whose rounding interval (halfway cases upward) holds the crossing coordinate,
-// starting from an estimate and, should it be far off, bisecting [lo, hi], which holds it.
-double roundCoordinate(const InputSegment& s, const InputSegment& t, int axis, double guess,
-                       double lo, double hi) {
+// starting from an estimate and, should it be far off, bisecting [lo, hi]. False where the
+// crossing lies outside [lo, hi] (beyond the intervals of its ends).
+bool roundCoordinate(const InputSegment& s, const InputSegment& t, int axis, double guess,
+                     double lo, double hi, double& rounded) {
+  const CrossingCoordinate crossing(s, t, axis);
   const auto below = [&](double c) {  // the crossing lies below c's interval
-    return crossingAgainstMidpoint(s, t, axis, c, std::nextafter(c, -INFINITY)) < 0;
+    return crossing.against(c, std::nextafter(c, -INFINITY)) < 0;
   };
   const auto above = [&](double c) {  // the crossing lies at or above c's interval's end
-    return crossingAgainstMidpoint(s, t, axis, c, std::nextafter(c, INFINITY)) >= 0;
+    return crossing.against(c, std::nextafter(c, INFINITY)) >= 0;
   };
   double c = std::clamp(guess, lo, hi);
   for (int step = 0; step < 4; ++step) {
@@ -162,7 +212,8 @@ double roundCoordinate(const InputSegment& s, const InputSegment& t, int axis, d
     } else if (above(c)) {
       c = std::nextafter(c, INFINITY);
     } else {
-      return c;
+      rounded = c;
+      return true;
     }
   }
   // Doubles in order are integers in order once negative ones are mirrored.
@@ -189,7 +240,29 @@ double roundCoordinate(const InputSegment& s, const InputSegment& t, int axis, d
       last = middle;
     }
   }
-  return value(first);
+  rounded = value(first);
+  return !below(rounded) && !above(rounded);
+}
+
+// An estimate of where the lines of s and t cross, from their exact numerators and
+// denominator, each to 64 bits; false where the lines are parallel.
+bool estimateCrossing(const InputSegment& s, const InputSegment& t, double& x, double& y) {
+  const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by});
+  const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
+  const Number fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
+  const Number ox = difference(t.ax, s.ax, base), oy = difference(t.ay, s.ay, base);
+  const Number den = sum(product(dx, fy), product(dy, fx), true);
+  if (detail::sign(den) == 0) return false;
+  const Number num = sum(product(ox, fy), product(oy, fx), true);
+  const Number nx = sum(product(fixed(s.ax, base), den), product(dx, num));
+  const Number ny = sum(product(fixed(s.ay, base), den), product(dy, num));
+  // Units: den counts 2^(2 base), nx and ny 2^(3 base); scaled apart by 2^base so that
+  // neither quotient part overflows long double. Only a guess: what it rounds to on each
+  // platform does not matter, the rounding that follows is exact.
+  const long double d = approximate(den, 0);
+  x = static_cast<double>(std::ldexp(approximate(nx, 0) / d, base));
+  y = static_cast<double>(std::ldexp(approximate(ny, 0) / d, base));
+  return true;
 }
 
 // Distance from (x, y) to the closed segment, in floating point, with a bound on its error;
@@ -231,28 +304,40 @@ int spacingExponent(double v) {
 }
 
 void roundedCrossing(const InputSegment& s, const InputSegment& t, double& x, double& y) {
-  // The estimate comes from the exact numerators and denominator, each to 64 bits: long
-  // double alone loses a crossing at 1e-140 on a segment from 1e47 to the cancellation.
-  const int base = baseOf({s.ax, s.ay, s.bx, s.by, t.ax, t.ay, t.bx, t.by});
-  const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
-  const Number fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
-  const Number ox = difference(t.ax, s.ax, base), oy = difference(t.ay, s.ay, base);
-  const Number den = sum(product(dx, fy), product(dy, fx), true);
-  const Number num = sum(product(ox, fy), product(oy, fx), true);
-  const Number nx = sum(product(fixed(s.ax, base), den), product(dx, num));
-  const Number ny = sum(product(fixed(s.ay, base), den), product(dy, num));
-  // Units: den counts 2^(2 base), nx and ny 2^(3 base); scaled apart by 2^base so that
-  // neither quotient part overflows long double.
-  const long double d = approximate(den, 0);
-  const double gx = static_cast<double>(std::ldexp(approximate(nx, 0) / d, base));
-  const double gy = static_cast<double>(std::ldexp(approximate(ny, 0) / d, base));
+  // The estimate from exact numbers: long double alone loses a crossing at 1e-140 on a
+  // segment from 1e47 to the cancellation.
+  double gx = s.ax, gy = s.ay;
+  estimateCrossing(s, t, gx, gy);
   // The crossing lies on s: within its box.
-  x = roundCoordinate(s, t, 0, std::isfinite(gx) ? gx : s.ax, std::min(s.ax, s.bx),
-                      std::max(s.ax, s.bx));
-  y = roundCoordinate(s, t, 1, std::isfinite(gy) ? gy : s.ay, std::min(s.ay, s.by),
-                      std::max(s.ay, s.by));
+  roundCoordinate(s, t, 0, std::isfinite(gx) ? gx : s.ax, std::min(s.ax, s.bx),
+                  std::max(s.ax, s.bx), x);
+  roundCoordinate(s, t, 1, std::isfinite(gy) ? gy : s.ay, std::min(s.ay, s.by),
+                  std::max(s.ay, s.by), y);
   x += 0.0;  // -0 becomes 0: a vertex at the origin prints as one
   y += 0.0;
+}
+
+bool roundedLineCrossing(const InputSegment& s, const InputSegment& t, double& x, double& y) {
+  // First a guess in double, which the rounding corrects exactly: almost always right or a
+  // step away, so that only the filters run. The exact estimate where the guess is no number
+  // or the lines may be parallel.
+  const double dx = s.bx - s.ax, dy = s.by - s.ay, fx = t.bx - t.ax, fy = t.by - t.ay;
+  const double den = dx * fy - dy * fx;
+  // Each difference errs by eps/2 of itself, each product and the sum by eps/2 more.
+  const double denError = 4 * kEpsilon * (std::fabs(dx * fy) + std::fabs(dy * fx)) + kUnderflow;
+  const double along = ((t.ax - s.ax) * fy - (t.ay - s.ay) * fx) / den;
+  double gx = s.ax + dx * along, gy = s.ay + dy * along;
+  if (!(std::fabs(den) > denError && std::isfinite(gx) && std::isfinite(gy)) &&
+      !estimateCrossing(s, t, gx, gy))
+    return false;
+  if (!roundCoordinate(s, t, 0, std::isfinite(gx) ? gx : s.ax, std::min(s.ax, s.bx),
+                       std::max(s.ax, s.bx), x) ||
+      !roundCoordinate(s, t, 1, std::isfinite(gy) ? gy : s.ay, std::min(s.ay, s.by),
+                       std::max(s.ay, s.by), y))
+    return false;
+  x += 0.0;
+  y += 0.0;
+  return true;
 }
 
 bool segmentMeetsCell(const InputSegment& s, double x, double y) {

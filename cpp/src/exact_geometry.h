@@ -33,6 +33,10 @@ inline int chainBoundExponent(const InputSegment& s) {
 // spacings to the neighbouring doubles).
 void roundedCrossing(const InputSegment& s, const InputSegment& t, double& x, double& y);
 
+// Where the lines of s and t cross, rounded as roundedCrossing rounds; false where they are
+// parallel or cross outside s's bounding box. The same point on every platform.
+bool roundedLineCrossing(const InputSegment& s, const InputSegment& t, double& x, double& y);
+
 // Whether the closed segment s meets the rounding cell of (x, y): the half-open box of the
 // points that round to it, from halfway to the double below to halfway to the double above
 // on each axis (halfway cases upward, as roundedCrossing does).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "euclidean_norm.h"
 #include "geocdt/predicates.h"
 #include "triangulation_state.h"
 
@@ -141,7 +142,8 @@ class NaturalNeighbours {
         if (!isBorder(f)) continue;
         const std::uint32_t u = topo.tri[f];
         const Vec ru = rel(u), rw = rel(topo.tri[nextEdge(f)]);
-        if (cross(ru, rw) < kFlat * std::hypot(ru.x, ru.y) * std::hypot(rw.x, rw.y)) return false;
+        if (cross(ru, rw) < kFlat * euclideanNorm(ru.x, ru.y) * euclideanNorm(rw.x, rw.y))
+          return false;
         Vec first = circumcentre(ru, rw);
         Vec last = first;
         double area = 0;

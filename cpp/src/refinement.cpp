@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "euclidean_norm.h"
 #include "exact_geometry.h"
 #include "geocdt/predicates.h"
 #include "refiner.h"
@@ -165,8 +166,8 @@ bool Refiner::smallInputAngle(std::int32_t t) const {
       for (const auto& z : ends) {
         const bool shared = (z[0] == b.ax && z[1] == b.ay) || (z[0] == b.bx && z[1] == b.by);
         if (!shared) continue;
-        const double dp = std::hypot(x(p) - z[0], y(p) - z[1]);
-        const double dq = std::hypot(x(q) - z[0], y(q) - z[1]);
+        const double dp = euclideanNorm(x(p) - z[0], y(p) - z[1]);
+        const double dq = euclideanNorm(x(q) - z[0], y(q) - z[1]);
         if (dp < 1.001 * dq && dq < 1.001 * dp) return true;
       }
     }
@@ -261,7 +262,7 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   const bool acuteB = !(b < steinerFlag_.size() && steinerFlag_[b]) && constrainedDegree(b) > 1;
   double f = 0.5;
   if (acuteA != acuteB) {
-    const double length = std::hypot(x(b) - x(a), y(b) - y(a));
+    const double length = euclideanNorm(x(b) - x(a), y(b) - y(a));
     int exponent;
     std::frexp(length, &exponent);
     double n = std::ldexp(1.0, exponent);

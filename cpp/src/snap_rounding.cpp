@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "euclidean_norm.h"
 #include "exact_geometry.h"
 #include "geocdt/predicates.h"
 #include "segment_inserter.h"
@@ -239,7 +240,7 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
     int ex, ey;
     const InputSegment s = segment(i);
     boxExponents(s, ex, ey);
-    reach[i] = std::hypot(std::ldexp(1.0, ex), std::ldexp(1.0, ey));
+    reach[i] = euclideanNorm(std::ldexp(1.0, ex), std::ldexp(1.0, ey));
     trianglesNear(fresh, outOf[i], s, reach[i], static_cast<std::uint32_t>(i), stamp, found);
     for (const std::int32_t t : found) {
       slotSegment.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i)});

@@ -612,7 +612,8 @@ TEST(Constraints, FuzzCrossingOfBentPiecesCrossesChains) {
   o.order = InsertionOrder::Input;
   o.gridDensity = 2;
   std::string broken;
-  EXPECT_EQ(snapRoundings(lines, o, true, broken), 1);
+  // Snap-rounded when found; since crossings round exactly, they resolve it by themselves.
+  EXPECT_LE(snapRoundings(lines, o, true, broken), 1);
   EXPECT_EQ(broken, "");
 }
 

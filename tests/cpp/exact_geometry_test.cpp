@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "euclidean_norm.h"
 #include "point_generators.h"
 
 namespace geocdt {
@@ -79,6 +80,58 @@ TEST(ExactGeometry, RoundedCrossingHoldsTheExactCrossing) {
     ++checked;
   }
   EXPECT_GT(checked, 1000);
+}
+
+TEST(ExactGeometry, RoundedLineCrossingIsTheNearestDoubleOrRefused) {
+  // The crossing that segment insertion computes: the nearest double on each axis where the
+  // lines cross within s's box, false where they are parallel or cross outside it.
+  Coordinates c(2);
+  int inside = 0, outside = 0, parallel = 0;
+  for (int i = 0; i < 3000; ++i) {
+    InputSegment s = c.segment(), t = c.segment();
+    if (i % 20 == 0) t = {2 * s.ax, 2 * s.ay, 2 * s.bx, 2 * s.by};  // parallel
+    const mpq_class den =
+        (q(s.bx) - q(s.ax)) * (q(t.by) - q(t.ay)) - (q(s.by) - q(s.ay)) * (q(t.bx) - q(t.ax));
+    double rx = 0, ry = 0;
+    const bool found = roundedLineCrossing(s, t, rx, ry);
+    if (den == 0) {
+      EXPECT_FALSE(found);
+      ++parallel;
+      continue;
+    }
+    mpq_class x, y;
+    exactCrossing(s, t, x, y);
+    const bool inBox = x >= q(std::min(s.ax, s.bx)) && x <= q(std::max(s.ax, s.bx)) &&
+                       y >= q(std::min(s.ay, s.by)) && y <= q(std::max(s.ay, s.by));
+    if (inBox) {
+      ASSERT_TRUE(found) << s.ax << " " << s.ay << " " << s.bx << " " << s.by;
+      EXPECT_TRUE(inInterval(x, rx));
+      EXPECT_TRUE(inInterval(y, ry));
+      ++inside;
+    } else if (found) {
+      // Only just outside: within the rounding intervals of the box's ends.
+      EXPECT_TRUE(inInterval(x, rx));
+      EXPECT_TRUE(inInterval(y, ry));
+    } else {
+      ++outside;
+    }
+  }
+  EXPECT_GT(inside, 500);
+  EXPECT_GT(outside, 500);
+  EXPECT_GT(parallel, 100);
+}
+
+TEST(ExactGeometry, EuclideanNormWithinTwoUlps) {
+  Coordinates c(3);
+  for (int i = 0; i < 20000; ++i) {
+    const double x = c.next(), y = c.next();
+    const double norm = euclideanNorm(x, y), reference = std::hypot(x, y);
+    EXPECT_LE(std::fabs(norm - reference), 2 * spacingAt(reference)) << x << " " << y;
+  }
+  EXPECT_EQ(euclideanNorm(0, 0), 0);
+  EXPECT_EQ(euclideanNorm(-3, 4), 5);
+  EXPECT_EQ(euclideanNorm(INFINITY, 1), INFINITY);
+  EXPECT_EQ(euclideanNorm(1e300, 1e300), std::hypot(1e300, 1e300));
 }
 
 TEST(ExactGeometry, HalfwayCrossingsRoundUp) {

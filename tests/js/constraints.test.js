@@ -5,6 +5,7 @@ import { init, triangulate, Triangulation, memoryUsage } from 'geocdt';
 import { checkMesh } from './support/invariants.js';
 import { area, checkConstraints, checkInsideFlags } from './support/constraints.js';
 import { random, uniform } from './support/inputs.js';
+import { isRoundedCrossing } from './support/exact.js';
 
 before(() => init());
 
@@ -39,6 +40,25 @@ test('two crossing segments meet at a new vertex', () => {
   }
   assert.ok(found, 'the crossing (1, 1) is a vertex');
   assert.deepEqual(Array.from(r.inputToVertex.subarray(4)).every((v) => v < 9), true);
+});
+
+test('a crossing is the nearest double to where the segments cross, on every platform', () => {
+  // Rounded exactly (native builds and WebAssembly agree bit for bit): the new vertex of each
+  // pair of lon/lat segments holds the exact crossing of the two in its rounding interval.
+  const rnd = random(11);
+  for (let i = 0; i < 300; i++) {
+    const px = -180 + 360 * rnd(), py = -85 + 170 * rnd();
+    const ends = (angle) => {
+      const c = Math.cos(angle), s = Math.sin(angle), r0 = 0.5 + rnd(), r1 = 0.5 + rnd();
+      return [px - r0 * c, py - r0 * s, px + r1 * c, py + r1 * s];
+    };
+    const angle = Math.PI * rnd();
+    const s = ends(angle), t = ends(angle + 0.2 + 2.7 * rnd());
+    const r = triangulate({ polylines: [s, t] });
+    assert.equal(r.points.length, 10, `pair ${i}: one new vertex`);
+    assert.ok(isRoundedCrossing(s, t, r.points[8], r.points[9]),
+      `pair ${i}: (${r.points[8]}, ${r.points[9]}) is not the crossing rounded`);
+  }
 });
 
 test('a star of 64 segments through one point', () => {

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 #include "geocdt/predicates.h"
 
@@ -41,6 +42,16 @@ long double distanceToSegment(const Segment& s, double x, double y) {
 
 // The spacing of doubles at |v|.
 double spacing(double v) { return std::nextafter(std::fabs(v), INFINITY) - std::fabs(v); }
+
+// The length of (x, y) by the core's formula (IEEE operations only, unlike std::hypot, whose
+// last bit differs between C libraries): a chain's cost must be computed as the core does.
+double norm(double x, double y) {
+  double a = std::fabs(x), b = std::fabs(y);
+  if (a < b) std::swap(a, b);
+  if (a == 0 || std::isinf(a)) return a;
+  const double r = b / a;
+  return a * std::sqrt(1 + r * r);
+}
 
 // Whether (x, y) lies within `bound` of the closed segment, in rationals.
 bool withinExactly(const Segment& s, double x, double y, double bound) {
@@ -303,7 +314,7 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
     const double dx = (s.bx - s.ax) / gx, dy = (s.by - s.ay) / gy;
     const double wx = (p[2 * v] - s.ax) / gx, wy = (p[2 * v + 1] - s.ay) / gy;
     const double t = std::clamp((wx * dx + wy * dy) / (dx * dx + dy * dy), 0.0, 1.0);
-    return std::hypot(wx - t * dx, wy - t * dy);
+    return norm(wx - t * dx, wy - t * dy);
   };
   // From each segment's start, constrained edges to vertices within the bound and further
   // along lead to its end (a graph without cycles: positions increase). Where several chains

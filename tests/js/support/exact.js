@@ -68,3 +68,32 @@ export function signAlong([ax, ay, bx, by], px, py, qx, qy) {
   const dot = (Qx - Px) * (Bx - Ax) + (Qy - Py) * (By - Ay);
   return dot > 0n ? 1 : dot < 0n ? -1 : 0;
 }
+
+// The next double after v towards +Infinity (direction 1) or -Infinity (-1); v finite.
+function nextDouble(v, direction) {
+  if (v === 0) return direction * Number.MIN_VALUE;
+  view.setFloat64(0, v);
+  const away = (v > 0) === (direction > 0);
+  view.setBigUint64(0, view.getBigUint64(0) + (away ? 1n : -1n));
+  return view.getFloat64(0);
+}
+
+// Whether (x, y) is where the lines of s and t cross, each coordinate rounded to the nearest
+// double (halfway cases upward): the crossing X lies in [(x + below) / 2, (x + above) / 2).
+export function isRoundedCrossing([ax, ay, bx, by], [cx, cy, dx, dy], x, y) {
+  const neighbours = [nextDouble(x, -1), nextDouble(x, 1), nextDouble(y, -1), nextDouble(y, 1)];
+  const [Ax, Ay, Bx, By, Cx, Cy, Dx, Dy, X, Y, X0, X1, Y0, Y1] =
+    integers([ax, ay, bx, by, cx, cy, dx, dy, x, y, ...neighbours]);
+  const ex = Bx - Ax, ey = By - Ay, fx = Dx - Cx, fy = Dy - Cy;
+  let den = ex * fy - ey * fx;
+  if (den === 0n) return false;
+  let num = (Cx - Ax) * fy - (Cy - Ay) * fx;
+  if (den < 0n) {
+    den = -den;
+    num = -num;
+  }
+  // 2 * crossing * den on each axis, against (c + neighbour) * den.
+  const twice = [2n * (Ax * den + ex * num), 2n * (Ay * den + ey * num)];
+  return (X + X0) * den <= twice[0] && twice[0] < (X + X1) * den &&
+    (Y + Y0) * den <= twice[1] && twice[1] < (Y + Y1) * den;
+}
