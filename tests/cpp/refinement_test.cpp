@@ -26,9 +26,10 @@ struct Refined {
 };
 
 // Points, then polylines, refined, exported with inside flags and all triangles.
-Refined refine(const std::vector<double>& points, const Polylines& lines, RefineOptions ro) {
+Refined refine(const std::vector<double>& points, const Polylines& lines, RefineOptions ro,
+               const Options& options = Options()) {
   Refined r;
-  Triangulation t;
+  Triangulation t(options);
   r.ids.resize(points.size() / 2);
   r.status = t.insertPoints(points.data(), points.size() / 2, r.ids.data());
   std::vector<PolylineView> views;
@@ -325,6 +326,56 @@ TEST(Refinement, SteinerVerticesInterpolateTheValues) {
     const double expected = f(m.points[2 * v], m.points[2 * v + 1]);
     EXPECT_NEAR(m.values[v], expected, 1e-12 * 16) << "Steiner vertex " << v;
   }
+}
+
+}  // namespace
+}  // namespace geocdt
+
+namespace geocdt {
+namespace {
+
+TEST(Refinement, OverlappingSegmentsUlpsApartKeepTheirChainsApart) {
+  // Fuzz (refine, seed 1): a lattice around (16000000, 18006276) whose rounded points put two
+  // overlapping segments ulps apart, not on one line; a subsegment split on one of them
+  // landed on the far side of the other, and their chains crossed twice.
+  const std::vector<double> points = {15999998.970000001, 18006276.709757842, 16000000.369999999,
+                                      18006275.909757841};
+  Polylines lines = {
+      {16000000.369999999, 18006275.909757841},
+      {15999999.67,        18006276.309757844, 16000000.369999999, 18006275.909757841,
+       15999999.67,        18006276.309757844, 16000000.02,        18006276.109757841,
+       16000000.369999999, 18006275.909757841, 16000000.369999999, 18006275.909757841,
+       16000000.195,       18006276.009757839, 15999999.932500001, 18006276.159757841,
+       16000000.02,        18006276.109757841, 16000000.282499999, 18006275.959757842,
+       15999999.67,        18006276.309757844},
+      {16000000.326249998, 18006275.934757844, 16000000.02,        18006276.109757841,
+       16000000.063750001, 18006276.084757842, 16000000.195,       18006276.009757839,
+       16000000.195,       18006276.009757839, 16000000.216875,    18006275.997257844,
+       16000000.195,       18006276.009757839, 15999999.932500001, 18006276.159757841,
+       16000000.2934375,   18006275.953507841, 16000001.130000001, 18006277.089757841,
+       16000000.326249998, 18006275.934757844},
+      {16000000.25,        18006275.749757841, 15999997.77,        18006277.609757841,
+       15999998.370000001, 18006277.159757841, 15999999.216875002, 18006276.622257844,
+       15999999.348125,    18006276.547257841, 15999998.370000001, 18006277.159757841,
+       15999999.370000001, 18006276.534757841, 15999999.282500001, 18006276.584757842,
+       15999999.648125,    18006276.322257843, 16000000.348125,    18006275.922257841,
+       16000000.25,        18006275.749757841}};
+  lines.emplace_back();  // one point eleven times
+  for (int k = 0; k < 11; ++k)
+    lines.back().insert(lines.back().end(), {16000000.25, 18006275.749757841});
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::LastTriangle;
+  o.gridDensity = 0.25;
+  RefineOptions ro;
+  ro.minAngle = 22.222222222222221;
+  ro.maxSteinerPoints = 321;
+  const Refined r = refine(points, lines, ro, o);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_GT(r.stats.steinerPoints, 0u);
+  EXPECT_EQ(testing::checkRefined(r.mesh, points, lines, r.ids, ro.minAngle, 0, false,
+                                  r.stats.refineSkipped),
+            "");
 }
 
 }  // namespace
