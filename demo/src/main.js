@@ -122,6 +122,17 @@ for (const input of document.querySelectorAll('input[name="mode"]')) {
   input.addEventListener('change', () => editing.setMode(input.value));
 }
 $('finish-line').addEventListener('click', () => editing.finishLine());
+const angleLabel = (degrees) => (degrees > 0 ? `${degrees}°` : 'off');
+$('min-angle').addEventListener('input', (e) => {
+  $('min-angle-value').textContent = angleLabel(Number(e.target.value));
+});
+// A new minimum angle re-triangulates what is loaded (edits included) and refines it.
+$('min-angle').addEventListener('change', (e) => {
+  const minAngle = Number(e.target.value);
+  if (state.hasMesh) {
+    run(state.source, (onProgress) => worker.request('refine', { minAngle }, [], onProgress));
+  }
+});
 $('file').addEventListener('change', (e) => {
   loadFile(e.target.files[0]);
   e.target.value = ''; // picking the same file again should load it again
@@ -211,6 +222,12 @@ function showStats(s) {
   $('stat-vertices').textContent = format(s.vertices);
   $('stat-triangles').textContent = format(s.triangles);
   $('stat-inside').textContent = format(s.insideTriangles);
+  $('stat-steiner').textContent = s.refine
+    ? `${format(s.refine.steinerPoints)}${s.refine.capped ? ' (capped)' : ''}` : '–';
+  $('stat-min-angle').textContent = s.refine
+    ? `${s.refine.smallestAngle.toFixed(1)}°${s.refine.skipped
+      ? ` (${format(s.refine.skipped)} below, in smaller input angles)` : ''}`
+    : '–';
   $('stat-triangulate-ms').textContent = formatMs(s.triangulateMs);
   $('stat-load-ms').textContent = s.loadMs ? formatMs(s.loadMs) : '–';
   $('stat-draw-ms').textContent = formatMs(s.drawMs);

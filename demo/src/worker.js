@@ -9,9 +9,17 @@ import { projectLonLat } from './mercator.js';
 import { meshBuffers, surfaceBuffers, transferablesOf } from './mesh-buffers.js';
 
 const MESH_OPTIONS = { keep: 'all', insideFlags: true };
+// Refinement of a whole world map at 30 degrees would add millions of points: a cap keeps
+// the demo interactive (the panel says when it ended refinement).
+const MAX_STEINER_POINTS = 300_000;
 
-// What is on the map now: its projected input, and the incremental twin once edited.
+// What is on the map now: its projected input, the edits made by clicking, and the
+// incremental twin once edited.
 let current = null;
+// The minimum angle the panel asks for (0: no refinement).
+let minAngle = 0;
+const refineOptions = () =>
+  (minAngle > 0 ? { minAngle, maxSteinerPoints: MAX_STEINER_POINTS } : undefined);
 
 self.onmessage = async ({ data: request }) => {
   try {
@@ -56,6 +64,8 @@ async function handle(request, onProgress) {
       return addPoint(request.lonLat);
     case 'addSegment':
       return addSegment(request.from, request.to);
+    case 'refine':
+      return refineAgain(request.minAngle, onProgress);
     default:
       throw new Error(`unknown request ${request.type}`);
   }
@@ -117,14 +127,15 @@ function loadInput(input, loadMs, onProgress) {
   const started = performance.now();
   const values = input.values && flatValues(input.values);
   const result = triangulate({ points: input.points, polylines: input.polylines, values },
-    { ...MESH_OPTIONS, onProgress });
+    { ...MESH_OPTIONS, refine: refineOptions(), onProgress });
   const triangulateMs = performance.now() - started;
   current?.incremental?.dispose();
-  current = { input, incremental: null };
+  current = { input, edits: [], incremental: null };
   return reply(result, triangulateMs, loadMs, input.bounds);
 }
 
-// The first edit replays the current input into an incremental Triangulation.
+// The first edit replays the current input (and the edits so far) into an incremental
+// Triangulation, refined as the panel asks.
 function incremental() {
   if (!current) throw new Error('nothing is loaded yet');
   if (!current.incremental) {
@@ -132,26 +143,48 @@ function incremental() {
     const { points, polylines, values } = current.input;
     if (points.length) t.insertPoints(points, values?.points);
     polylines.forEach((line, i) => t.insertPolyline(line, values?.polylines[i]));
+    for (const edit of current.edits) applyEdit(t, edit);
+    if (minAngle > 0) t.refine(refineOptions());
     current.incremental = t;
   }
   return current.incremental;
 }
 
-function addPoint(lonLat) {
+function applyEdit(t, { kind, xy }) {
+  if (kind === 'point') t.insertPoints(xy);
+  else t.insertPolyline(xy);
+}
+
+function edit(kind, xy) {
   const t = incremental();
   const started = performance.now();
-  t.insertPoints(projectLonLat(lonLat));
+  applyEdit(t, { kind, xy });
+  current.edits.push({ kind, xy });
+  // Refinement again, around what the edit changed (its Steiner points add up).
+  if (minAngle > 0) t.refine(refineOptions());
   const result = t.results(MESH_OPTIONS);
-  current.input.addedPoints++;
+  if (kind === 'point') current.input.addedPoints++;
+  else current.input.addedSegments++;
   return reply(result, performance.now() - started, 0, null);
 }
 
+function addPoint(lonLat) {
+  return edit('point', projectLonLat(lonLat));
+}
+
 function addSegment(from, to) {
-  const t = incremental();
+  return edit('segment', projectLonLat([...from, ...to]));
+}
+
+// A new minimum angle: what is loaded, edits included, triangulated afresh and refined.
+function refineAgain(angle, onProgress) {
+  if (!current) throw new Error('nothing is loaded yet');
+  minAngle = angle;
+  if (current.edits.length === 0) return loadInput(current.input, 0, onProgress);
+  current.incremental?.dispose();
+  current.incremental = null;
   const started = performance.now();
-  t.insertPolyline(projectLonLat([...from, ...to]));
-  const result = t.results(MESH_OPTIONS);
-  current.input.addedSegments++;
+  const result = incremental().results(MESH_OPTIONS);
   return reply(result, performance.now() - started, 0, null);
 }
 
@@ -166,6 +199,7 @@ function reply(result, triangulateMs, loadMs, bounds) {
   const mesh = meshBuffers(result);
   if (result.values) Object.assign(mesh, surfaceBuffers(result));
   const stats = {
+    refine: minAngle > 0 ? refineStats(result) : null,
     inputPoints,
     vertices: result.points.length / 2,
     constraints,
@@ -179,3 +213,25 @@ function reply(result, triangulateMs, loadMs, bounds) {
   return { mesh, stats, bounds };
 }
 
+
+// What refinement did, and the smallest angle of any triangle (in the corners of input angles
+// below the minimum, refinement leaves them: stats.refineSkipped counts those triangles).
+function refineStats({ points, triangles, stats }) {
+  let smallest = Math.PI;
+  for (let t = 0; t < triangles.length; t += 3) {
+    for (let k = 0; k < 3; k++) {
+      const a = 2 * triangles[t + k], b = 2 * triangles[t + (k + 1) % 3];
+      const c = 2 * triangles[t + (k + 2) % 3];
+      const ux = points[b] - points[a], uy = points[b + 1] - points[a + 1];
+      const vx = points[c] - points[a], vy = points[c + 1] - points[a + 1];
+      const angle = Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy);
+      if (angle < smallest) smallest = angle;
+    }
+  }
+  return {
+    steinerPoints: stats.steinerPoints,
+    capped: stats.refineCapped === 1,
+    skipped: stats.refineSkipped,
+    smallestAngle: (smallest * 180) / Math.PI,
+  };
+}

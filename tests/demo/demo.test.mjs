@@ -224,6 +224,42 @@ test('a GeoJSON with z gets the surface view', async () => {
   assert.deepEqual(consoleErrors, []);
 });
 
+// The panel's minimum angle: the loaded input triangulated again and refined.
+async function setMinAngle(degrees) {
+  await settle(() => page.$eval('#min-angle', (input, value) => {
+    input.value = String(value);
+    input.dispatchEvent(new Event('input', { bubbles: true }));
+    input.dispatchEvent(new Event('change', { bubbles: true }));
+  }, degrees));
+}
+
+test('the minimum-angle slider refines the mesh and shows Steiner points and angles', async () => {
+  await settle(() => dropFile('square.geojson', JSON.stringify(SQUARE)));
+  const plain = await readStats();
+  assert.equal(await page.textContent('#stat-steiner'), '–');
+  await setMinAngle(28);
+  const refined = await readStats();
+  assert.equal(refined.status, 'ready', refined.error);
+  assert.equal(await page.textContent('#min-angle-value'), '28°');
+  const steiner = Number((await page.textContent('#stat-steiner')).replace(/[^\d]/g, ''));
+  assert.ok(steiner > 0, 'Steiner points were added');
+  assert.equal(refined.vertices, plain.vertices + steiner);
+  assert.equal(refined.points, plain.points, 'the input is the same');
+  // Every angle meets 28 degrees unless the panel owns up to triangles left below it.
+  const angle = await page.textContent('#stat-min-angle');
+  const smallest = Number(angle.match(/^([\d.]+)°/)[1]);
+  assert.ok(smallest >= 28 - 0.05 || /below/.test(angle), angle);
+  assert.equal(refined.raw.refine.steinerPoints, steiner);
+  await page.screenshot({ path: join(OUTPUT, 'demo-refined.png') });
+  // Off again: the plain triangulation comes back.
+  await setMinAngle(0);
+  const again = await readStats();
+  assert.equal(again.vertices, plain.vertices);
+  assert.equal(await page.textContent('#stat-steiner'), '–');
+  assert.equal(await page.textContent('#min-angle-value'), 'off');
+  assert.deepEqual(consoleErrors, []);
+});
+
 test('bad files are reported on the page, and the map keeps the last good mesh', async () => {
   const before = await readStats();
   const broken = '{"type": "FeatureCollection", "features": [';
