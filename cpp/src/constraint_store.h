@@ -179,6 +179,15 @@ class ConstraintStore {
   }
 
   std::size_t edgeCount() const { return edges_.size(); }
+  void reserve(std::size_t edges) { edges_.reserve(edges); }
+
+  // The polylines of every edge beyond its first, counted with repeats: with edgeCount(), a
+  // bound on the provenance an export lists.
+  std::size_t extraMembers() const {
+    std::size_t n = 0;
+    for (const std::vector<Member>& list : extras_) n += list.size();
+    return n;
+  }
   void clear() {
     edges_.clear();
     extras_.clear();

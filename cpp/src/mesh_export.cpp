@@ -106,7 +106,13 @@ void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t
 }
 
 void addProvenance(const Delaunay& d, Mesh& m) {
-  if (d.constraints.edgeCount() == 0) return;
+  const std::size_t edges = d.constraints.edgeCount();
+  if (edges == 0) return;
+  // Sized at once: the export is where the heap peaks, and doubling on the way would add
+  // half again of each array.
+  m.constraintEdges.reserve(edges);
+  m.sourceOffsets.reserve(edges + 1);
+  m.sources.reserve(edges + d.constraints.extraMembers());
   m.sourceOffsets.push_back(0);
   forChunks(0, m.triangles.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {

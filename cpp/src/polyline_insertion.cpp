@@ -114,6 +114,14 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     if (!s.ok()) return s;
     state_->values.recordPolylinePoints(ids, total);
     state_->slotMapValid = false;
+    // At most one segment and one constrained edge a point (fewer where polylines share
+    // edges): the store's arrays and table at about their final sizes at once, not doubled
+    // on the way.
+    store.reserve(store.edgeCount() + total);
+    store.segments.reserve(store.segments.size() + total);
+    store.segmentStarts.reserve(store.segmentStarts.size() + total);
+    store.firstSegment.reserve(store.firstSegment.size() + count);
+    store.ring.reserve(store.ring.size() + count);
 
     VertexEdges ends = endsFor(d, total);
     SegmentInserter inserter(d, ends);
