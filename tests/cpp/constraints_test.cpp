@@ -1143,3 +1143,63 @@ TEST(Constraints, OneShotWithNullPolylinesAndACountIsInvalidArgument) {
 
 }  // namespace
 }  // namespace geocdt
+
+namespace geocdt {
+namespace {
+
+TEST(Constraints, FuzzLongSegmentsUlpsApartHaveMoreThanAThousandChains) {
+  // Lines of a 1e9 lattice through (1, -12345.678) and points ulps from it, one polyline a
+  // call: snap rounding kept the chains of segments 25 and 29 (ulps apart, not meeting) from
+  // crossing, but the checker tried 64 chains of each and found only crossing pairs.
+  const double points[][2] = {
+      {1, -12345.678},
+      {-8679999999.0000019, 29759987654.321995},
+      {-4339999999.000001, 14879987654.321997},
+      {-2169999999.0000005, 7439987654.3219986},
+      {4800000001, 1399987654.3220003},
+      {-1084999999.0000002, 3719987654.3219991},
+      {-4339999999.000001, 14879987654.321995},
+      {-8679999999.0000019, 29759987654.321991},
+      {-4339999999.000001, 14879987654.321993},
+      {1, -12345.678000000002},
+      {4800000001, 1399987654.322},
+      {18320000000.999996, 15759987654.322001},
+      {-1084999999.0000002, 3719987654.3219986},
+      {1, -12345.678000000004},
+      {18320000000.999996, 15759987654.321999},
+      {-8679999999.0000019, 29759987654.321987},
+      {-1084999999.0000002, 3719987654.3219981},
+      {-4339999999.000001, 14879987654.321991},
+      {4800000001, 1399987654.3219998},
+      {22080000001, 6439987654.3219995},
+      {920000000.99999821, 32559987654.321995},
+      {1920000001, 559987654.32200003},
+      {-1119999999, 3839987654.322},
+      {-6509999999.0000019, 22319987654.321991},
+      {-279999999, 959987654.32200003},
+  };
+  const std::vector<std::vector<int>> indices = {
+      {0, 1},
+      {2, 3, 0, 3, 2, 2, 0},
+      {0, 1, 0, 4, 5, 6, 6, 7, 8, 9, 10, 11, 12, 0},
+      {9, 13, 7, 6, 14, 12, 6, 8, 13, 15, 7, 9},
+      {9, 15, 16, 11, 17, 10, 6, 6, 18, 10, 19, 9},
+      {20, 21, 22, 0},
+      {23, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 23},
+  };
+  Polylines lines;
+  for (const auto& row : indices) {
+    lines.emplace_back();
+    for (const int k : row) lines.back().insert(lines.back().end(), {points[k][0], points[k][1]});
+  }
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::Grid;
+  o.gridDensity = 8;
+  std::string broken;
+  EXPECT_GE(snapRoundings(lines, o, false, broken), 1);
+  EXPECT_EQ(broken, "");
+}
+
+}  // namespace
+}  // namespace geocdt

@@ -426,13 +426,16 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
     std::reverse(chain.begin(), chain.end());
     return chain;
   };
+  // Up to 4096 chains a segment when the first two seem to cross: two long segments ulps
+  // apart through a tangle can have more than a thousand chains each within the bound, and
+  // only some pairs keep apart as snap rounding routes them (fuzz: 64 were too few).
   const auto everyChain = [&](std::size_t i) {
     const Segment& s = segments[i];
     const std::uint32_t a = ends[i].first, b = ends[i].second;
     std::vector<std::vector<std::uint32_t>> found(1, snappedChain(i));
     std::vector<std::uint32_t> path(1, a);
     std::vector<std::size_t> choice(1, 0);
-    while (!path.empty() && found.size() < 64) {
+    while (!path.empty() && found.size() < 4096) {
       const std::uint32_t at = path.back();
       if (at == b) {
         found.push_back(path);
