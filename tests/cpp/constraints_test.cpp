@@ -1147,6 +1147,17 @@ TEST(Constraints, OneShotWithNullPolylinesAndACountIsInvalidArgument) {
 namespace geocdt {
 namespace {
 
+// Polylines given as indices into a table of points (fuzz findings repeat points a lot).
+template <std::size_t N>
+Polylines byIndex(const double (&points)[N][2], const std::vector<std::vector<int>>& indices) {
+  Polylines lines;
+  for (const auto& row : indices) {
+    lines.emplace_back();
+    for (const int k : row) lines.back().insert(lines.back().end(), {points[k][0], points[k][1]});
+  }
+  return lines;
+}
+
 TEST(Constraints, FuzzLongSegmentsUlpsApartHaveMoreThanAThousandChains) {
   // Lines of a 1e9 lattice through (1, -12345.678) and points ulps from it, one polyline a
   // call: snap rounding kept the chains of segments 25 and 29 (ulps apart, not meeting) from
@@ -1187,11 +1198,7 @@ TEST(Constraints, FuzzLongSegmentsUlpsApartHaveMoreThanAThousandChains) {
       {20, 21, 22, 0},
       {23, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 23},
   };
-  Polylines lines;
-  for (const auto& row : indices) {
-    lines.emplace_back();
-    for (const int k : row) lines.back().insert(lines.back().end(), {points[k][0], points[k][1]});
-  }
+  const Polylines lines = byIndex(points, indices);
   Options o;
   o.order = InsertionOrder::Hilbert;
   o.start = LocateStart::Grid;
@@ -1244,11 +1251,7 @@ TEST(Constraints, FuzzRouteLeftBehindOffItsSegmentIsFound) {
       {19, 20, 21, 7, 3, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 2, 19},
       {32, 33, 34, 35, 32, 33, 34, 36, 37, 38, 0},
   };
-  Polylines lines;
-  for (const auto& row : indices) {
-    lines.emplace_back();
-    for (const int k : row) lines.back().insert(lines.back().end(), {points[k][0], points[k][1]});
-  }
+  const Polylines lines = byIndex(points, indices);
   Options o;
   o.order = InsertionOrder::Hilbert;
   o.start = LocateStart::LastTriangle;
