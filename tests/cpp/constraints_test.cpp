@@ -1147,6 +1147,17 @@ TEST(Constraints, OneShotWithNullPolylinesAndACountIsInvalidArgument) {
 namespace geocdt {
 namespace {
 
+// Polylines given as indices into a table of points (fuzz findings repeat points a lot).
+template <std::size_t N>
+Polylines byIndex(const double (&points)[N][2], const std::vector<std::vector<int>>& indices) {
+  Polylines lines;
+  for (const auto& row : indices) {
+    lines.emplace_back();
+    for (const int k : row) lines.back().insert(lines.back().end(), {points[k][0], points[k][1]});
+  }
+  return lines;
+}
+
 TEST(Constraints, FuzzLongSegmentsUlpsApartHaveMoreThanAThousandChains) {
   // Lines of a 1e9 lattice through (1, -12345.678) and points ulps from it, one polyline a
   // call: snap rounding kept the chains of segments 25 and 29 (ulps apart, not meeting) from
@@ -1187,11 +1198,7 @@ TEST(Constraints, FuzzLongSegmentsUlpsApartHaveMoreThanAThousandChains) {
       {20, 21, 22, 0},
       {23, 24, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 23},
   };
-  Polylines lines;
-  for (const auto& row : indices) {
-    lines.emplace_back();
-    for (const int k : row) lines.back().insert(lines.back().end(), {points[k][0], points[k][1]});
-  }
+  const Polylines lines = byIndex(points, indices);
   Options o;
   o.order = InsertionOrder::Hilbert;
   o.start = LocateStart::Grid;
@@ -1199,6 +1206,61 @@ TEST(Constraints, FuzzLongSegmentsUlpsApartHaveMoreThanAThousandChains) {
   std::string broken;
   EXPECT_GE(snapRoundings(lines, o, false, broken), 1);
   EXPECT_EQ(broken, "");
+}
+
+}  // namespace
+}  // namespace geocdt
+
+namespace geocdt {
+namespace {
+
+TEST(Constraints, FuzzRouteLeftBehindOffItsSegmentIsFound) {
+  // A lattice 0.05 a step around (16000001, 16000001), in one call or one polyline a call: a
+  // piece of polyline 7 was bent through a vertex 2.3 spacings of doubles off its segment,
+  // and the chain later went another way, leaving that route named and straying; the check
+  // looked only along the chain. Now every edge that names a checked segment is checked.
+  const double points[][2] = {
+      {16000000.25, 16000000.25},        {16000002.25, 16000002.25},
+      {16000000.25, 16000001.25},        {16000002.25, 16000001.35},
+      {16000000.35, 16000001.25},        {16000001.25, 16000002.25},
+      {16000000.550000001, 16000003.35}, {16000001.300000001, 16000001.300000001},
+      {16000001.75, 16000002.25},        {16000000.775, 16000001.275},
+      {16000001.75, 16000001.800000001}, {16000002.85, 16000000.25},
+      {16000001.25, 16000001.25},        {16000001.550000001, 16000000.25},
+      {16000002, 16000001.574999999},    {16000001.012499999, 16000001.262499999},
+      {16000002, 16000001.800000001},    {16000001.525, 16000001.550000001},
+      {16000001.25, 16000001.300000001}, {16000001.75, 16000001.300000001},
+      {16000000.9, 16000002.800000001},  {16000001.949999999, 16000003.35},
+      {16000000.75, 16000001.275},       {16000001.75, 16000001.75},
+      {16000001.25, 16000000.800000001}, {16000001.65, 16000003.35},
+      {16000001.5, 16000001.050000001},  {16000001.4, 16000000.525},
+      {16000000.25, 16000002.35},        {16000000.25, 16000001.949999999},
+      {16000000.4, 16000002.300000001},  {16000000.75, 16000000.35},
+      {16000002.25, 16000000.35},        {16000000.25, 16000000.949999999},
+      {16000002.25, 16000001.550000001}, {16000000.35, 16000001.949999999},
+      {16000000.35, 16000002.25},        {16000000.65, 16000000.25},
+      {16000001.85, 16000000.25},
+  };
+  const std::vector<std::vector<int>> indices = {
+      {0, 1},
+      {2, 3},
+      {4},
+      {5},
+      {6, 3},
+      {3, 7, 8, 9, 3, 10, 11, 12, 12, 13, 14, 3, 15, 16, 17, 18, 3},
+      {19, 20, 21, 7, 3, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 2, 19},
+      {32, 33, 34, 35, 32, 33, 34, 36, 37, 38, 0},
+  };
+  const Polylines lines = byIndex(points, indices);
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::LastTriangle;
+  o.gridDensity = 2;
+  for (const bool oneCall : {true, false}) {
+    std::string broken;
+    EXPECT_EQ(snapRoundings(lines, o, oneCall, broken), 1);
+    EXPECT_EQ(broken, "");
+  }
 }
 
 }  // namespace
