@@ -11,6 +11,7 @@
 #include "euclidean_norm.h"
 #include "exact_geometry.h"
 #include "geocdt/predicates.h"
+#include "overlapping_segments.h"
 #include "refiner.h"
 #include "slot_windings.h"
 
@@ -290,47 +291,8 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
     return !input || withinDistance(s, qx, qy, chainBoundExponent(s));
   };
   bool fits = fitsAt(px, py);
-  // A subsegment next to the chain of an input segment ulps from its own, not on its line
-  // (overlapping segments rounded apart), is left whole: a point on one may land on the far
-  // side of the other and make their chains cross. The chains that may run along it are
-  // those of the constrained edges at its ends whose segments hold both ends in their bound.
-  if (fits && input) {
-    // (An end of s is on its line: no need for the exact predicate's slow path there.)
-    const auto onLine = [&](double px, double py) {
-      return (px == s.ax && py == s.ay) || (px == s.bx && py == s.by) ||
-             orient2d(s.ax, s.ay, s.bx, s.by, px, py) == Sign::Zero;
-    };
-    const double ex = x(b) - x(a), ey = y(b) - y(a);
-    const auto companion = [&](std::uint32_t j) {
-      if (j == id) return;
-      const InputSegment t = d_.constraints.geometry(j, d_.xy);
-      // With both ends within t's bound B (two spacings of doubles at its largest coordinate
-      // m, at most 2^-50 m), the edge strays at most 2B across t: most neighbours fail that
-      // in double (2^-48 m, and the products' rounding, for room).
-      const double tx = t.bx - t.ax, ty = t.by - t.ay;
-      const double across = std::fabs(ex * ty - ey * tx);
-      const double rounding =
-          4 * std::numeric_limits<double>::epsilon() * (std::fabs(ex * ty) + std::fabs(ey * tx));
-      const double m = std::fmax(std::fmax(std::fabs(t.ax), std::fabs(t.ay)),
-                                 std::fmax(std::fabs(t.bx), std::fabs(t.by)));
-      const double room = 0x1p-48 * m * (std::fabs(tx) + std::fabs(ty));
-      if (room > 0x1p-1000 && across > room + rounding) return;  // (not where it underflows)
-      if (onLine(t.ax, t.ay) && onLine(t.bx, t.by)) return;
-      const int bound = chainBoundExponent(t);
-      if (withinDistance(t, x(a), y(a), bound) && withinDistance(t, x(b), y(b), bound))
-        fits = false;
-    };
-    for (const std::uint32_t u : {a, b}) {
-      const std::int32_t start = vertexEdge_[u];
-      std::int32_t h = start;
-      do {
-        if (topo_.fixed[h])
-          if (const EdgeSource* src = d_.constraints.find(u, topo_.tri[nextEdge(h)]))
-            d_.constraints.forEachSegment(*src, companion);
-        h = topo_.adj[prevEdge(h)];
-      } while (h != start && fits);
-    }
-  }
+  // Left whole where another input segment runs along it ulps away (overlapping_segments.h).
+  if (fits && input && runsAlongAnotherSegment(d_, vertexEdge_, a, b, id, s)) fits = false;
   if (hull) {
     // On the hull the point must neither fall inside (the hull would turn reflex) nor
     // beyond the hull's next edges (the hull would wrap round it, and the vertices it wraps
