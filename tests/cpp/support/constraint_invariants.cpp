@@ -428,38 +428,47 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
   };
   // Up to 4096 chains a segment when the first two seem to cross: two long segments ulps
   // apart through a tangle can have more than a thousand chains each within the bound, and
-  // only some pairs keep apart as snap rounding routes them (fuzz: 64 were too few).
-  const auto everyChain = [&](std::size_t i) {
+  // only some pairs keep apart as snap rounding routes them (fuzz: 64 were too few). Each
+  // segment's list is built once, with each vertex tested against the bound once, and a
+  // vertex from which the end proved unreachable is not entered again: a tangle's chains
+  // share most of their vertices (fuzz: 25 s for one small input without this).
+  std::unordered_map<std::size_t, std::vector<std::vector<std::uint32_t>>> chainsOf;
+  const auto everyChain = [&](std::size_t i) -> const std::vector<std::vector<std::uint32_t>>& {
+    const auto cached = chainsOf.find(i);
+    if (cached != chainsOf.end()) return cached->second;
     const Segment& s = segments[i];
     const std::uint32_t a = ends[i].first, b = ends[i].second;
+    std::unordered_map<std::uint32_t, bool> near, dead;
+    const auto forward = [&](std::uint32_t u, std::uint32_t n) {
+      if (!names(u, n, polylineOf[i])) return false;
+      const auto known = near.find(n);
+      const bool inside = known != near.end()
+                              ? known->second
+                              : (near[n] = within(s, p[2 * n], p[2 * n + 1], bounds[i]));
+      return inside && alongSign(s, p[2 * u], p[2 * u + 1], p[2 * n], p[2 * n + 1]) > 0;
+    };
     std::vector<std::vector<std::uint32_t>> found(1, snappedChain(i));
     std::vector<std::uint32_t> path(1, a);
-    std::vector<std::size_t> choice(1, 0);
+    std::vector<std::size_t> choice(1, 0), foundBefore(1, 1);
     while (!path.empty() && found.size() < 4096) {
       const std::uint32_t at = path.back();
-      if (at == b) {
-        found.push_back(path);
-        path.pop_back();
-        choice.pop_back();
-        continue;
-      }
       std::size_t& k = choice.back();
-      while (k < next[at].size()) {
-        const std::uint32_t n = next[at][k];
-        if (names(at, n, polylineOf[i]) && within(s, p[2 * n], p[2 * n + 1], bounds[i]) &&
-            alongSign(s, p[2 * at], p[2 * at + 1], p[2 * n], p[2 * n + 1]) > 0)
-          break;
+      while (at != b && k < next[at].size() &&
+             (dead.count(next[at][k]) || !forward(at, next[at][k])))
         ++k;
-      }
-      if (k == next[at].size()) {
+      if (at == b || k == next[at].size()) {
+        if (at == b) found.push_back(path);
+        else if (found.size() == foundBefore.back()) dead[at] = true;
         path.pop_back();
         choice.pop_back();
+        foundBefore.pop_back();
         continue;
       }
       path.push_back(next[at][k++]);
       choice.push_back(0);
+      foundBefore.push_back(found.size());
     }
-    return found;
+    return chainsOf[i] = std::move(found);
   };
 
   // No new crossings: pairs of chains that share a vertex, and, for inputs small enough to
@@ -494,11 +503,11 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
       return how == Meeting::Apart ? count > 0 : count > 1 || (!undefined && count != 1);
     };
     if (wrong(chains[i], chains[j], positions[j])) {
-      const std::vector<std::vector<std::uint32_t>> is = everyChain(i), js = everyChain(j);
+      const auto &is = everyChain(i), &js = everyChain(j);
       bool some = false;
-      for (const auto& Q : js) {
-        const Positions inQ = positionsOf(Q);
-        for (const auto& P : is) some = some || !wrong(P, Q, inQ);
+      for (std::size_t q = 0; q < js.size() && !some; ++q) {
+        const Positions inQ = positionsOf(js[q]);
+        for (std::size_t r = 0; r < is.size() && !some; ++r) some = !wrong(is[r], js[q], inQ);
       }
       if (some) continue;
       wrong(chains[i], chains[j], positions[j]);
