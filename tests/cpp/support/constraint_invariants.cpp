@@ -457,8 +457,10 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
              (dead.count(next[at][k]) || !forward(at, next[at][k])))
         ++k;
       if (at == b || k == next[at].size()) {
-        if (at == b) found.push_back(path);
-        else if (found.size() == foundBefore.back()) dead[at] = true;
+        if (at == b)
+          found.push_back(path);
+        else if (found.size() == foundBefore.back())
+          dead[at] = true;
         path.pop_back();
         choice.pop_back();
         foundBefore.pop_back();
