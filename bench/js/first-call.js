@@ -3,9 +3,11 @@
 // triangulate() and then warm calls, and reports medians over the runs. delaunator runs the
 // same way, on the same points, for context.
 //   node bench/js/first-call.js [--runs N] [--node] [--chromium] [--quick] [--baseline DIR]
+//     [--delay MS]
 // --node or --chromium runs only that engine; --quick runs only the Natural Earth 50m rings;
 // --baseline DIR also runs another build of the package (a folder holding its web/) in the
-// same rounds, for a before/after.
+// same rounds, for a before/after; --delay MS waits that long between init() and the first
+// call, as a page or script that loads its data after init() does (default 0).
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { createServer } from 'node:http';
@@ -23,6 +25,7 @@ const packageDir = resolve(option('--package', root));
 const baselineDir = option('--baseline', null) && resolve(option('--baseline', null));
 const runs = Number(option('--runs', 5));
 const warmCalls = 6;
+const delayMs = Number(option('--delay', 0));
 
 // Each dataset is { points } or { polylines: { coords, offsets } } (the flat form), made in
 // Node and handed to the browser as bytes; delaunator gets the same points, unconstrained.
@@ -55,7 +58,8 @@ function encode(input) {
 // then warmCalls more; warm is the median of the last warmCalls - 1 (the second call can still
 // run code that is being optimised). cpuClock, when given, reads the main thread's CPU time
 // in ms: steadier than the wall clock on a loaded machine, but blind to the compiler's threads.
-async function measureOnce(bytes, load, warmCalls, cpuClock) {
+// delayMs: the wait between init and the first call.
+async function measureOnce(bytes, load, warmCalls, delayMs, cpuClock) {
   const head = new Uint32Array(bytes, 0, 2);
   const offsetCount = head[1];
   const coordBytes = bytes.byteLength - 8 - 4 * offsetCount;
@@ -64,6 +68,7 @@ async function measureOnce(bytes, load, warmCalls, cpuClock) {
     : { polylines: { coords, offsets: new Uint32Array(bytes, 8 + coordBytes, offsetCount) } };
   const gc = () => globalThis.gc?.();
   const { initMs, run } = await load();
+  if (delayMs > 0) await new Promise((done) => setTimeout(done, delayMs));
   const times = [];
   const cpu = [];
   for (let i = 0; i <= warmCalls; i++) {
@@ -105,14 +110,14 @@ async function child(library, dataset) {
   const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
   const geocdtUrl = pathToFileURL(join(packageDir, 'web/index.node.js')).href;
   const load = loader(library, geocdtUrl, 'delaunator');
-  const result = await measureOnce(buffer, load, warmCalls, threadCpuClock());
+  const result = await measureOnce(buffer, load, warmCalls, delayMs, threadCpuClock());
   console.log(JSON.stringify(result));
 }
 
 function inNode(library, dataset) {
   const args = ['--expose-gc', new URL(import.meta.url).pathname, '--child',
     library === 'baseline' ? 'geocdt' : library, dataset,
-    '--package', library === 'baseline' ? baselineDir : packageDir];
+    '--package', library === 'baseline' ? baselineDir : packageDir, '--delay', String(delayMs)];
   return JSON.parse(execFileSync(process.execPath, args, { encoding: 'utf8' }));
 }
 
@@ -160,14 +165,14 @@ async function inChromium(server, library, dataset) {
   try {
     const page = await browser.newPage();
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
-    return await page.evaluate(async ([measureSource, loaderSource, lib, name, calls]) => {
+    return await page.evaluate(async ([measureSource, loaderSource, lib, name, calls, delay]) => {
       const make = (source) => new Function(`return (${source})`)();
       const bytes = await (await fetch(`/data/${name}`)).arrayBuffer();
       const load = make(loaderSource)(lib === 'baseline' ? 'geocdt' : lib,
         `/${lib === 'baseline' ? 'baseline' : 'package'}/web/index.browser.js`,
         '/node_modules/delaunator/index.js');
-      return make(measureSource)(bytes, load, calls);
-    }, [measureOnce.toString(), loader.toString(), library, dataset, warmCalls]);
+      return make(measureSource)(bytes, load, calls, delay);
+    }, [measureOnce.toString(), loader.toString(), library, dataset, warmCalls, delayMs]);
   } finally {
     await browser.close();
   }
@@ -179,7 +184,7 @@ const fmt = (x) => (x < 10 ? x.toFixed(1) : x.toFixed(0));
 
 function report(engine, title, results) {
   console.log(`### ${engine}: ${title} (${runs} fresh ${engine === 'Node' ? 'processes'
-    : 'browsers'}, medians)\n`);
+    : 'browsers'}, medians${delayMs > 0 ? `, first call ${delayMs} ms after init` : ''})\n`);
   const cpu = Object.values(results)[0][0].firstCpuMs !== undefined;
   console.log(`| library | init ms | first call ms | second ms | warm ms | first / warm |${
     cpu ? ' first / warm, main thread CPU |' : ''}`);
