@@ -40,8 +40,14 @@ export function createApi(instantiate) {
   }
 
   // Loads the wasm once; later calls resolve at once. A failed load can be retried.
+  // options.warmUp: false starts no warm-up worker (web/warm-up.js).
   function init(options) {
     if (kernel !== null) return Promise.resolve();
+    const warmUp = options?.warmUp;
+    if (warmUp !== undefined && typeof warmUp !== 'boolean') {
+      return Promise.reject(new TypeError(
+        `geocdt: options.warmUp must be a boolean, got ${describe(warmUp)}`));
+    }
     loading ??= instantiate(options ?? {}).then(
       (wasm) => { kernel = new Kernel(wasm); },
       (error) => { loading = null; throw error; });

@@ -139,6 +139,9 @@ async function main(argv) {
   let say = () => {};
   let show = null;
 
+  // Loading first lets the warm-up (init()'s worker) run while the input is read and parsed.
+  const loaded = init();
+  loaded.catch(() => {});  // awaited below, after the input is read
   const text = await readInput(args.input);
   let geojson;
   try {
@@ -156,7 +159,7 @@ async function main(argv) {
   }
   say(`read ${n(pointCount)} points (${n(lines)} polylines) in ${elapsed()}`);
 
-  await init();
+  await loaded;
   const mesh = triangulate(input, {
     keep: args.keep,
     fillRule: args.fillRule,

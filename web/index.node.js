@@ -1,18 +1,72 @@
 // The Node entry: reads the wasm bytes from the package folder (the generated glue cannot
-// load them in Node 20 by itself).
+// load them in Node 20 by itself), compiles them, and instantiates the compiled module, which
+// the warm-up's worker shares.
+import { readdirSync } from 'node:fs';
 import { readFile } from 'node:fs/promises';
+import { availableParallelism, setPriority } from 'node:os';
+import { Worker } from 'node:worker_threads';
 import createGeocdtModule from './dist/geocdt.mjs';
 import { createApi } from './api.js';
+import { instantiateCompiled } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
 export { GeocdtError } from './errors.js';
+
+// The threads of this process (Linux), or null.
+function threadIds() {
+  try {
+    return new Set(readdirSync('/proc/self/task'));
+  } catch {
+    return null;
+  }
+}
+
+// Gives the threads started since `before` (the warm-up's) the lowest priority, from their
+// start on, so that the warm-up takes no core from the caller's first call when cores are
+// short: starting a worker alone takes tens of milliseconds of a core.
+function lowestPriority(before) {
+  if (before === null) return;
+  for (const id of threadIds() ?? []) {
+    if (before.has(id)) continue;
+    try {
+      setPriority(Number(id), 19);
+    } catch {
+      // The warm-up keeps the priority it has.
+    }
+  }
+}
+
+// Starts the warm-up (web/warm-up.js) on the compiled module. Nothing waits for it: the
+// worker never keeps the process alive, and an error in it (no worker_threads, no memory) only
+// means no warm-up.
+function startWarmUp(module) {
+  if (availableParallelism() < 2) return;
+  try {
+    // No flags of node's own: V8's apply to every thread anyway, and a worker refuses some
+    // (--expose-gc), which would leave the warm-up out.
+    const before = threadIds();
+    const worker = new Worker(new URL('./warm-up-thread.node.js', import.meta.url),
+      { execArgv: [] });
+    lowestPriority(before);
+    worker.unref();
+    worker.on('error', () => {});
+    worker.postMessage({ module });
+  } catch {
+    // No warm-up.
+  }
+}
 
 async function instantiate(options) {
   const { wasmUrl } = options;
   const where = wasmUrl === undefined ? new URL('./dist/geocdt.wasm', import.meta.url)
     : typeof wasmUrl === 'string' ? wasmUrl : new URL(wasmUrl.href);
-  const wasmBinary = options.wasmBinary ?? await readFile(where);
-  return createGeocdtModule({ wasmBinary });
+  const module = await WebAssembly.compile(options.wasmBinary ?? await readFile(where));
+  const wasm = await instantiateCompiled(createGeocdtModule, module);
+  // After the code that awaits init() has run to its first wait: a call made at once finds
+  // both cores free (the warm-up would only compete with it, bench/EXPERIMENTS.md), and a
+  // caller that loads its data first gets the warm-up meanwhile.
+  if (options.warmUp !== false) setTimeout(() => startWarmUp(module), 0);
+  return wasm;
 }
 
 export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =

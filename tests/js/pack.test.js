@@ -10,7 +10,9 @@ import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
 import { extname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { init, triangulate } from 'geocdt';
 import { checkProgressEvents } from './support/progress.js';
+import { runWarmUp } from '../../web/warm-up.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const here = fileURLToPath(new URL('./pack/', import.meta.url));
@@ -100,6 +102,8 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
     const page = await browser.newPage();
     const errors = [];
     page.on('pageerror', (e) => errors.push(e.message));
+    const workers = [];
+    page.on('worker', (w) => workers.push(w.url()));
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
     await page.waitForFunction(
       () => document.getElementById('result').textContent !== 'running', null,
@@ -117,6 +121,23 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
     checkProgressEvents(result.workerProgress);
     assert.deepEqual(result.syncProgress.at(-1), { phase: 'export', fraction: 1 });
     assert.deepEqual(result.workerProgress.at(-1), { phase: 'export', fraction: 1 });
+    // init()'s warm-up worker, as bundled: it runs on a compiled module it is sent and makes
+    // what the same warm-up makes in Node.
+    const warmUp = workers.find((url) => /warm-up/.test(url));
+    assert.ok(warmUp, `init() started its warm-up worker: ${workers}`);
+    const wasm = `/assets/${assets.find((f) => f.endsWith('.wasm'))}`;
+    const triangles = await page.evaluate(async ([url, wasmUrl]) => {
+      const module = await WebAssembly.compileStreaming(fetch(wasmUrl));
+      const worker = new Worker(url, { type: 'module' });
+      const reply = new Promise((done, fail) => {
+        worker.onmessage = (event) => done(event.data.triangles);
+        worker.onerror = (event) => fail(new Error(event.message));
+      });
+      worker.postMessage({ module });
+      return reply;
+    }, [warmUp, wasm]);
+    await init({ warmUp: false });
+    assert.equal(triangles, runWarmUp(triangulate));
   } finally {
     await browser.close();
     server.close();

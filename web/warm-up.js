@@ -1,0 +1,67 @@
+// The warm-up: triangulations run in a worker on the module the caller's init() compiled.
+// Engines share a compiled WebAssembly.Module's code between the threads that instantiate it,
+// so the worker's calls compile the functions a first call reaches and get them optimised on
+// another core while the caller's own first call runs (bench/EXPERIMENTS.md, the first call).
+
+// The glue's instantiateWasm hook, instantiating an already compiled module. Resolves to the
+// ready module, or rejects with the error of instantiating it (the glue would only log it).
+export function instantiateCompiled(createModule, module) {
+  return new Promise((resolve, reject) => {
+    const instantiateWasm = (imports, receive) => {
+      WebAssembly.instantiate(module, imports).then((instance) => receive(instance, module))
+        .catch(reject);
+      return {};
+    };
+    createModule({ instantiateWasm }).then(resolve, reject);
+  });
+}
+
+// Pseudo-random numbers in [0, 1): the same warm-up in every run.
+function random(seed) {
+  let s = seed;
+  return () => {
+    s = (s * 16807) % 2147483647;
+    return s / 2147483647;
+  };
+}
+
+// Points, and rings that overlap and cross one another (as country rings and coasts do).
+function warmUpInputs() {
+  const next = random(12345);
+  const points = new Float64Array(2 * 20000);
+  for (let i = 0; i < points.length; i++) points[i] = next();
+  const rings = 256;
+  const sides = 48;
+  const coords = new Float64Array(2 * rings * (sides + 1));
+  const offsets = new Uint32Array(rings + 1);
+  let at = 0;
+  for (let r = 0; r < rings; r++) {
+    const cx = next(), cy = next(), radius = 0.02 + 0.05 * next();
+    for (let k = 0; k <= sides; k++) {
+      const angle = (2 * Math.PI * (k % sides)) / sides;
+      const wobble = radius * (0.7 + 0.3 * Math.sin(5 * angle + r));
+      coords[at++] = cx + wobble * Math.cos(angle);
+      coords[at++] = cy + wobble * Math.sin(angle);
+    }
+    offsets[r + 1] = (r + 1) * (sides + 1);
+  }
+  return [
+    [{ points }, undefined],
+    [{ polylines: { coords, offsets } }, undefined],
+    [{ polylines: { coords, offsets } }, { keep: 'inside' }],
+  ];
+}
+
+// Runs the warm-up with the worker's own triangulate(): first a call so small that its time is
+// compiling the functions every call reaches (the caller's call then finds them compiled),
+// then calls long enough for the engine to optimise them. Returns the triangles made, which
+// the worker reports when it is done (read by the tests only).
+export function runWarmUp(triangulate, rounds = 3) {
+  let triangles = triangulate({ polylines: [[0, 0, 1, 1, 0, 1, 0, 0], [0.5, -1, 0.5, 2]] },
+    { keep: 'inside' }).stats.triangles;
+  const inputs = warmUpInputs();
+  for (let round = 0; round < rounds; round++) {
+    for (const [input, options] of inputs) triangles += triangulate(input, options).stats.triangles;
+  }
+  return triangles;
+}
