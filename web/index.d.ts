@@ -240,9 +240,9 @@ export interface InitOptions {
    * Warm the code up in a worker (default true): once the code that awaited init() waits for
    * something else (its data, say), a worker runs a few small triangulations on the module
    * init() compiled, on another core, and ends. The engine shares the compiled and optimised
-   * code, so a first call made a few hundred milliseconds after init() runs closer to the
-   * speed of later ones; a call made at once is not slowed. false starts no worker. There is
-   * none with one core, or where workers are unavailable or refused.
+   * code, so a first call made 0.3–1 s after init() runs closer to the speed of later ones;
+   * a call made at once is not slowed. false starts no worker. There is none with one core,
+   * or where workers are unavailable or refused.
    */
   warmUp?: boolean;
 }
