@@ -1,7 +1,7 @@
 #pragma once
 // A flat hash map from an undirected edge key to a value: open addressing with linear
-// probing in two arrays, no allocation per entry. The constraint store keeps one entry per
-// constrained edge, hundreds of thousands on real data.
+// probing in one array of entries, no allocation per entry. The constraint store keeps one entry
+// per constrained edge, hundreds of thousands on real data.
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -10,10 +10,17 @@
 
 namespace geocdt {
 
-// Where a key's probe starts: a multiplicative hash, for keys with no useful order.
+// Where a key's probe starts, in [0, capacity), capacity a multiple of 16. A 32-bit hash is
+// scaled to the capacity by a multiplication, so that tables need not have power-of-two
+// sizes.
+inline std::size_t scaled(std::uint64_t hash32, std::size_t n) {
+  return static_cast<std::size_t>((hash32 * n) >> 32);
+}
+
+// A multiplicative hash, for keys with no useful order.
 struct HashedSlot {
-  std::size_t operator()(std::uint64_t key) const {
-    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32);
+  std::size_t operator()(std::uint64_t key, std::size_t capacity) const {
+    return scaled((key * 0x9E3779B97F4A7C15ull) >> 32, capacity);
   }
 };
 
@@ -23,11 +30,11 @@ struct HashedSlot {
 // in blocks of 8 (u's block and v's), which spreads the edges of one vertex to many others
 // (a hub) and ids far apart; within a block, u picks a pair of slots.
 struct EdgeSlot {
-  std::size_t operator()(std::uint64_t key) const {
+  std::size_t operator()(std::uint64_t key, std::size_t capacity) const {
     const std::uint64_t u = key >> 32, v = key & 0xFFFFFFFFu;
     const std::uint64_t block =
         ((u >> 3) * 0x9E3779B97F4A7C15ull) ^ ((v >> 3) * 0xC2B2AE3D27D4EB4Full);
-    return static_cast<std::size_t>((block >> 32) << 4 | (u & 7) << 1);
+    return scaled(block >> 32, capacity >> 4) << 4 | static_cast<std::size_t>(u & 7) << 1;
   }
 };
 
@@ -39,88 +46,102 @@ class EdgeMap {
   std::size_t size() const { return size_; }
 
   Value* find(std::uint64_t key) {
-    if (keys_.empty()) return nullptr;
-    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
-      if (keys_[i] == key) return &values_[i];
-      if (keys_[i] == kEmpty) return nullptr;
+    if (entries_.empty()) return nullptr;
+    for (std::size_t i = slot(key);; i = after(i)) {
+      if (entries_[i].key == key) return &entries_[i].value;
+      if (entries_[i].key == kEmpty) return nullptr;
     }
   }
   const Value* find(std::uint64_t key) const { return const_cast<EdgeMap*>(this)->find(key); }
 
+  // Reads the first slot each key probes, so that finds of the same keys right after hit the
+  // cache: the independent loads of this plain loop overlap their misses, where a find's
+  // probe loop waits for each in turn (and WebAssembly has no prefetch instruction).
+  void touch(const std::uint64_t* keys, std::size_t n) const {
+    if (entries_.empty()) return;
+    std::uint64_t any = 0;
+    for (std::size_t k = 0; k < n; ++k) any |= entries_[slot(keys[k])].key;
+    sink_ = any;  // kept, so that the loads are
+  }
+
   // The value at key, and whether it was inserted (with value) rather than found.
   std::pair<Value*, bool> insert(std::uint64_t key, const Value& value) {
-    if (full(size_ + 1)) grow(2 * keys_.size());
-    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
-      if (keys_[i] == key) return {&values_[i], false};
-      if (keys_[i] == kEmpty) {
-        keys_[i] = key;
-        values_[i] = value;
+    if (full(size_ + 1)) grow(2 * entries_.size());
+    for (std::size_t i = slot(key);; i = after(i)) {
+      Entry& at = entries_[i];
+      if (at.key == key) return {&at.value, false};
+      if (at.key == kEmpty) {
+        at = {key, value};
         ++size_;
-        return {&values_[i], true};
+        return {&at.value, true};
       }
     }
   }
 
   // Removes key, shifting later entries of its probe run back so no tombstone is needed.
   void erase(std::uint64_t key) {
-    if (keys_.empty()) return;
+    if (entries_.empty()) return;
     std::size_t i = slot(key);
-    while (keys_[i] != key) {
-      if (keys_[i] == kEmpty) return;
-      i = (i + 1) & mask_;
+    while (entries_[i].key != key) {
+      if (entries_[i].key == kEmpty) return;
+      i = after(i);
     }
-    for (std::size_t j = (i + 1) & mask_; keys_[j] != kEmpty; j = (j + 1) & mask_) {
-      const std::size_t home = slot(keys_[j]);
+    for (std::size_t j = after(i); entries_[j].key != kEmpty; j = after(j)) {
+      const std::size_t home = slot(entries_[j].key);
       // Move j back to i when i lies on the way from j's home slot to j.
-      if (((j - home) & mask_) >= ((j - i) & mask_)) {
-        keys_[i] = keys_[j];
-        values_[i] = values_[j];
+      if (distance(home, j) >= distance(i, j)) {
+        entries_[i] = entries_[j];
         i = j;
       }
     }
-    keys_[i] = kEmpty;
+    entries_[i].key = kEmpty;
     --size_;
   }
 
-  // Room for about n entries, n an upper bound (up to 7/8 full for it): one table at its final
+  // Room for n entries, n an upper bound (up to 3/4 full for it): one table at its final
   // size, where growing step by step holds two at the end (the old and the new).
   void reserve(std::size_t n) {
-    std::size_t capacity = keys_.empty() ? 64 : keys_.size();
-    while (8 * n > 7 * capacity) capacity *= 2;
-    if (capacity > keys_.size()) grow(capacity);
+    const std::size_t capacity = (n + n / 3 + 16) / 16 * 16;
+    if (capacity > entries_.size()) grow(capacity);
   }
 
   void clear() {
-    keys_.clear();
-    values_.clear();
+    entries_.clear();
     size_ = 0;
-    mask_ = 0;
   }
 
  private:
-  std::size_t slot(std::uint64_t key) const { return Slot()(key) & mask_; }
+  std::size_t slot(std::uint64_t key) const { return Slot()(key, entries_.size()); }
+  std::size_t after(std::size_t i) const { return i + 1 == entries_.size() ? 0 : i + 1; }
+  // Slots from i forward to j, wrapping around the end.
+  std::size_t distance(std::size_t i, std::size_t j) const {
+    return j >= i ? j - i : j + entries_.size() - i;
+  }
 
-  // Up to three quarters full: half the memory of a half-full table for the same
-  // entries at the sizes of real data (NE 10m: 2^20 slots instead of 2^21), for probes a
-  // little longer.
-  bool full(std::size_t n) const { return 4 * n > 3 * keys_.size(); }
+  // Up to four fifths full. Reserved tables start at most three quarters full, where a
+  // power-of-two size left real data's tables half empty (NE 10m rings: 473,772 edges in
+  // 2^20 slots).
+  bool full(std::size_t n) const { return 5 * n > 4 * entries_.size(); }
 
   void grow(std::size_t capacity) {
-    std::vector<std::uint64_t> keys(capacity < 64 ? 64 : capacity, kEmpty);
-    std::vector<Value> values(keys.size());
-    keys.swap(keys_);
-    values.swap(values_);
-    mask_ = keys_.size() - 1;
+    std::vector<Entry> entries(capacity < 64 ? 64 : capacity, Entry{kEmpty, Value{}});
+    entries.swap(entries_);
     size_ = 0;
-    forChunks(0, keys.size(), [&](std::size_t begin, std::size_t end) {
+    forChunks(0, entries.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
-        if (keys[i] != kEmpty) insert(keys[i], values[i]);
+        if (entries[i].key != kEmpty) insert(entries[i].key, entries[i].value);
     });
   }
 
-  std::vector<std::uint64_t> keys_;
-  std::vector<Value> values_;
-  std::size_t size_ = 0, mask_ = 0;
+  // Key and value side by side: a lookup on a table far larger than the caches (the
+  // constraint store's, at export) misses once, not once in each of two arrays.
+  struct Entry {
+    std::uint64_t key;
+    Value value;
+  };
+  std::vector<Entry> entries_;
+  mutable volatile std::uint64_t sink_ = 0;
+  std::size_t size_ = 0;
 };
 
 }  // namespace geocdt

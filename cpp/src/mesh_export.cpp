@@ -114,6 +114,24 @@ void addProvenance(const Delaunay& d, Mesh& m) {
   m.sourceOffsets.reserve(edges + 1);
   m.sources.reserve(edges + d.constraints.extraMembers());
   m.sourceOffsets.push_back(0);
+  // The store's table is far larger than the caches and its entries come in no useful order
+  // here: the edges go in batches whose entries are touched first, so that their misses
+  // overlap (bench/EXPERIMENTS.md).
+  constexpr std::size_t kBatch = 64;
+  std::uint32_t edge[kBatch];
+  std::uint64_t key[kBatch];
+  std::size_t n = 0;
+  const auto flush = [&] {
+    d.constraints.touch(key, n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const EdgeSource* src = d.constraints.find(key[k]);
+      if (!src) continue;
+      m.constraintEdges.push_back(edge[k]);
+      d.constraints.forEachPolyline(*src, [&m](std::uint32_t p) { m.sources.push_back(p); });
+      m.sourceOffsets.push_back(static_cast<std::uint32_t>(m.sources.size()));
+    }
+    n = 0;
+  };
   forChunks(0, m.triangles.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {
       if (!m.constrained[e]) continue;
@@ -121,13 +139,12 @@ void addProvenance(const Delaunay& d, Mesh& m) {
       if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;  // listed from its twin
       const std::uint32_t u = m.triangles[e];
       const std::uint32_t v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
-      const EdgeSource* src = d.constraints.find(u, v);
-      if (!src) continue;
-      m.constraintEdges.push_back(static_cast<std::uint32_t>(e));
-      d.constraints.forEachPolyline(*src, [&m](std::uint32_t p) { m.sources.push_back(p); });
-      m.sourceOffsets.push_back(static_cast<std::uint32_t>(m.sources.size()));
+      edge[n] = static_cast<std::uint32_t>(e);
+      key[n] = ConstraintStore::key(u, v);
+      if (++n == kBatch) flush();
     }
   });
+  flush();
 }
 
 }  // namespace

@@ -151,5 +151,44 @@ TEST(ConstraintStore, OppositeRingsOnASharedBorderKeepTheirShares) {
   }
 }
 
+// The hash map alone, against std::map: tables of every size from the smallest up, so that
+// probe runs wrap around the end and erasures shift entries across it; keys crowded into a
+// few vertex blocks, as a polyline's edges are.
+TEST(EdgeMap, InsertsFindsAndErasesAgainstAModel) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    testing::Random r(seed);
+    const auto pick = [&](std::uint32_t n) { return static_cast<std::uint32_t>(r.next() % n); };
+    EdgeMap<std::uint32_t, EdgeSlot> map;
+    std::map<std::uint64_t, std::uint32_t> model;
+    const std::uint32_t ids = 8 + pick(4000);
+    if (seed % 2) map.reserve(pick(3000));
+    for (int step = 0; step < 6000; ++step) {
+      const std::uint32_t u = pick(ids);
+      const std::uint32_t v = u + 1 + pick(3);
+      const std::uint64_t key = ConstraintStore::key(u, v);
+      if (pick(3) == 0) {
+        map.erase(key);
+        model.erase(key);
+      } else {
+        const std::uint32_t value = static_cast<std::uint32_t>(step);
+        const auto [at, fresh] = map.insert(key, value);
+        const auto [it, modelFresh] = model.insert({key, value});
+        ASSERT_EQ(fresh, modelFresh) << "seed " << seed << " step " << step;
+        ASSERT_EQ(*at, it->second) << "seed " << seed << " step " << step;
+      }
+      ASSERT_EQ(map.size(), model.size()) << "seed " << seed << " step " << step;
+    }
+    for (std::uint32_t u = 0; u < ids + 3; ++u)
+      for (std::uint32_t v = u + 1; v <= u + 3; ++v) {
+        const std::uint64_t key = ConstraintStore::key(u, v);
+        const std::uint32_t* got = map.find(key);
+        const auto it = model.find(key);
+        ASSERT_EQ(got != nullptr, it != model.end())
+            << "seed " << seed << " edge " << u << "-" << v;
+        if (got) ASSERT_EQ(*got, it->second);
+      }
+  }
+}
+
 }  // namespace
 }  // namespace geocdt
