@@ -50,15 +50,17 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
         // Points first, then all polylines at once (one spatially sorted batch of their
         // points, then their segments), as geocdt::triangulate() does; done here through the
         // class so that the statistics can be read before release() clears them.
-        const std::vector<PolylineView> lines = input.polylines();
+        const std::size_t lineCount = input.lineCount();
         out.inputToVertex.resize(points + input.linePointCount());
         Triangulation triangulation(options);
         // The core takes the input buffer over as its coordinate array: no second copy.
         Status status = triangulation.insertPoints(std::move(input.points),
                                                    out.inputToVertex.data(), pointValues);
         relay.batch(points);
-        if (status.ok() && !lines.empty())
-          status = triangulation.insertPolylines(lines.data(), lines.size(),
+        // The polylines' coordinates go in the same way, freed once their points are in.
+        if (status.ok() && lineCount > 0)
+          status = triangulation.insertPolylines(std::move(input.lineCoords),
+                                                 input.lineOffsets.data(), lineCount,
                                                  out.inputToVertex.data() + points, lineValues);
         input.clear();  // the core holds its own copy: the export runs without this one
         if (status.ok() && refine)

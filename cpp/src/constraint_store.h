@@ -191,6 +191,15 @@ class ConstraintStore {
     for (const std::vector<Member>& list : extras_) n += list.size();
     return n;
   }
+  // Frees what only inserting segments needs (their ends and starts), keeping what an
+  // export reads (each edge's polylines and windings): for an export that ends the
+  // triangulation, where the heap peaks.
+  void dropSegments() {
+    segments = std::vector<SegmentEnds>();
+    segmentStarts = std::vector<std::uint32_t>();
+    pending = std::vector<PendingSegment>();
+  }
+
   void clear() {
     edges_.clear();
     extras_.clear();

@@ -85,6 +85,32 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
                                       std::uint32_t* vertexIds, const double* values) {
   if (count > 0 && polylines == nullptr)
     return {StatusCode::InvalidArgument, "null polylines with a count"};
+  return insertPolylineBatch(polylines, count, vertexIds, values, nullptr);
+}
+
+Status Triangulation::insertPolylines(std::vector<double>&& xy, const std::uint32_t* offsets,
+                                      std::size_t count, std::uint32_t* vertexIds,
+                                      const double* values) {
+  if (count > 0 && offsets == nullptr)
+    return {StatusCode::InvalidArgument, "null offsets with a count"};
+  const std::size_t points = xy.size() / 2;
+  if (xy.size() % 2 != 0 || (offsets != nullptr && offsets[0] != 0) ||
+      (count > 0 && offsets[count] != points) || (count == 0 && points != 0))
+    return {StatusCode::InvalidArgument,
+            "polyline offsets must run from 0 to the number of points in the buffer"};
+  std::vector<PolylineView> views(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (offsets[i + 1] < offsets[i])
+      return {StatusCode::InvalidArgument,
+              "polyline offsets must not decrease (offset " + std::to_string(i + 1) + ")", i};
+    views[i] = {xy.data() + 2 * static_cast<std::size_t>(offsets[i]), offsets[i + 1] - offsets[i]};
+  }
+  return insertPolylineBatch(views.data(), count, vertexIds, values, &xy);
+}
+
+Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::size_t count,
+                                          std::uint32_t* vertexIds, const double* values,
+                                          std::vector<double>* adopt) {
   std::size_t total = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const Status s = checkPolyline(polylines[i], i);
@@ -102,7 +128,9 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     }
     // All points first, in one spatially sorted batch.
     Status s;
-    if (count == 1) {
+    if (adopt) {
+      s = insertCheckedPoints(adopt->data(), total, ids, values, adopt);
+    } else if (count == 1) {
       s = insertCheckedPoints(polylines[0].xy, polylines[0].count, ids, values);
     } else {
       std::vector<double> all;
@@ -132,7 +160,7 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
     bool snap = state_->options.snapRounding == SnapRounding::Always && d.built();
     std::size_t offset = 0;
     for (std::size_t i = 0; i < count; ++i) {
-      const PolylineView& line = polylines[i];
+      const PolylineView& line = polylines[i];  // its count only: the points are in
       const std::uint32_t* lineIds = ids + offset;
       offset += line.count;
       const std::uint64_t firstPoint = store.polylinePoints;

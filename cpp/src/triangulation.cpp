@@ -158,6 +158,7 @@ namespace {
 Mesh exportWithValues(Triangulation::State& state, const MeshOptions& options, bool consume) {
   Mesh values;
   if (state.values.active()) state.values.update(state.delaunay, &values);
+  if (consume) state.delaunay.constraints.dropSegments();  // the values were their last use
   Mesh m = exportMesh(state.delaunay, options, consume);
   m.values = std::move(values.values);
   m.derivedVertices = std::move(values.derivedVertices);

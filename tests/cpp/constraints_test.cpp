@@ -1336,5 +1336,78 @@ TEST(Constraints, FuzzRouteLeftBehindOffItsSegmentIsFound) {
   }
 }
 
+// Polylines handed over in one buffer (GeoArrow's layout, as the WebAssembly binding does)
+// give the mesh that views of the same coordinates give, with points before them or not:
+// crossing rings and lines that share points, a repeated point, an empty polyline.
+TEST(Constraints, AdoptedPolylineBufferGivesTheSameMesh) {
+  Polylines lines;
+  for (int r = 0; r < 40; ++r) {
+    std::vector<double> ring;
+    const double cx = (r % 8) * 1.5, cy = (r / 8) * 1.5, radius = 0.6 + 0.3 * (r % 3);
+    for (int k = 0; k <= 24; ++k) {
+      const double a = 2 * M_PI * (k % 24) / 24;
+      ring.push_back(cx + radius * std::cos(a));
+      ring.push_back(cy + radius * std::sin(a));
+    }
+    lines.push_back(ring);
+  }
+  lines.push_back({0, 0, 12, 7.5, 12, 7.5, 0, 7.5});
+  lines.push_back({});
+  lines.push_back({1.5, 1.5, 3, 3});
+  std::vector<double> flat;
+  std::vector<std::uint32_t> offsets(1, 0);
+  for (const auto& l : lines) {
+    flat.insert(flat.end(), l.begin(), l.end());
+    offsets.push_back(static_cast<std::uint32_t>(flat.size() / 2));
+  }
+  for (const bool pointsFirst : {false, true}) {
+    Triangulation viewed, adopted;
+    if (pointsFirst) {
+      const std::vector<double> pts = testing::uniformPoints(300, 21);
+      ASSERT_TRUE(viewed.insertPoints(pts.data(), pts.size() / 2).ok());
+      ASSERT_TRUE(adopted.insertPoints(pts.data(), pts.size() / 2).ok());
+    }
+    std::vector<PolylineView> views;
+    for (const auto& l : lines) views.push_back({l.data(), l.size() / 2});
+    std::vector<std::uint32_t> viewIds(flat.size() / 2), adoptIds(flat.size() / 2);
+    ASSERT_TRUE(viewed.insertPolylines(views.data(), views.size(), viewIds.data()).ok());
+    std::vector<double> buffer = flat;
+    ASSERT_TRUE(
+        adopted.insertPolylines(std::move(buffer), offsets.data(), lines.size(), adoptIds.data())
+            .ok());
+    EXPECT_EQ(viewIds, adoptIds);
+    MeshOptions mo;
+    mo.insideFlags = true;
+    const Mesh a = viewed.mesh(mo), b = adopted.mesh(mo);
+    EXPECT_EQ(a.points, b.points);
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.constrained, b.constrained);
+    EXPECT_EQ(a.sources, b.sources);
+    EXPECT_EQ(a.inside, b.inside);
+    EXPECT_GT(viewed.stats().crossings, 0u);
+    EXPECT_EQ(viewed.stats().crossings, adopted.stats().crossings);
+  }
+}
+
+TEST(Constraints, AdoptedPolylineBufferRefusedWithItsReason) {
+  Triangulation t;
+  std::vector<double> xy = {0, 0, 1, 0, 1, 1, 0, 1};
+  const std::uint32_t shortOffsets[] = {0, 2, 3};
+  Status s = t.insertPolylines(std::move(xy), shortOffsets, 2);
+  EXPECT_EQ(s.code, StatusCode::InvalidArgument);
+  EXPECT_EQ(xy.size(), 8u);  // left as it was
+  const std::uint32_t decreasing[] = {0, 3, 2, 4};
+  s = t.insertPolylines(std::move(xy), decreasing, 3);
+  EXPECT_EQ(s.code, StatusCode::InvalidArgument);
+  EXPECT_EQ(s.index, 1u);
+  xy[5] = std::nan("");
+  const std::uint32_t offsets[] = {0, 2, 4};
+  s = t.insertPolylines(std::move(xy), offsets, 2);
+  EXPECT_EQ(s.code, StatusCode::InvalidCoordinate);
+  EXPECT_EQ(s.index, 1u);
+  EXPECT_EQ(xy.size(), 8u);
+  EXPECT_EQ(t.vertexCount(), 0u);
+}
+
 }  // namespace
 }  // namespace geocdt

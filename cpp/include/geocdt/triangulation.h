@@ -265,6 +265,14 @@ class Triangulation {
   // values holds one set per point of every polyline.
   Status insertPolylines(const PolylineView* polylines, std::size_t count,
                          std::uint32_t* vertexIds = nullptr, const double* values = nullptr);
+  // The same for polylines in GeoArrow's layout in a buffer the triangulation takes over:
+  // polyline i has the points offsets[i] .. offsets[i + 1] of xy (x, y interleaved); offsets
+  // has count + 1 entries, from 0 to xy.size() / 2. The buffer goes into the point batch as
+  // insertPoints(std::vector<double>&&) takes its points (no copy while the triangulation
+  // has no vertices) and is not read again: the segments need only the points' vertex ids.
+  // On invalid input nothing is inserted and xy is left as it was.
+  Status insertPolylines(std::vector<double>&& xy, const std::uint32_t* offsets, std::size_t count,
+                         std::uint32_t* vertexIds = nullptr, const double* values = nullptr);
   std::size_t polylineCount() const;
 
   // Where (x, y) lies in the triangulation. const because the mesh does not change; but the
@@ -308,6 +316,11 @@ class Triangulation {
   // with adopt, the points are *adopt's, taken over.
   Status insertCheckedPoints(const double* xy, std::size_t count, std::uint32_t* vertexIds,
                              const double* values, std::vector<double>* adopt = nullptr);
+  // insertPolylines, from the polylines' views (whose coordinates are read only until their
+  // points are in) or, with adopt, from *adopt's points, taken over.
+  Status insertPolylineBatch(const PolylineView* polylines, std::size_t count,
+                             std::uint32_t* vertexIds, const double* values,
+                             std::vector<double>* adopt);
 
  public:
   struct State;  // internal: named here so that the implementation's helpers can take it
