@@ -37,11 +37,14 @@ class BadQueue {
     ++size_;
   }
   bool empty() const { return size_ == 0; }
-  BadTriangle pop() {
+  // The worst triangle; skinny tells whether it was queued for its angle (key below 1), not
+  // its area.
+  BadTriangle pop(bool& skinny) {
     while (buckets_[first_].empty()) ++first_;
     const BadTriangle t = buckets_[first_].back();
     buckets_[first_].pop_back();
     --size_;
+    skinny = first_ < kBuckets / 2;
     return t;
   }
 
@@ -116,7 +119,7 @@ class Refiner {
   void checkAround(std::int32_t t);  // the triangle and its subsegments
   void restoreDelaunay(std::vector<std::int32_t>& stack);
   Outcome splitSubsegment(std::int32_t e, bool forced);
-  Outcome splitTriangle(const BadTriangle& bad);
+  Outcome splitTriangle(const BadTriangle& bad, bool skinny);  // skinny: queued for its angle
   std::uint32_t newVertex(double px, double py) {
     d_.xy.push_back(px);
     d_.xy.push_back(py);
