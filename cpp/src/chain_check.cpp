@@ -69,20 +69,22 @@ class Chains {
     std::int32_t out;  // a half-edge out of `at`
   };
 
-  bool names(std::uint32_t u, std::uint32_t v, std::uint32_t polyline) const {
+  // Whether edge u-v holds segment i: a segment's chain is the route its insertion took,
+  // not any chain of its polyline's edges within the bound (in a tangle there can be
+  // thousands, and one that keeps apart from another segment's says nothing of the route).
+  bool holds(std::uint32_t u, std::uint32_t v, std::uint32_t i) const {
     const EdgeSource* src = d_.constraints.find(u, v);
     if (!src) return false;
     bool found = false;
-    d_.constraints.forEachPolyline(*src, [&](std::uint32_t p) { found = found || p == polyline; });
+    d_.constraints.forEachSegment(*src, [&](std::uint32_t k) { found = found || k == i; });
     return found;
   }
 
-  // The least-straying chain from the segment's first vertex to its last, as the checker
-  // finds it: a search by the most any vertex so far strays, in units of the spacing of
-  // doubles on each axis.
+  // The segment's chain: the edges that hold it, from its first vertex to its last, each
+  // within the bound and further along (a search by the most any vertex so far strays, in
+  // units of the spacing of doubles on each axis, which on one route finds that route).
   void search(std::uint32_t i, std::vector<std::uint32_t>& chain) {
     const InputSegment s = d_.constraints.geometry(i, d_.xy);
-    const std::uint32_t polyline = d_.constraints.sourceOf(i).polyline;
     const int bound = chainBoundExponent(s);
     const std::uint32_t first = d_.constraints.segments[i].a, last = d_.constraints.segments[i].b;
     const std::int32_t out = ends_.find(d_, first);
@@ -120,7 +122,7 @@ class Chains {
       std::int32_t e = step.out;
       do {
         const std::uint32_t n = topo.tri[nextEdge(e)];
-        if (topo.fixed[e] && n != kGhost && !settled.find(n) && names(step.at, n, polyline) &&
+        if (topo.fixed[e] && n != kGhost && !settled.find(n) && holds(step.at, n, i) &&
             withinDistance(s, p[2 * n], p[2 * n + 1], bound) &&
             signAlong(s, p[2 * step.at], p[2 * step.at + 1], p[2 * n], p[2 * n + 1]) > 0) {
           queue.push_back({std::max(step.cost, stray(n)), n, step.at, topo.adj[e]});

@@ -105,7 +105,7 @@ void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t
   if (labels) labels->resize(count);
 }
 
-void addProvenance(const Delaunay& d, Mesh& m) {
+void addProvenance(const Delaunay& d, Mesh& m, bool segments) {
   const std::size_t edges = d.constraints.edgeCount();
   if (edges == 0) return;
   // Sized at once: the export is where the heap peaks, and doubling on the way would add
@@ -114,6 +114,7 @@ void addProvenance(const Delaunay& d, Mesh& m) {
   m.sourceOffsets.reserve(edges + 1);
   m.sources.reserve(edges + d.constraints.extraMembers());
   m.sourceOffsets.push_back(0);
+  if (segments) m.segmentOffsets.push_back(0);
   // The store's table is far larger than the caches and its entries come in no useful order
   // here: the edges go in batches whose entries are touched first, so that their misses
   // overlap (bench/EXPERIMENTS.md).
@@ -129,6 +130,9 @@ void addProvenance(const Delaunay& d, Mesh& m) {
       m.constraintEdges.push_back(edge[k]);
       d.constraints.forEachPolyline(*src, [&m](std::uint32_t p) { m.sources.push_back(p); });
       m.sourceOffsets.push_back(static_cast<std::uint32_t>(m.sources.size()));
+      if (!segments) continue;
+      d.constraints.forEachSegment(*src, [&m](std::uint32_t i) { m.segmentSources.push_back(i); });
+      m.segmentOffsets.push_back(static_cast<std::uint32_t>(m.segmentSources.size()));
     }
     n = 0;
   };
@@ -189,7 +193,7 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
   if (options.insideFlags) m.inside = std::move(inside);
   if (options.regions) m.regions = std::move(regions);
   progress(Phase::Export, 2, 3);
-  addProvenance(d, m);
+  addProvenance(d, m, options.segmentSources);
   for (const SteinerVertex& s : d.steiner) {
     m.steiner.push_back(s.vertex);
     m.steinerParents.insert(m.steinerParents.end(), s.parents, s.parents + 3);

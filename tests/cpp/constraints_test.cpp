@@ -1,8 +1,10 @@
 // Constrained triangulation: polylines of any form, checked by both halves of the checker.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <string>
 
@@ -479,6 +481,7 @@ int snapRoundings(const Polylines& lines, const Options& options, bool oneCall,
   }
   MeshOptions mo;
   mo.insideFlags = true;
+  mo.segmentSources = true;
   const Mesh m = t.mesh(mo);
   std::vector<double> input;
   for (const auto& l : lines) input.insert(input.end(), l.begin(), l.end());
@@ -670,7 +673,9 @@ TEST(Constraints, FuzzRingAndLineNearlyCollinearOneCallEach) {
 TEST(Constraints, FuzzTangleCoreAndCheckerPickTheSameChains) {
   // One polyline within 4e-11 of zero: several chains of a segment strayed equally far, and
   // the core's check and the checker picked different ones (the core's did not cross, the
-  // checker's did). Both now pick the same: the computed crossings are kept, and pass.
+  // checker's did). Both then picked the least-straying chain, which did not cross either,
+  // but the routes the segments took did: both now follow the routes (the edges that hold
+  // each segment), so the core snap-rounds this call, and its chains pass.
   const Polylines lines = {{1.9172148313373326e-11, 3.4960976336151359e-11, 1.9172148313373326e-11,
                             3.4960976336151359e-11, 1.9172148313373326e-11, 3.4960976336151359e-11,
                             1.2369127944111822e-11, 2.2555468603968621e-11, 1.2369127944111822e-11,
@@ -687,7 +692,7 @@ TEST(Constraints, FuzzTangleCoreAndCheckerPickTheSameChains) {
   o.start = LocateStart::Grid;
   o.gridDensity = 2;
   std::string broken;
-  EXPECT_EQ(snapRoundings(lines, o, true, broken), 0);
+  EXPECT_EQ(snapRoundings(lines, o, true, broken), 1);
   EXPECT_EQ(broken, "");
 }
 
@@ -1214,9 +1219,6 @@ TEST(Constraints, OneShotWithNullPolylinesAndACountIsInvalidArgument) {
   EXPECT_EQ(m.triangles.size(), 3u);
 }
 
-}  // namespace
-}  // namespace geocdt
-
 namespace geocdt {
 namespace {
 
@@ -1339,6 +1341,41 @@ TEST(Constraints, FuzzRouteLeftBehindOffItsSegmentIsFound) {
 // Polylines handed over in one buffer (GeoArrow's layout, as the WebAssembly binding does)
 // give the mesh that views of the same coordinates give, with points before them or not:
 // crossing rings and lines that share points, a repeated point, an empty polyline.
+TEST(Constraints, SegmentSourcesNameEachEdgesInputSegments) {
+  // Segments 0 (0,0)-(2,0) and 1 (2,0)-(2,2); 2 (1,-1)-(1,1) crosses 0 at (1,0); the third
+  // polyline repeats a point (no segment) and then overlaps segment 1 as segment 3.
+  const Polylines lines = {{0, 0, 2, 0, 2, 2}, {1, -1, 1, 1}, {2, 0, 2, 0, 2, 2}};
+  std::vector<PolylineView> views;
+  for (const auto& l : lines) views.push_back({l.data(), l.size() / 2});
+  Triangulation t;
+  ASSERT_TRUE(t.insertPolylines(views.data(), views.size()).ok());
+  MeshOptions mo;
+  mo.segmentSources = true;
+  const Mesh m = t.mesh(mo);
+  ASSERT_EQ(m.segmentOffsets.size(), m.constraintEdges.size() + 1);
+  std::map<std::vector<double>, std::vector<std::uint32_t>> named;
+  for (std::size_t i = 0; i < m.constraintEdges.size(); ++i) {
+    const std::uint32_t e = m.constraintEdges[i];
+    std::uint32_t u = m.triangles[e], v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
+    if (std::make_pair(m.points[2 * u], m.points[2 * u + 1]) >
+        std::make_pair(m.points[2 * v], m.points[2 * v + 1]))
+      std::swap(u, v);
+    std::vector<std::uint32_t> segments(m.segmentSources.begin() + m.segmentOffsets[i],
+                                        m.segmentSources.begin() + m.segmentOffsets[i + 1]);
+    std::sort(segments.begin(), segments.end());
+    named[{m.points[2 * u], m.points[2 * u + 1], m.points[2 * v], m.points[2 * v + 1]}] = segments;
+  }
+  const std::map<std::vector<double>, std::vector<std::uint32_t>> expected = {
+      {{0, 0, 1, 0}, {0}},
+      {{1, 0, 2, 0}, {0}},
+      {{2, 0, 2, 2}, {1, 3}},
+      {{1, -1, 1, 0}, {2}},
+      {{1, 0, 1, 1}, {2}}};
+  EXPECT_EQ(named, expected);
+  // Not asked for: not filled.
+  EXPECT_TRUE(t.mesh().segmentOffsets.empty());
+}
+
 TEST(Constraints, AdoptedPolylineBufferGivesTheSameMesh) {
   Polylines lines;
   for (int r = 0; r < 40; ++r) {
@@ -1407,6 +1444,126 @@ TEST(Constraints, AdoptedPolylineBufferRefusedWithItsReason) {
   EXPECT_EQ(s.index, 1u);
   EXPECT_EQ(xy.size(), 8u);
   EXPECT_EQ(t.vertexCount(), 0u);
+}
+
+}  // namespace
+}  // namespace geocdt
+
+TEST(Constraints, FuzzTangleOfLongSegmentsFromUlpsApartEnds) {
+  // Long segments from three points ulps apart at (1, -12345.678) to points about 3e10 away,
+  // nearly collinear, one polyline a call (CI's fuzz run, seed 1): the checker found the
+  // chains of segments 7 and 19 crossing 4 times, though the segments do not meet. Segment 7
+  // has more than 4096 chains within its bound, and the checker, which knew only each edge's
+  // polylines, tried only 4096 of them; with each edge's segments it checks the chains the
+  // core routed, which keep apart.
+  const Polylines lines = {
+      {1, -12345.678, -8679999999.0000019, 29759987654.321995},
+      {-4339999999.000001, 14879987654.321997, -2169999999.0000005, 7439987654.3219986, 1,
+       -12345.678, -2169999999.0000005, 7439987654.3219986, -4339999999.000001, 14879987654.321997,
+       -4339999999.000001, 14879987654.321997, 1, -12345.678},
+      {1,
+       -12345.678,
+       -8679999999.0000019,
+       29759987654.321995,
+       1,
+       -12345.678,
+       4800000001,
+       1399987654.3220003,
+       -1084999999.0000002,
+       3719987654.3219991,
+       -4339999999.000001,
+       14879987654.321995,
+       -4339999999.000001,
+       14879987654.321995,
+       -8679999999.0000019,
+       29759987654.321991,
+       -4339999999.000001,
+       14879987654.321993,
+       1,
+       -12345.678000000002,
+       4800000001,
+       1399987654.322,
+       18320000000.999996,
+       15759987654.322001,
+       -1084999999.0000002,
+       3719987654.3219986,
+       1,
+       -12345.678},
+      {1,
+       -12345.678000000002,
+       1,
+       -12345.678000000004,
+       -8679999999.0000019,
+       29759987654.321991,
+       -4339999999.000001,
+       14879987654.321995,
+       18320000000.999996,
+       15759987654.321999,
+       -1084999999.0000002,
+       3719987654.3219986,
+       -4339999999.000001,
+       14879987654.321995,
+       1,
+       -12345.678000000002,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       9360000000.9999981,
+       21479987654.321999,
+       1,
+       -12345.678000000002},
+      {1, -12345.678000000002, 9360000000.9999981, 21479987654.321995, -1084999999.0000002,
+       3719987654.3219981, 1, -12345.678000000002},
+      {1, -12345.678000000004, -4339999999.000001, 14879987654.321991, 4800000001, 1399987654.322,
+       -4339999999.000001, 14879987654.321995, -4339999999.000001, 14879987654.321995, 4800000001,
+       1399987654.3219998, -6439999999, 22079987654.321999},
+      {-2169999999.0000005,
+       7439987654.3219976,
+       -542499999.00000012,
+       1859987654.3219991,
+       -8119999999.000001,
+       27839987654.321999,
+       11480000000.999998,
+       35639987654.321999,
+       1920000001,
+       559987654.32200003,
+       -1119999999,
+       3839987654.322,
+       1,
+       -12345.678,
+       -1084999999.0000002,
+       3719987654.3219991,
+       21120000000.999996,
+       6159987654.3219995,
+       960000001,
+       279987654.32200003,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       1,
+       -12345.678,
+       -2169999999.0000005,
+       7439987654.3219976},
+  };
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::Grid;
+  std::string broken;
+  for (const bool always : {false, true}) {
+    o.snapRounding = always ? SnapRounding::Always : SnapRounding::WhenNeeded;
+    for (const bool oneCall : {false, true}) {
+      EXPECT_GE(snapRoundings(lines, o, oneCall, broken), 1) << always << oneCall;
+      EXPECT_EQ(broken, "") << always << oneCall;
+    }
+  }
 }
 
 }  // namespace

@@ -107,6 +107,7 @@ Built build(const Input& input) {
   flagged.insideFlags = true;
   flagged.fill = insideOnly.fill = input.fill;
   flagged.regions = true;
+  flagged.segmentSources = true;  // each segment's chain as routed, for the checker
   for (std::size_t i = 0; i < input.lines.size(); ++i)
     flagged.polylinePolygons.push_back(static_cast<std::int32_t>(i / 2));
   insideOnly.keep = Keep::Inside;

@@ -119,6 +119,7 @@ void run(const Input& input) {
   if (stats.steinerPoints > input.refine.maxSteinerPoints) fail("the cap was passed");
   MeshOptions mo;
   mo.insideFlags = true;
+  mo.segmentSources = true;  // each segment's chain as routed, for the checker
   const Mesh m = t.mesh(mo);
   if (m.steiner.size() != stats.steinerPoints) fail("steiner does not list every Steiner point");
   if (m.triangles.empty()) return;

@@ -101,6 +101,10 @@ struct MeshOptions {
   // floating point, fewer triangles, so nesting always gives the innermost polygon.
   bool regions = false;
   std::vector<std::int32_t> polylinePolygons;
+
+  // Fill Mesh::segmentOffsets and Mesh::segmentSources: the input segments each constrained
+  // edge lies on, for callers that need a segment's exact chain (tests check chains with it).
+  bool segmentSources = false;
 };
 
 // Mesh::steinerParents' third entry for a Steiner vertex placed on an edge.
@@ -137,6 +141,12 @@ struct Mesh {
   std::vector<std::uint32_t> constraintEdges;
   std::vector<std::uint32_t> sourceOffsets;
   std::vector<std::uint32_t> sources;
+  // With MeshOptions::segmentSources: the input segments whose chains hold constrained edge
+  // constraintEdges[i] are segmentSources[segmentOffsets[i] .. segmentOffsets[i + 1]).
+  // Segments are numbered across polylines in insertion order, zero-length ones (a point
+  // repeated, or two input points that became one vertex) skipped.
+  std::vector<std::uint32_t> segmentOffsets;
+  std::vector<std::uint32_t> segmentSources;
   std::vector<std::uint8_t> inside;  // 1 per triangle when MeshOptions::insideFlags
   // 1 per triangle when MeshOptions::regions: its polygon (see there), or -1 outside every one.
   std::vector<std::int32_t> regions;

@@ -287,20 +287,30 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
 
   // The polylines each constrained edge names, when the mesh has provenance: a chain only
   // uses edges that name its polyline (with coordinates of very different sizes the bound is
-  // wide across the smaller axis, and other segments' edges would fit it too).
+  // wide across the smaller axis, and other segments' edges would fit it too). Where the mesh
+  // names the input segments too (MeshOptions::segmentSources), a chain only uses edges that
+  // name its segment: then each segment has one chain, the one the core routed, and the
+  // checks below need not guess it among the many a tangle allows.
+  const bool bySegment = !mesh.segmentOffsets.empty();
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> named;
   for (std::size_t i = 0; i < mesh.constraintEdges.size(); ++i) {
     const std::uint32_t e = mesh.constraintEdges[i];
     const std::uint32_t u = mesh.triangles[e], v = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
     const std::uint64_t key = std::uint64_t{std::min(u, v)} << 32 | std::max(u, v);
-    named[key].assign(mesh.sources.begin() + mesh.sourceOffsets[i],
-                      mesh.sources.begin() + mesh.sourceOffsets[i + 1]);
+    if (bySegment)
+      named[key].assign(mesh.segmentSources.begin() + mesh.segmentOffsets[i],
+                        mesh.segmentSources.begin() + mesh.segmentOffsets[i + 1]);
+    else
+      named[key].assign(mesh.sources.begin() + mesh.sourceOffsets[i],
+                        mesh.sources.begin() + mesh.sourceOffsets[i + 1]);
   }
-  const auto names = [&](std::uint32_t u, std::uint32_t v, std::uint32_t polyline) {
+  // Whether edge u-v may be on segment i's chain.
+  const auto names = [&](std::uint32_t u, std::uint32_t v, std::size_t i) {
     if (named.empty()) return true;
     const auto it = named.find(std::uint64_t{std::min(u, v)} << 32 | std::max(u, v));
+    const std::uint32_t name = bySegment ? static_cast<std::uint32_t>(i) : polylineOf[i];
     return it != named.end() &&
-           std::find(it->second.begin(), it->second.end(), polyline) != it->second.end();
+           std::find(it->second.begin(), it->second.end(), name) != it->second.end();
   };
 
   // How far v strays from segment i in units of the spacing of doubles on each axis there
@@ -345,8 +355,7 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
       from[at] = step.before;
       if (at == goal) return true;
       for (const std::uint32_t n : next[at]) {
-        if (seenAt[n] == mark || !names(at, n, polylineOf[i]) ||
-            !within(s, p[2 * n], p[2 * n + 1], bound))
+        if (seenAt[n] == mark || !names(at, n, i) || !within(s, p[2 * n], p[2 * n + 1], bound))
           continue;
         if (ordered && alongSign(s, p[2 * at], p[2 * at + 1], p[2 * n], p[2 * n + 1]) <= 0)
           continue;
@@ -388,7 +397,7 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
     const Segment& s = segments[i];
     const std::uint32_t a = ends[i].first, b = ends[i].second;
     const auto forward = [&](std::uint32_t u, std::uint32_t n) {
-      return names(u, n, polylineOf[i]) && within(s, p[2 * n], p[2 * n + 1], bounds[i]) &&
+      return names(u, n, i) && within(s, p[2 * n], p[2 * n + 1], bounds[i]) &&
              alongSign(s, p[2 * u], p[2 * u + 1], p[2 * n], p[2 * n + 1]) > 0;
     };
     struct Best {
@@ -440,7 +449,7 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
     const std::uint32_t a = ends[i].first, b = ends[i].second;
     std::unordered_map<std::uint32_t, bool> near, dead;
     const auto forward = [&](std::uint32_t u, std::uint32_t n) {
-      if (!names(u, n, polylineOf[i])) return false;
+      if (!names(u, n, i)) return false;
       const auto known = near.find(n);
       const bool inside = known != near.end()
                               ? known->second
