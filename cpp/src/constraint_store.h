@@ -182,7 +182,12 @@ class ConstraintStore {
   }
 
   std::size_t edgeCount() const { return edges_.size(); }
-  void reserve(std::size_t edges) { edges_.reserve(edges); }
+  // Room for edges in all, between vertex ids mostly below idBound (see EdgeSlot).
+  void reserve(std::size_t edges, std::uint64_t idBound) {
+    edges_.orderIds(idBound);
+    edges_.reserve(edges);
+  }
+  bool scattered() const { return edges_.scattered(); }
 
   // The polylines of every edge beyond its first, counted with repeats: with edgeCount(), a
   // bound on the provenance an export lists.

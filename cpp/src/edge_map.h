@@ -19,22 +19,48 @@ inline std::size_t scaled(std::uint64_t hash32, std::size_t n) {
 
 // A multiplicative hash, for keys with no useful order.
 struct HashedSlot {
+  static constexpr bool kAdaptive = false;
+  void fit(std::size_t, std::uint64_t) {}
+  bool scatter() { return false; }
   std::size_t operator()(std::uint64_t key, std::size_t capacity) const {
     return scaled((key * 0x9E3779B97F4A7C15ull) >> 32, capacity);
   }
 };
 
-// For keys (u << 32 | v) of edges with u < v: edges between nearby vertex ids start their
-// probes in nearby slots, so that a run of edges along a polyline (whose vertices are
-// numbered in input order) touches a few cache lines instead of one each. The ids are hashed
-// in blocks of 8 (u's block and v's), which spreads the edges of one vertex to many others
-// (a hub) and ids far apart; within a block, u picks a pair of slots.
+// For keys (u << 32 | v) of constrained edges, u < v: probes start in the order of u, scaled
+// to the table. A polyline's vertices have consecutive ids and the triangles come in
+// spatial order, so the edges marked along a polyline, and those looked up triangle by
+// triangle at export, touch slots near the last ones, where hashed slots missed the cache
+// on almost every edge (bench/EXPERIMENTS.md, 26). Ids crowding some slots (one vertex with
+// thousands of edges, ids far past the bound) make long probe runs: when the inserts into a
+// table have probed more than kMeanRun slots each on average, it turns to hashed slots for
+// good, so a table never costs more than a few times what a hashed one would.
 struct EdgeSlot {
+  static constexpr bool kAdaptive = true;
+  std::uint64_t scale = 1 << 16;  // slots per vertex id, 16.16 fixed point
+  bool hashed = false;
+
+  // The scale for ids below idBound (0: unknown, keep it) in a table of capacity slots.
+  void fit(std::size_t capacity, std::uint64_t idBound) {
+    if (idBound == 0) return;
+    const std::uint64_t s = (static_cast<std::uint64_t>(capacity) << 16) / idBound;
+    scale = s < 1 ? 1 : s > (1ull << 31) ? 1ull << 31 : s;
+  }
+  // Turns to hashed slots; false when already there.
+  bool scatter() {
+    const bool was = hashed;
+    hashed = true;
+    return !was;
+  }
   std::size_t operator()(std::uint64_t key, std::size_t capacity) const {
     const std::uint64_t u = key >> 32, v = key & 0xFFFFFFFFu;
-    const std::uint64_t block =
-        ((u >> 3) * 0x9E3779B97F4A7C15ull) ^ ((v >> 3) * 0xC2B2AE3D27D4EB4Full);
-    return scaled(block >> 32, capacity >> 4) << 4 | static_cast<std::size_t>(u & 7) << 1;
+    if (hashed) {  // blocks of 8 ids, u picking a pair of slots within 16
+      const std::uint64_t block =
+          ((u >> 3) * 0x9E3779B97F4A7C15ull) ^ ((v >> 3) * 0xC2B2AE3D27D4EB4Full);
+      return scaled(block >> 32, capacity >> 4) << 4 | static_cast<std::size_t>(u & 7) << 1;
+    }
+    const std::size_t s = static_cast<std::size_t>((u * scale) >> 16);
+    return s < capacity ? s : s % capacity;
   }
 };
 
@@ -67,12 +93,17 @@ class EdgeMap {
   // The value at key, and whether it was inserted (with value) rather than found.
   std::pair<Value*, bool> insert(std::uint64_t key, const Value& value) {
     if (full(size_ + 1)) grow(2 * entries_.size());
-    for (std::size_t i = slot(key);; i = after(i)) {
+    ++inserts_;
+    for (std::size_t i = slot(key);; i = after(i), ++probes_) {
       Entry& at = entries_[i];
       if (at.key == key) return {&at.value, false};
       if (at.key == kEmpty) {
         at = {key, value};
         ++size_;
+        if (Slot::kAdaptive && probes_ > kMeanRun * inserts_ + 4096 && slot_.scatter()) {
+          grow(entries_.size());  // the same size, hashed
+          return {find(key), true};
+        }
         return {&at.value, true};
       }
     }
@@ -105,13 +136,25 @@ class EdgeMap {
     if (capacity > entries_.size()) grow(capacity);
   }
 
+  // The key order for slots that keep one (EdgeSlot): ids up to about idBound, from the
+  // next time the table is sized.
+  void orderIds(std::uint64_t idBound) { idBound_ = idBound; }
+  // Whether long probe runs turned the slots to hashed ones (EdgeSlot).
+  bool scattered() const {
+    if constexpr (Slot::kAdaptive) return slot_.hashed;
+    return false;
+  }
+
   void clear() {
     entries_.clear();
-    size_ = 0;
+    size_ = inserts_ = probes_ = 0;
+    slot_ = Slot();
   }
 
  private:
-  std::size_t slot(std::uint64_t key) const { return Slot()(key, entries_.size()); }
+  static constexpr std::size_t kMeanRun = 16;
+
+  std::size_t slot(std::uint64_t key) const { return slot_(key, entries_.size()); }
   std::size_t after(std::size_t i) const { return i + 1 == entries_.size() ? 0 : i + 1; }
   // Slots from i forward to j, wrapping around the end.
   std::size_t distance(std::size_t i, std::size_t j) const {
@@ -126,11 +169,13 @@ class EdgeMap {
   void grow(std::size_t capacity) {
     std::vector<Entry> entries(capacity < 64 ? 64 : capacity, Entry{kEmpty, Value{}});
     entries.swap(entries_);
+    slot_.fit(entries_.size(), idBound_);
     size_ = 0;
     forChunks(0, entries.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
         if (entries[i].key != kEmpty) insert(entries[i].key, entries[i].value);
     });
+    inserts_ = probes_ = 0;  // a new table
   }
 
   // Key and value side by side: a lookup on a table far larger than the caches (the
@@ -140,6 +185,9 @@ class EdgeMap {
     Value value;
   };
   std::vector<Entry> entries_;
+  Slot slot_;
+  std::uint64_t idBound_ = 0;
+  std::size_t inserts_ = 0, probes_ = 0;  // since the table was sized
   mutable volatile std::uint64_t sink_ = 0;
   std::size_t size_ = 0;
 };

@@ -145,7 +145,7 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
     // At most one segment and one constrained edge a point (fewer where polylines share
     // edges): the store's arrays and table at about their final sizes at once, not doubled
     // on the way.
-    store.reserve(store.edgeCount() + total);
+    store.reserve(store.edgeCount() + total, d.vertexCount());
     store.segments.reserve(store.segments.size() + total);
     store.segmentStarts.reserve(store.segmentStarts.size() + total);
     store.firstSegment.reserve(store.firstSegment.size() + count);

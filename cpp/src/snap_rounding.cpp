@@ -214,6 +214,7 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
   store.ring = d.constraints.ring;
   store.polylineCount = d.constraints.polylineCount;
   const std::size_t n = store.segments.size();
+  store.reserve(n, fresh.vertexCount());
   // The geometry of segment i (its ends keep their ids and coordinates in fresh).
   const auto segment = [&](std::size_t i) {
     return store.geometry(static_cast<std::uint32_t>(i), fresh.xy);

@@ -161,6 +161,7 @@ TEST(EdgeMap, InsertsFindsAndErasesAgainstAModel) {
     EdgeMap<std::uint32_t, EdgeSlot> map;
     std::map<std::uint64_t, std::uint32_t> model;
     const std::uint32_t ids = 8 + pick(4000);
+    if (seed % 3) map.orderIds(seed % 3 == 1 ? ids : ids / 8);  // ids past the bound wrap
     if (seed % 2) map.reserve(pick(3000));
     for (int step = 0; step < 6000; ++step) {
       const std::uint32_t u = pick(ids);
@@ -188,6 +189,29 @@ TEST(EdgeMap, InsertsFindsAndErasesAgainstAModel) {
         if (got) ASSERT_EQ(*got, it->second);
       }
   }
+}
+
+TEST(EdgeMap, SlotsInIdOrderTurnHashedWhereIdsCrowd) {
+  // Edges along polylines (consecutive ids) keep slots in id order; a hub of 20,000 edges
+  // from one vertex would probe a run as long as its edges for each: the table turns to
+  // hashed slots, and every edge is still found.
+  EdgeMap<std::uint32_t, EdgeSlot> along;
+  along.orderIds(100000);
+  along.reserve(100000);
+  for (std::uint32_t u = 0; u + 1 < 100000; ++u) along.insert(ConstraintStore::key(u, u + 1), u);
+  EXPECT_FALSE(along.scattered());
+  EdgeMap<std::uint32_t, EdgeSlot> hub;
+  hub.orderIds(20001);
+  hub.reserve(20000);
+  for (std::uint32_t v = 1; v <= 20000; ++v) hub.insert(ConstraintStore::key(0, v), v);
+  EXPECT_TRUE(hub.scattered());
+  EXPECT_EQ(hub.size(), 20000u);
+  for (std::uint32_t v = 1; v <= 20000; ++v) {
+    const std::uint32_t* got = hub.find(ConstraintStore::key(v, 0));
+    ASSERT_NE(got, nullptr) << v;
+    EXPECT_EQ(*got, v);
+  }
+  EXPECT_EQ(hub.find(ConstraintStore::key(1, 2)), nullptr);
 }
 
 }  // namespace
