@@ -2,8 +2,9 @@
 // same points (geocdt with the constraints, delaunator without), alternating, medians; and the
 // share of each geocdt call spent outside the core (stats.milliseconds vs coreMilliseconds).
 //   node --expose-gc bench/js/targets.js [--data DIR] [--quick]
-// DIR holds gshhg_region.gpl (scripts/datasets/gshhg_region.sh makes it); --quick runs 1M
-// uniform points only.
+// DIR holds gshhg_region.gpl, gshhg_asia.gpl and gshhg_east.gpl (scripts/datasets/all.sh makes
+// them); --quick runs 1M uniform points only. With gshhg_east.gpl, it also compares the time
+// per point of the eastern hemisphere's GSHHG (7.3M points) with the 2M-point region's.
 import { existsSync } from 'node:fs';
 import { join } from 'node:path';
 import Delaunator from 'delaunator';
@@ -76,16 +77,48 @@ if (!quick) {
   const rings = flatPolylines(countryRings('10m').polylines);
   rows.push({ name: 'Natural Earth 10m country rings', input: { polylines: rings },
     points: rings.coords, target: '≤ 0.7×', rounds: 5 });
-  const gpl = data && join(data, 'gshhg_region.gpl');
-  if (gpl && existsSync(gpl)) {
+  // Europe (4,268 crossings) and South and East Asia (14,896: the target's 10,000 or more).
+  const regions = [['gshhg_region.gpl', 'GSHHG Europe'], ['gshhg_asia.gpl', 'GSHHG Asia']];
+  for (const [file, name] of regions) {
+    const gpl = data && join(data, file);
+    if (!gpl || !existsSync(gpl)) continue;
     const region = readGpl(gpl);
-    rows.push({ name: 'GSHHG region', input: { polylines: region }, points: region.coords,
-      target: '≤ 0.7×', rounds: 3 });
+    rows.push({ name, input: { polylines: region }, points: region.coords, target: '≤ 0.7×',
+      rounds: 3 });
   }
 }
 console.log('## geocdt (constrained where there are polylines) vs delaunator (the same points, '
   + `unconstrained), warm, alternating, medians; ${new Date().toISOString().slice(0, 10)}\n`);
 measure(rows);
 if (!quick && !(data && existsSync(join(data, 'gshhg_region.gpl')))) {
-  console.log('(GSHHG region skipped: pass --data DIR with gshhg_region.gpl in it.)');
+  console.log('(GSHHG regions skipped: pass --data DIR with the .gpl files in it.)');
+}
+
+// Time per point as the constrained input grows: one call on the eastern hemisphere's
+// GSHHG against one on the 2M-point region, alternating (target: within 1.2×).
+const large = data && join(data, 'gshhg_east.gpl');
+if (!quick && large && existsSync(large) && existsSync(join(data, 'gshhg_region.gpl'))) {
+  const sets = [['GSHHG region', readGpl(join(data, 'gshhg_region.gpl'))],
+    ['GSHHG eastern hemisphere', readGpl(large)]];
+  const perPoint = sets.map(() => []);
+  const crossings = [];
+  for (let round = 0; round < 3; round++) {
+    sets.forEach(([, polylines], k) => {
+      globalThis.gc?.();
+      const started = performance.now();
+      const { stats } = triangulate({ polylines });
+      perPoint[k].push((performance.now() - started) * 1e6 / (polylines.coords.length / 2));
+      crossings[k] = stats.crossings;
+    });
+  }
+  console.log('| input | points | polylines | crossings | ns per point | per point vs the region '
+    + '| target |');
+  console.log('| --- | --: | --: | --: | --: | --: | --: |');
+  sets.forEach(([name, polylines], k) => {
+    const ratio = median(perPoint[k]) / median(perPoint[0]);
+    console.log(`| ${name} | ${n(polylines.coords.length / 2)} | `
+      + `${n(polylines.offsets.length - 1)} | ${n(crossings[k])} | `
+      + `${median(perPoint[k]).toFixed(0)} | ${ratio.toFixed(2)}× | ${k ? '≤ 1.2×' : ''} |`);
+  });
+  console.log();
 }
