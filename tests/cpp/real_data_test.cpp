@@ -51,6 +51,7 @@ void checkDataset(const std::string& name, std::size_t minimumCrossings,
   EXPECT_EQ(t.stats().snapRoundings, snapRounding == SnapRounding::Always ? 1u : 0u);
   MeshOptions mo;
   mo.insideFlags = true;
+  mo.segmentSources = true;  // each segment's chain as routed, for the checker
   const Mesh m = t.mesh(mo);
   testing::CheckOptions c;
   c.inputXY = &l.set.xy;
