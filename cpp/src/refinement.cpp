@@ -74,8 +74,12 @@ void Refiner::queueSubsegment(std::int32_t e, bool forced) {
 void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
   const std::uint32_t a = topo_.tri[3 * t], b = topo_.tri[3 * t + 1], c = topo_.tri[3 * t + 2];
   double abx = x(b) - x(a), aby = y(b) - y(a), acx = x(c) - x(a), acy = y(c) - y(a);
-  // In a frame scaled by a power of two (exactly) to the triangle's size, so that squares and
-  // their products neither overflow nor underflow at any coordinate magnitude.
+  // The area from the differences as they are: coordinates within 1e150 keep the products
+  // finite, where the scaled frame below flushes the smaller side to zero when the sides'
+  // sizes differ by hundreds of orders of magnitude (fuzz: a subnormal across from 1e58).
+  area = 0.5 * std::fabs(abx * acy - aby * acx);
+  // The angle in a frame scaled by a power of two (exactly) to the triangle's size, so that
+  // squares and their products neither overflow nor underflow at any coordinate magnitude.
   const int e = scaleExponent({abx, aby, acx, acy});
   const double scale = powerOfTwo(-e);
   abx *= scale, aby *= scale, acx *= scale, acy *= scale;
@@ -88,7 +92,6 @@ void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
   const double shortest = std::min({lab, lac, lbc});
   const double product = lab * lac * lbc / shortest;
   sin2 = product > 0 ? cross * cross / product : 0;
-  area = 0.5 * std::fabs(cross) * powerOfTwo(e) * powerOfTwo(e);  // ldexp(.., 2e): 2e may not fit
 }
 
 void Refiner::checkTriangle(std::int32_t t) {

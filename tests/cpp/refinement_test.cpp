@@ -334,6 +334,26 @@ TEST(Refinement, SteinerVerticesInterpolateTheValues) {
 namespace geocdt {
 namespace {
 
+TEST(Refinement, AreaOfATriangleWithSidesHundredsOfOrdersApart) {
+  // A side of 4e58 across from a subnormal height (fuzz, seed 9205): the area measured in a
+  // frame scaled to the longest side was 0, so a triangle of area 7e-261 passed a maxArea
+  // of 1.4e-262 uncounted. With one Steiner point allowed, what is left over is counted.
+  const std::vector<double> points = {4.3933631939690594e+58,  0, 3.6648815163398159e-179,
+                                      3.2257546016974987e-319, 0, 0};
+  RefineOptions ro;
+  ro.minAngle = 0;
+  ro.maxArea = 1.4171911539874115e-262;
+  ro.maxSteinerPoints = 1;
+  Options o;
+  o.gridDensity = 2;
+  const Refined r = refine(points, {}, ro, o);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_GE(r.stats.refineSkipped, 1u);
+  EXPECT_EQ(testing::checkRefined(r.mesh, points, {}, r.ids, ro.minAngle, ro.maxArea, false,
+                                  r.stats.refineSkipped),
+            "");
+}
+
 TEST(Refinement, OverlappingSegmentsUlpsApartKeepTheirChainsApart) {
   // Fuzz (refine, seed 1): a lattice around (16000000, 18006276) whose rounded points put two
   // overlapping segments ulps apart, not on one line; a subsegment split on one of them
