@@ -97,8 +97,9 @@ if (!quick && !(data && existsSync(join(data, 'gshhg_region.gpl')))) {
 // Time per point as the constrained input grows: one call on the eastern hemisphere's
 // GSHHG against one on the 2M-point region, alternating (target: within 1.2×).
 const large = data && join(data, 'gshhg_east.gpl');
-if (!quick && large && existsSync(large) && existsSync(join(data, 'gshhg_region.gpl'))) {
-  const sets = [['GSHHG region', readGpl(join(data, 'gshhg_region.gpl'))],
+const europe = rows.find((row) => row.name === 'GSHHG Europe');
+if (europe && existsSync(large)) {
+  const sets = [['GSHHG region', europe.input.polylines],
     ['GSHHG eastern hemisphere', readGpl(large)]];
   const perPoint = sets.map(() => []);
   const crossings = [];

@@ -187,7 +187,6 @@ class ConstraintStore {
     edges_.orderIds(idBound);
     edges_.reserve(edges);
   }
-  bool scattered() const { return edges_.scattered(); }
 
   // The polylines of every edge beyond its first, counted with repeats: with edgeCount(), a
   // bound on the provenance an export lists.

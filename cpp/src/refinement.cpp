@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <initializer_list>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -14,38 +12,13 @@
 #include "exact_geometry.h"
 #include "geocdt/predicates.h"
 #include "overlapping_segments.h"
+#include "power_of_two.h"
 #include "refiner.h"
 #include "slot_windings.h"
 
 namespace geocdt {
 
 namespace refinement {
-
-// The power of two 2^-e that scales the largest of the differences to magnitude ~1: scaled
-// by it (exactly), their products neither underflow nor overflow. e stays within the normal
-// exponents, so that 2^-e is a double and scaling is one multiplication (the same correctly
-// rounded result as ldexp, without a library call per value: with 5 in measure(), 18.6% of
-// refinement's instructions on 20k uniform points at 30 degrees); beyond, the largest
-// difference scales to within [2^-52, 2), which is as good.
-// The exponent is read from the bits and 2^-e built from them: ilogb and ldexp were still
-// library calls, 10.6% of the instructions on that input.
-int scaleExponent(std::initializer_list<double> differences) {
-  double size = 0;
-  for (const double d : differences) size = std::max(size, std::fabs(d));
-  if (!(size > 0)) return 0;
-  std::uint64_t bits;
-  std::memcpy(&bits, &size, sizeof bits);
-  // A subnormal size reads as -1023 and a non-finite one as 1024: both clamped, as ilogb's.
-  return std::clamp(static_cast<int>(bits >> 52 & 0x7FF) - 1023, -1022, 1022);
-}
-
-// 2^e for e in [-1022, 1023], exactly.
-double powerOfTwo(int e) {
-  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
-  double p;
-  std::memcpy(&p, &bits, sizeof p);
-  return p;
-}
 
 // Where p projects on a -> b, as the fraction of the way from a, clamped to [0, 1].
 double projection(double ax, double ay, double bx, double by, double px, double py) {
