@@ -100,6 +100,42 @@ std::int32_t Delaunay::splitEdge(std::int32_t e, std::uint32_t v) {
   return 3 * t + 2;  // v -> the first corner
 }
 
+std::int32_t Delaunay::fillStar(std::uint32_t v, const std::vector<std::int32_t>& slots,
+                                const std::vector<std::int32_t>& boundary) {
+  const std::size_t n = boundary.size();
+  // Every boundary edge's twin and flag, read before the slots are rewritten.
+  star_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t e = boundary[i];
+    star_[i] = {topo.tri[e], topo.adj[e], topo.fixed[e]};
+  }
+  const std::int32_t extra = addSlots(2);
+  std::uint32_t* tri = topo.tri.data();
+  std::int32_t* adj = topo.adj.data();
+  std::uint8_t* fixed = topo.fixed.data();
+  // Slot i becomes (a_i, b_i, v): its first edge is the boundary edge, then b_i -> v, then
+  // v -> a_i, twinned with the next slot's and the previous slot's spokes.
+  const auto slotOf = [&](std::size_t i) {
+    return 3 * (i < slots.size() ? slots[i] : extra + static_cast<std::int32_t>(i - slots.size()));
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t s = slotOf(i), next = slotOf(i + 1 < n ? i + 1 : 0);
+    tri[s] = star_[i].start;
+    tri[s + 1] = star_[i + 1 < n ? i + 1 : 0].start;
+    tri[s + 2] = v;
+    adj[s] = star_[i].twin;
+    adj[star_[i].twin] = s;
+    adj[s + 1] = next + 2;
+    adj[next + 2] = s + 1;
+    fixed[s] = star_[i].fixed;
+    fixed[s + 1] = fixed[s + 2] = 0;
+  }
+  last_ = slotOf(0) / 3;
+  ++stats.inserted;
+  grid_.grow(stats.inserted);
+  return slotOf(0) + 2;
+}
+
 std::int32_t Delaunay::addSlots(std::int32_t n) {
   if (runSlots_ >= 0) {  // inside insertRun: the arrays already have room
     const std::int32_t first = runSlots_;

@@ -67,6 +67,14 @@ class Delaunay {
   // Delaunay; the halves of a constrained edge stay constrained. Returns a half-edge
   // starting at v.
   std::int32_t splitEdge(std::int32_t e, std::uint32_t v);
+  // Inserts vertex v (already in xy) into a cavity by joining it to the cavity's boundary:
+  // `slots` are the cavity's triangles, whose union is a disk crossed by no constrained edge
+  // and star-shaped from v, and `boundary` its border's half-edges (inside it) in
+  // counter-clockwise order, one more than two per slot. What Lawson flips would do, without
+  // the flips, for a caller that found the cavity with its own in-circle tests (refinement's
+  // Bowyer-Watson insertion). Returns the half-edge from v to the first boundary edge's start.
+  std::int32_t fillStar(std::uint32_t v, const std::vector<std::int32_t>& slots,
+                        const std::vector<std::int32_t>& boundary);
   // Flips non-constrained edges on the stack until each is locally Delaunay, checking all
   // four edges around each flip: for any edges, not only those around a new vertex.
   void restoreDelaunay();
@@ -167,6 +175,12 @@ class Delaunay {
   double touch_ = 0;  // what touchPoints() read, kept so that its loads are not dropped
   std::vector<std::uint32_t> pending_;  // vertices waiting for a non-collinear triple
   std::vector<std::int32_t> stack_;
+  struct StarEdge {
+    std::uint32_t start;
+    std::int32_t twin;
+    std::uint8_t fixed;
+  };
+  std::vector<StarEdge> star_;  // fillStar's boundary as it was
   std::vector<std::int32_t> lawson_;
   std::size_t lawsonTop_ = 0;
   Status error_;

@@ -12,8 +12,11 @@ namespace geocdt {
 namespace {
 
 // Inside flags of every slot by the fill rule.
-std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill) {
-  const std::vector<std::int32_t> winding = slotWindings(d);
+std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill,
+                                      const std::vector<std::int32_t>& known) {
+  std::vector<std::int32_t> computed;
+  if (known.empty()) computed = slotWindings(d);
+  const std::vector<std::int32_t>& winding = known.empty() ? computed : known;
   std::vector<std::uint8_t> inside(winding.size(), 0);
   for (std::size_t t = 0; t < winding.size(); ++t) inside[t] = insideByRule(winding[t], fill);
   return inside;
@@ -162,12 +165,13 @@ std::vector<std::int32_t> slotIndices(const Topology& topo) {
   return index;
 }
 
-Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume) {
+Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume,
+                const std::vector<std::int32_t>& windings) {
   const Progress& progress = d.options().progress;
   progress(Phase::Export, 0, 3);
   const bool classify = options.insideFlags || options.keep == Keep::Inside;
   std::vector<std::uint8_t> inside;
-  if (classify) inside = insideSlots(d, options.fill);
+  if (classify) inside = insideSlots(d, options.fill, windings);
   std::vector<std::int32_t> regions;
   if (options.regions) regions = regionSlots(d, options.polylinePolygons, options.fill);
   Mesh m;

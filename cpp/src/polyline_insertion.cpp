@@ -141,7 +141,7 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
     }
     if (!s.ok()) return s;
     state_->values.recordPolylinePoints(ids, total);
-    state_->slotMapValid = false;
+    state_->changed();
     // At most one segment and one constrained edge a point (fewer where polylines share
     // edges): the store's arrays and table at about their final sizes at once, not doubled
     // on the way.
@@ -201,7 +201,7 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
   } catch (const std::bad_alloc&) {
     d.clear();
     state_->values.clear();
-    state_->slotMapValid = false;
+    state_->changed();
     return {StatusCode::OutOfMemory,
             "out of memory: the input is too large for the available memory"};
   }

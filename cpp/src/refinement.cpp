@@ -15,6 +15,7 @@
 #include "power_of_two.h"
 #include "refiner.h"
 #include "slot_windings.h"
+#include "star_boundary.h"
 
 namespace geocdt {
 
@@ -52,17 +53,21 @@ void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
   // sizes differ by hundreds of orders of magnitude (fuzz: a subnormal across from 1e58).
   area = 0.5 * std::fabs(abx * acy - aby * acx);
   // The angle in a frame scaled by a power of two (exactly) to the triangle's size, so that
-  // squares and their products neither overflow nor underflow at any coordinate magnitude.
-  const int e = scaleExponent({abx, aby, acx, acy});
-  const double scale = powerOfTwo(-e);
-  abx *= scale, aby *= scale, acx *= scale, acy *= scale;
+  // squares and their products neither overflow nor underflow at any coordinate magnitude;
+  // sizes from 2^-200 to 2^200 need no scaling (products of three squares stay finite).
+  const double size =
+      std::max(std::max(std::fabs(abx), std::fabs(aby)), std::max(std::fabs(acx), std::fabs(acy)));
+  if (!(size >= 0x1p-200 && size <= 0x1p200)) {
+    const double scale = powerOfTwo(-scaleExponent({abx, aby, acx, acy}));
+    abx *= scale, aby *= scale, acx *= scale, acy *= scale;
+  }
   const double bcx = acx - abx, bcy = acy - aby;
   const double lab = abx * abx + aby * aby, lac = acx * acx + acy * acy;
   const double lbc = bcx * bcx + bcy * bcy;
   const double cross = abx * acy - aby * acx;
   // The smallest angle faces the shortest edge; sin of it is 2 * area over the product of
   // the two longer edges.
-  const double shortest = std::min({lab, lac, lbc});
+  const double shortest = std::min(std::min(lab, lac), lbc);
   const double product = lab * lac * lbc / shortest;
   sin2 = product > 0 ? cross * cross / product : 0;
 }
@@ -153,8 +158,8 @@ bool Refiner::smallInputAngle(std::int32_t t) const {
     return n;
   };
   Through sp[8], sq[8];
+  if (!onSubsegment(p) || !onSubsegment(q)) return false;  // most triangles
   const int np = segmentsAt(p, sp);
-  if (np == 0) return false;  // most triangles: p on no subsegment
   const int nq = segmentsAt(q, sq);
   for (int i = 0; i < np; ++i)
     for (int j = 0; j < nq; ++j) {
@@ -178,6 +183,9 @@ void Refiner::rebuild() {
   vertexEdge_.assign(d_.vertexCount(), -1);
   for (std::int32_t e = 0; e < static_cast<std::int32_t>(topo_.tri.size()); ++e)
     if (topo_.tri[e] != kGhost) vertexEdge_[topo_.tri[e]] = e;
+  onSubsegment_.assign(d_.vertexCount(), 0);
+  for (std::int32_t e = 0; e < static_cast<std::int32_t>(topo_.tri.size()); ++e)
+    if (!topo_.isGhost(e / 3) && isSubsegment(e)) onSubsegment_[topo_.tri[e]] = 1;
 }
 
 // After a vertex was inserted: the triangles around it take their windings from the unchanged
@@ -202,8 +210,11 @@ void Refiner::afterInsert(std::int32_t from) {
       if (topo_.fixed[outer])
         winding_[t] += d_.constraints.windingAcross(topo_.tri[g], topo_.tri[nextEdge(g)]);
     }
-    noteCorners(t);
+    // Every slot the insertion rewrote is one of these, and every vertex that pointed into
+    // one is a corner of them: v, or the start of an outer edge.
+    if (topo_.tri[outer] != kGhost) vertexEdge_[topo_.tri[outer]] = outer;
   }
+  vertexEdge_[topo_.tri[from]] = from;
   for (const std::int32_t h : around_) checkAround(h / 3);
 }
 
@@ -313,6 +324,7 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
     return Outcome::Done;
   }
   const std::uint32_t p = newVertex(px, py);
+  markOnSubsegment(p);
   if (topo_.fixed[e]) d_.constraints.split(a, b, p);
   const auto hullEdge = hullOf_.find(ConstraintStore::key(a, b));
   if (hullEdge != hullOf_.end()) {
@@ -337,6 +349,50 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   }
   restoreDelaunay(stack);
   return Outcome::Done;
+}
+
+// The barycentric weights of (cx, cy) in the triangle of corners `parent`; in a sliver, where
+// they miss the point, an edge's ends and weights instead (parent[2] then kNoVertex).
+void Refiner::weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], double cx,
+                            double cy) const {
+  const double ox = x(parent[0]), oy = y(parent[0]);
+  const int e = scaleExponent({x(parent[1]) - ox, y(parent[1]) - oy, x(parent[2]) - ox,
+                               y(parent[2]) - oy, cx - ox, cy - oy});
+  const double scale = powerOfTwo(-e);
+  const auto area2 = [&](std::uint32_t a, std::uint32_t b) {
+    const double ax = (x(a) - ox) * scale, ay = (y(a) - oy) * scale;
+    const double bx = (x(b) - ox) * scale, by = (y(b) - oy) * scale;
+    const double qx = (cx - ox) * scale, qy = (cy - oy) * scale;
+    return (bx - ax) * (qy - ay) - (by - ay) * (qx - ax);
+  };
+  const double w0 = area2(parent[1], parent[2]), w1 = area2(parent[2], parent[0]);
+  const double w2 = area2(parent[0], parent[1]), sum = w0 + w1 + w2;
+  weight[0] = w0 / sum;
+  weight[1] = w1 / sum;
+  weight[2] = w2 / sum;
+  // In a sliver the areas cancel: where they miss the point, it lies next to one of the
+  // edges (numerically on it), and the edge's ends with its projection place it better.
+  double spread = 0;
+  const double wx = weight[0] * x(parent[0]) + weight[1] * x(parent[1]) + weight[2] * x(parent[2]);
+  const double wy = weight[0] * y(parent[0]) + weight[1] * y(parent[1]) + weight[2] * y(parent[2]);
+  const double missed = std::max(std::fabs(wx - cx), std::fabs(wy - cy));
+  for (int k = 0; k < 3; ++k)
+    spread = std::max({spread, std::fabs(x(parent[k]) - cx), std::fabs(y(parent[k]) - cy)});
+  if (!(missed <= 1e-12 * spread)) {
+    double best = INFINITY;
+    const std::uint32_t corners[3] = {parent[0], parent[1], parent[2]};
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = corners[k], b = corners[(k + 1) % 3];
+      const double w = projection(x(a), y(a), x(b), y(b), cx, cy);
+      const double dx = (1 - w) * x(a) + w * x(b) - cx, dy = (1 - w) * y(a) + w * y(b) - cy;
+      const double d = std::max(std::fabs(dx), std::fabs(dy));
+      if (d < best) {
+        best = d;
+        parent[0] = a, parent[1] = b, parent[2] = kNoVertex;
+        weight[0] = 1 - w, weight[1] = w, weight[2] = 0;
+      }
+    }
+  }
 }
 
 Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
@@ -373,13 +429,17 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
   // Walk towards the candidate; a subsegment in the way is split if the candidate
   // encroaches it (then the triangle is tried again), else the triangle is left.
   std::int32_t cur = t;
+  bool onEdge = false;  // of cur, where the walk ends
   for (int step = 0;; ++step) {
     if (step > 100000) return Outcome::Skipped;
     std::int32_t exit = -1;
+    onEdge = false;
     for (int k = 0; k < 3 && exit < 0; ++k) {
       const std::int32_t e = 3 * cur + (k + step) % 3;
       const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
-      if (orient2d(x(a), y(a), x(b), y(b), cx, cy) == Sign::Negative) exit = e;
+      const Sign side = orient2d(x(a), y(a), x(b), y(b), cx, cy);
+      if (side == Sign::Negative) exit = e;
+      onEdge |= side == Sign::Zero;
     }
     if (exit < 0) break;
     if (isSubsegment(exit)) {
@@ -395,9 +455,11 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
   // The cavity: the triangles whose circumcircles hold the candidate, reached without
   // crossing subsegments. A subsegment on its border that the candidate encroaches is split
   // instead.
+  // Its border's edges are kept for the insertion.
   ++epoch_;
   stamp_.resize(topo_.slotCount(), 0);
   cavity_.assign(1, cur);
+  boundary_.clear();
   stamp_[cur] = epoch_;
   const std::size_t before = subsegments_.size();
   for (std::size_t i = 0; i < cavity_.size(); ++i) {
@@ -406,12 +468,17 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
       const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
       if (isSubsegment(e)) {
         if (encroachedBy(x(a), y(a), x(b), y(b), cx, cy)) queueSubsegment(e, true);
+        boundary_.push_back(e);
         continue;
       }
       const std::int32_t n = topo_.adj[e] / 3;
-      if (stamp_[n] == epoch_ || topo_.isGhost(n)) continue;
+      if (stamp_[n] == epoch_) continue;
       const std::uint32_t u = topo_.tri[3 * n], v = topo_.tri[3 * n + 1], w = topo_.tri[3 * n + 2];
-      if (incircle(x(u), y(u), x(v), y(v), x(w), y(w), cx, cy) != Sign::Positive) continue;
+      if (u == kGhost || v == kGhost || w == kGhost ||
+          incircle(x(u), y(u), x(v), y(v), x(w), y(w), cx, cy) != Sign::Positive) {
+        boundary_.push_back(e);
+        continue;
+      }
       stamp_[n] = epoch_;
       cavity_.push_back(n);
     }
@@ -422,6 +489,17 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
     return Outcome::Done;
   }
   const std::uint32_t v = newVertex(cx, cy);
+  // Strictly inside cur, the cavity's border joined to the point is its insertion; flips
+  // (below) are for the rest, and would repeat the cavity's in-circle tests.
+  if (!onEdge && orderStarBoundary(topo_, d_.xy, cavity_.size(), cx, cy, boundary_)) {
+    std::uint32_t parent[3] = {topo_.tri[3 * cur], topo_.tri[3 * cur + 1], topo_.tri[3 * cur + 2]};
+    double weight[3];
+    weightsInFace(parent, weight, cx, cy);
+    const std::int32_t from = d_.fillStar(v, cavity_, boundary_);
+    record(v, parent[0], parent[1], parent[2], weight[0], weight[1], weight[2]);
+    afterInsert(from);
+    return Outcome::Done;
+  }
   d_.setLastTriangle(cur);
   const Hit h = d_.locate(cx, cy, false);
   if (h.kind != Hit::Kind::Face && h.kind != Hit::Kind::Edge) {
@@ -433,46 +511,7 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
   std::uint32_t parent[3] = {topo_.tri[f], topo_.tri[f + 1], topo_.tri[f + 2]};
   double weight[3] = {0, 0, 0};
   if (h.kind == Hit::Kind::Face) {
-    const double ox = x(parent[0]), oy = y(parent[0]);
-    const int e = scaleExponent({x(parent[1]) - ox, y(parent[1]) - oy, x(parent[2]) - ox,
-                                 y(parent[2]) - oy, cx - ox, cy - oy});
-    const double scale = powerOfTwo(-e);
-    const auto area2 = [&](std::uint32_t a, std::uint32_t b) {
-      const double ax = (x(a) - ox) * scale, ay = (y(a) - oy) * scale;
-      const double bx = (x(b) - ox) * scale, by = (y(b) - oy) * scale;
-      const double qx = (cx - ox) * scale, qy = (cy - oy) * scale;
-      return (bx - ax) * (qy - ay) - (by - ay) * (qx - ax);
-    };
-    const double w0 = area2(parent[1], parent[2]), w1 = area2(parent[2], parent[0]);
-    const double w2 = area2(parent[0], parent[1]), sum = w0 + w1 + w2;
-    weight[0] = w0 / sum;
-    weight[1] = w1 / sum;
-    weight[2] = w2 / sum;
-    // In a sliver the areas cancel: where they miss the point, it lies next to one of the
-    // edges (numerically on it), and the edge's ends with its projection place it better.
-    double spread = 0;
-    const double wx =
-        weight[0] * x(parent[0]) + weight[1] * x(parent[1]) + weight[2] * x(parent[2]);
-    const double wy =
-        weight[0] * y(parent[0]) + weight[1] * y(parent[1]) + weight[2] * y(parent[2]);
-    const double missed = std::max(std::fabs(wx - cx), std::fabs(wy - cy));
-    for (int k = 0; k < 3; ++k)
-      spread = std::max({spread, std::fabs(x(parent[k]) - cx), std::fabs(y(parent[k]) - cy)});
-    if (!(missed <= 1e-12 * spread)) {
-      double best = INFINITY;
-      const std::uint32_t corners[3] = {parent[0], parent[1], parent[2]};
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t a = corners[k], b = corners[(k + 1) % 3];
-        const double w = projection(x(a), y(a), x(b), y(b), cx, cy);
-        const double dx = (1 - w) * x(a) + w * x(b) - cx, dy = (1 - w) * y(a) + w * y(b) - cy;
-        const double d = std::max(std::fabs(dx), std::fabs(dy));
-        if (d < best) {
-          best = d;
-          parent[0] = a, parent[1] = b, parent[2] = kNoVertex;
-          weight[0] = 1 - w, weight[1] = w, weight[2] = 0;
-        }
-      }
-    }
+    weightsInFace(parent, weight, cx, cy);
   } else {
     parent[0] = topo_.tri[h.edge];
     parent[1] = topo_.tri[nextEdge(h.edge)];
@@ -481,6 +520,7 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
     weight[0] = 1 - w;
     weight[1] = w;
   }
+  if (h.kind == Hit::Kind::Edge && isSubsegment(h.edge)) markOnSubsegment(v);
   if (d_.insertLocated(h, v) != v) {
     d_.xy.resize(d_.xy.size() - 2);
     return Outcome::Failed;
@@ -498,16 +538,16 @@ Status Refiner::run() {
   rebuild();
   steinerFlag_.assign(d_.vertexCount(), 0);
   for (const SteinerVertex& s : d_.steiner) steinerFlag_[s.vertex] = 1;
-  double domainArea = 0;
-  for (std::int32_t t = 0; t < topo_.slotCount(); ++t) {
-    if (!inRegion(t)) continue;
-    double sin2, area;
-    measure(t, sin2, area);
-    domainArea += area;
-  }
   if (cap_ == 0) {
     cap_ = std::numeric_limits<std::uint64_t>::max();
     if (minAngle_ > kProvenAngle) {
+      double domainArea = 0;
+      for (std::int32_t t = 0; std::isfinite(maxArea_) && t < topo_.slotCount(); ++t) {
+        if (!inRegion(t)) continue;
+        double sin2, area;
+        measure(t, sin2, area);
+        domainArea += area;
+      }
       const double byArea = std::isfinite(maxArea_) ? 4 * domainArea / maxArea_ : 0;
       cap_ = 64 * static_cast<std::uint64_t>(d_.vertexCount()) + 1024 +
              static_cast<std::uint64_t>(std::min(byArea, 1e18));
@@ -571,9 +611,12 @@ std::string refineOptionsError(const RefineOptions& o) {
   return "";
 }
 
-Status refineTriangulation(Delaunay& d, const RefineOptions& options) {
+Status refineTriangulation(Delaunay& d, const RefineOptions& options,
+                           std::vector<std::int32_t>* windings) {
   refinement::Refiner refiner(d, options);
-  return refiner.run();
+  const Status s = refiner.run();
+  if (s.ok() && windings) refiner.takeWindings(*windings);
+  return s;
 }
 
 }  // namespace geocdt

@@ -8,8 +8,10 @@
 
 namespace geocdt {
 
-// Refines d as options say (already validated); adds to d.stats and d.steiner.
-Status refineTriangulation(Delaunay& d, const RefineOptions& options);
+// Refines d as options say (already validated); adds to d.stats and d.steiner. windings, if
+// not null, gets every slot's winding number after it (what slotWindings would give).
+Status refineTriangulation(Delaunay& d, const RefineOptions& options,
+                           std::vector<std::int32_t>* windings = nullptr);
 
 // The message for an invalid RefineOptions, or "" when they are valid.
 std::string refineOptionsError(const RefineOptions& options);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "delaunay.h"
@@ -81,6 +82,12 @@ class Refiner {
   }
 
   Status run();
+  // The slots' windings after run(), kept up to date through it; empty if run() had nothing
+  // to refine.
+  void takeWindings(std::vector<std::int32_t>& out) {
+    out = std::move(winding_);
+    if (out.size() != static_cast<std::size_t>(topo_.slotCount())) out.clear();
+  }
 
  private:
   double x(std::uint32_t v) const { return d_.xy[2 * v]; }
@@ -88,8 +95,9 @@ class Refiner {
   bool ccw(std::uint32_t a, std::uint32_t b, double px, double py) const {
     return orient2d(x(a), y(a), x(b), y(b), px, py) == Sign::Positive;
   }
+  // Ghost slots wind 0, which no fill rule takes for inside: only keep all asks about them.
   bool inRegion(std::int32_t t) const {
-    return !topo_.isGhost(t) && (keepAll_ || insideByRule(winding_[t], fill_));
+    return keepAll_ ? !topo_.isGhost(t) : insideByRule(winding_[t], fill_);
   }
   // A constrained edge, or with keep all a hull edge: what refinement must not cross. e is
   // either half-edge; none of a ghost vertex is one.
@@ -120,6 +128,7 @@ class Refiner {
   void restoreDelaunay(std::vector<std::int32_t>& stack);
   Outcome splitSubsegment(std::int32_t e, bool forced);
   Outcome splitTriangle(const BadTriangle& bad, bool skinny);  // skinny: queued for its angle
+  void weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], double cx, double cy) const;
   std::uint32_t newVertex(double px, double py) {
     d_.xy.push_back(px);
     d_.xy.push_back(py);
@@ -131,6 +140,11 @@ class Refiner {
     steinerFlag_.resize(d_.vertexCount(), 0);
     steinerFlag_[v] = 1;
     ++added_;
+  }
+  bool onSubsegment(std::uint32_t v) const { return v < onSubsegment_.size() && onSubsegment_[v]; }
+  void markOnSubsegment(std::uint32_t v) {
+    onSubsegment_.resize(d_.vertexCount(), 0);
+    onSubsegment_[v] = 1;
   }
   bool capReached() const { return added_ >= cap_ || d_.vertexCount() >= kGhost - 3; }
 
@@ -144,7 +158,10 @@ class Refiner {
   std::vector<std::int32_t> winding_;      // per slot
   std::vector<std::int32_t> vertexEdge_;   // per vertex: a half-edge out of it
   std::vector<std::uint8_t> steinerFlag_;  // per vertex: 1 for refinement's vertices
-  std::vector<std::uint32_t> stamp_;       // per slot: the cavity search that saw it
+  // Per vertex: 1 for an end of a subsegment. Most vertices are on none, and smallInputAngle
+  // learns that here instead of turning round them.
+  std::vector<std::uint8_t> onSubsegment_;
+  std::vector<std::uint32_t> stamp_;  // per slot: the cavity search that saw it
   std::uint32_t epoch_ = 0;
   std::vector<Subsegment> subsegments_;
   BadQueue bad_;
@@ -152,7 +169,7 @@ class Refiner {
   // With keep all, the hull's edges are segments too: each hull subsegment's original edge.
   std::vector<InputSegment> hull_;
   std::unordered_map<std::uint64_t, std::uint32_t> hullOf_;
-  std::vector<std::int32_t> cavity_, around_;
+  std::vector<std::int32_t> cavity_, around_, boundary_;
 };
 
 }  // namespace geocdt::refinement

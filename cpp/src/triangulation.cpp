@@ -97,7 +97,7 @@ Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
       scratch.resize(count);
       ids = scratch.data();
     }
-    state.slotMapValid = false;
+    state.changed();
     s = adopt ? d.insertBatch(std::move(*adopt), ids)
               : d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
     if (s.ok()) state.values.record(ids, count, values, d.vertexCount());
@@ -105,7 +105,7 @@ Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
   } catch (const std::bad_alloc&) {
     d.clear();
     state.values.clear();
-    state.slotMapValid = false;
+    state.changed();
     return outOfMemory();
   }
   return s;
@@ -159,7 +159,7 @@ Mesh exportWithValues(Triangulation::State& state, const MeshOptions& options, b
   Mesh values;
   if (state.values.active()) state.values.update(state.delaunay, &values);
   if (consume) state.delaunay.constraints.dropSegments();  // the values were their last use
-  Mesh m = exportMesh(state.delaunay, options, consume);
+  Mesh m = exportMesh(state.delaunay, options, consume, state.windings);
   m.values = std::move(values.values);
   m.derivedVertices = std::move(values.derivedVertices);
   m.derivedOffsets = std::move(values.derivedOffsets);
@@ -174,10 +174,10 @@ Status Triangulation::refine(const RefineOptions& options) {
   const std::string error = refineOptionsError(options);
   if (!error.empty()) return {StatusCode::InvalidArgument, error};
   State& state = *state_;
-  state.slotMapValid = false;
+  state.changed();
   try {
     const std::size_t before = state.delaunay.steiner.size();
-    const Status s = refineTriangulation(state.delaunay, options);
+    const Status s = refineTriangulation(state.delaunay, options, &state.windings);
     // Steiner vertices interpolate their values linearly from where they were placed.
     if (state.values.active()) {
       for (std::size_t i = before; i < state.delaunay.steiner.size(); ++i) {
@@ -202,7 +202,7 @@ Mesh Triangulation::release(const MeshOptions& options) {
   Mesh m = exportWithValues(*state_, options, true);
   state_->delaunay.clear();
   state_->values.clear();
-  state_->slotMapValid = false;
+  state_->changed();
   return m;
 }
 

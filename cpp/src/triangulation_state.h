@@ -18,11 +18,20 @@ struct Triangulation::State {
   // Slot -> index in mesh().triangles / 3, rebuilt on demand after a change.
   std::vector<std::int32_t> slotToTriangle;
   bool slotMapValid = false;
+  // Each slot's winding number as refine() left them (it keeps them up to date as it
+  // goes), for the export; empty once anything else changes the triangles.
+  std::vector<std::int32_t> windings;
+  void changed() {
+    slotMapValid = false;
+    windings.clear();
+  }
 };
 
 // Builds the caller's arrays from the internal slots: ghost triangles dropped. With
 // consume, the arrays are moved out and compacted in place, leaving delaunay to be cleared.
-Mesh exportMesh(Delaunay& delaunay, const MeshOptions& options, bool consume);
+// windings, unless empty, are every slot's (see slotWindings), known already.
+Mesh exportMesh(Delaunay& delaunay, const MeshOptions& options, bool consume,
+                const std::vector<std::int32_t>& windings = {});
 // Inserts the segments that waited for the triangulation to have triangles.
 Status insertPendingSegments(Delaunay& delaunay, const Options& options);
 // Index of each slot among the exported triangles, or -1 for ghost triangles.

@@ -295,6 +295,40 @@ TEST(Refinement, ScaleFreeFromTinyToHugeCoordinates) {
   }
 }
 
+TEST(Refinement, WindingsKeptThroughRefinementMatchAFreshFlood) {
+  // The export takes refinement's own windings; a change after it (here a duplicate point,
+  // which adds nothing) makes the export flood them again. Both must give the same inside.
+  // The square winds clockwise: with non-zero, the circles' overlaps with it cancel to holes.
+  const Polylines lines = {circle(5, 5, 4, 40),
+                           circle(8, 5, 3, 30),
+                           circle(5, 5, 1, 12),
+                           {0, 0, 1, 12, 11, 11, 12, 1, 0, 0}};
+  for (const FillRule fill : {FillRule::EvenOdd, FillRule::NonZero})
+    for (const Keep keep : {Keep::Inside, Keep::All}) {
+      Triangulation t;
+      for (const auto& l : lines) ASSERT_TRUE(t.insertPolyline(l.data(), l.size() / 2).ok());
+      RefineOptions ro;
+      ro.minAngle = 30;
+      ro.keep = keep;
+      ro.fill = fill;
+      ASSERT_TRUE(t.refine(ro).ok());
+      MeshOptions mo;
+      mo.insideFlags = true;
+      mo.fill = fill;
+      const Mesh kept = t.mesh(mo);
+      ASSERT_TRUE(t.insertPoints(lines[0].data(), 1).ok());
+      const Mesh flooded = t.mesh(mo);
+      ASSERT_EQ(kept.triangles, flooded.triangles);
+      EXPECT_EQ(kept.inside, flooded.inside);
+      std::size_t inside = 0;
+      for (const std::uint8_t f : kept.inside) inside += f;
+      EXPECT_GT(inside, 0u);
+      EXPECT_LT(inside, kept.inside.size());
+      mo.keep = Keep::Inside;
+      EXPECT_EQ(t.mesh(mo).triangles.size(), 3 * inside);
+    }
+}
+
 }  // namespace
 }  // namespace geocdt
 
