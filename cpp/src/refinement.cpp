@@ -45,16 +45,17 @@ void Refiner::queueSubsegment(std::int32_t e, bool forced) {
   subsegments_.push_back({u, v, forced});
 }
 
-void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
+Shape Refiner::shape(std::int32_t t) const {
   const std::uint32_t a = topo_.tri[3 * t], b = topo_.tri[3 * t + 1], c = topo_.tri[3 * t + 2];
   double abx = x(b) - x(a), aby = y(b) - y(a), acx = x(c) - x(a), acy = y(c) - y(a);
+  Shape s;
   // The area from the differences as they are: coordinates within 1e150 keep the products
   // finite, where the scaled frame below flushes the smaller side to zero when the sides'
   // sizes differ by hundreds of orders of magnitude (fuzz: a subnormal across from 1e58).
-  area = 0.5 * std::fabs(abx * acy - aby * acx);
+  s.area = 0.5 * std::fabs(abx * acy - aby * acx);
   // The angle in a frame scaled by a power of two (exactly) to the triangle's size, so that
   // squares and their products neither overflow nor underflow at any coordinate magnitude;
-  // sizes from 2^-200 to 2^200 need no scaling (products of three squares stay finite).
+  // sizes from 2^-200 to 2^200 need no scaling (products of squares stay finite).
   const double size =
       std::max(std::max(std::fabs(abx), std::fabs(aby)), std::max(std::fabs(acx), std::fabs(acy)));
   if (!(size >= 0x1p-200 && size <= 0x1p200)) {
@@ -65,22 +66,21 @@ void Refiner::measure(std::int32_t t, double& sin2, double& area) const {
   const double lab = abx * abx + aby * aby, lac = acx * acx + acy * acy;
   const double lbc = bcx * bcx + bcy * bcy;
   const double cross = abx * acy - aby * acx;
-  // The smallest angle faces the shortest edge; sin of it is 2 * area over the product of
-  // the two longer edges.
-  const double shortest = std::min(std::min(lab, lac), lbc);
-  const double product = lab * lac * lbc / shortest;
-  sin2 = product > 0 ? cross * cross / product : 0;
+  // The smallest angle faces the shortest edge; its sin is twice the area over the product of
+  // the two longer edges, whose squares' product is the largest of the three pairs'.
+  s.cross2 = cross * cross;
+  s.product = std::max(std::max(lab * lac, lab * lbc), lac * lbc);
+  return s;
 }
 
 void Refiner::checkTriangle(std::int32_t t) {
   if (!inRegion(t)) return;
-  double sin2, area;
-  measure(t, sin2, area);
+  const Shape s = shape(t);
   double key;
-  if (sin2 < sin2_) {
-    key = sin2;  // in [0, 0.75): angles first, the smallest first
-  } else if (area > maxArea_) {
-    key = 1 + maxArea_ / area;  // in (1, 2): then areas, the largest first
+  if (s.skinny(sin2_)) {
+    key = s.sin2();  // in [0, 0.75): angles first, the smallest first
+  } else if (s.area > maxArea_) {
+    key = 1 + maxArea_ / s.area;  // in (1, 2): then areas, the largest first
   } else {
     return;
   }
@@ -188,10 +188,11 @@ void Refiner::rebuild() {
     if (!topo_.isGhost(e / 3) && isSubsegment(e)) onSubsegment_[topo_.tri[e]] = 1;
 }
 
-// After a vertex was inserted: the triangles around it take their windings from the unchanged
-// triangles beyond them (every triangle the insertion changed has it as a corner), tell
-// their corners where they are, and are checked. `from` is a half-edge out of it.
-void Refiner::afterInsert(std::int32_t from) {
+// After a vertex was inserted: the triangles around it take their windings from the caller,
+// or else from the unchanged triangles beyond them (every triangle the insertion changed has
+// it as a corner), tell their corners where they are, and are checked. `from` is a half-edge
+// out of it.
+void Refiner::afterInsert(std::int32_t from, std::int32_t winding) {
   winding_.resize(topo_.slotCount());
   vertexEdge_.resize(d_.vertexCount(), -1);
   around_.clear();
@@ -202,7 +203,9 @@ void Refiner::afterInsert(std::int32_t from) {
   } while (e != from);
   for (const std::int32_t h : around_) {
     const std::int32_t t = h / 3, outer = nextEdge(h);
-    if (topo_.isGhost(t)) {
+    if (winding != kUnknownWinding) {
+      winding_[t] = winding;
+    } else if (topo_.isGhost(t)) {
       winding_[t] = 0;
     } else {
       const std::int32_t g = topo_.adj[outer];
@@ -455,12 +458,15 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
   // The cavity: the triangles whose circumcircles hold the candidate, reached without
   // crossing subsegments. A subsegment on its border that the candidate encroaches is split
   // instead.
-  // Its border's edges are kept for the insertion.
-  ++epoch_;
-  stamp_.resize(topo_.slotCount(), 0);
+  // Its border's edges are kept for the insertion. Whether a slot is in it is looked up in
+  // the list while that is short (a few triangles, in the cache), in stamps beyond.
   cavity_.assign(1, cur);
   boundary_.clear();
-  stamp_[cur] = epoch_;
+  bool stamping = false;
+  const auto inCavity = [&](std::int32_t n) {
+    if (stamping) return stamp_[n] == epoch_;
+    return std::find(cavity_.begin(), cavity_.end(), n) != cavity_.end();
+  };
   const std::size_t before = subsegments_.size();
   for (std::size_t i = 0; i < cavity_.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
@@ -472,15 +478,22 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
         continue;
       }
       const std::int32_t n = topo_.adj[e] / 3;
-      if (stamp_[n] == epoch_) continue;
+      if (inCavity(n)) continue;
       const std::uint32_t u = topo_.tri[3 * n], v = topo_.tri[3 * n + 1], w = topo_.tri[3 * n + 2];
       if (u == kGhost || v == kGhost || w == kGhost ||
           incircle(x(u), y(u), x(v), y(v), x(w), y(w), cx, cy) != Sign::Positive) {
         boundary_.push_back(e);
         continue;
       }
-      stamp_[n] = epoch_;
       cavity_.push_back(n);
+      if (stamping) {
+        stamp_[n] = epoch_;
+      } else if (cavity_.size() > kShortCavity) {
+        stamping = true;
+        ++epoch_;
+        stamp_.resize(topo_.slotCount(), 0);
+        for (const std::int32_t c : cavity_) stamp_[c] = epoch_;
+      }
     }
   }
   if (subsegments_.size() > before) return Outcome::Retry;
@@ -495,9 +508,11 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
     std::uint32_t parent[3] = {topo_.tri[3 * cur], topo_.tri[3 * cur + 1], topo_.tri[3 * cur + 2]};
     double weight[3];
     weightsInFace(parent, weight, cx, cy);
+    // The cavity is one region, joined across unconstrained edges: one winding for it all.
+    const std::int32_t winding = winding_[cur];
     const std::int32_t from = d_.fillStar(v, cavity_, boundary_);
     record(v, parent[0], parent[1], parent[2], weight[0], weight[1], weight[2]);
-    afterInsert(from);
+    afterInsert(from, winding);
     return Outcome::Done;
   }
   d_.setLastTriangle(cur);
@@ -544,9 +559,7 @@ Status Refiner::run() {
       double domainArea = 0;
       for (std::int32_t t = 0; std::isfinite(maxArea_) && t < topo_.slotCount(); ++t) {
         if (!inRegion(t)) continue;
-        double sin2, area;
-        measure(t, sin2, area);
-        domainArea += area;
+        domainArea += shape(t).area;
       }
       const double byArea = std::isfinite(maxArea_) ? 4 * domainArea / maxArea_ : 0;
       cap_ = 64 * static_cast<std::uint64_t>(d_.vertexCount()) + 1024 +
@@ -582,19 +595,28 @@ Status Refiner::run() {
     if (bad_.empty()) break;
     bool skinny = false;
     const BadTriangle b = bad_.pop(skinny);
-    const std::int32_t t = b.slot;
-    if (topo_.tri[3 * t] != b.a || topo_.tri[3 * t + 1] != b.b || topo_.tri[3 * t + 2] != b.c)
-      continue;
+    if (!holds(b)) continue;
     const Outcome o = splitTriangle(b, skinny);
     if (o == Outcome::Failed) return d_.lastError();
-    if (o == Outcome::Retry) retry.push_back(b);
+    if (o == Outcome::Retry) {
+      retry.push_back(b);
+    } else if (holds(b)) {
+      unresolved_.push_back(b);  // skipped, or the cap stopped it
+    }
   }
+  // What is left bad: every triangle was checked when it was made, and a bad one queued; a
+  // queued one was split (then it is gone, or it is among these), skipped, or is still
+  // waiting. A pass over all the slots instead missed the cache for every one of them.
+  unresolved_.insert(unresolved_.end(), retry.begin(), retry.end());
+  bad_.drainInto(unresolved_);
   std::uint64_t left = 0;
-  for (std::int32_t t = 0; t < topo_.slotCount(); ++t) {
-    if (!inRegion(t)) continue;
-    double sin2, area;
-    measure(t, sin2, area);
-    left += sin2 < sin2_ || area > maxArea_;
+  ++epoch_;
+  stamp_.resize(topo_.slotCount(), 0);
+  for (const BadTriangle& b : unresolved_) {
+    if (stamp_[b.slot] == epoch_ || !holds(b) || !inRegion(b.slot)) continue;
+    stamp_[b.slot] = epoch_;
+    const Shape s = shape(b.slot);
+    left += s.skinny(sin2_) || s.area > maxArea_;
   }
   d_.stats.steinerPoints += added_;
   d_.stats.refineSkipped = left;

@@ -18,6 +18,7 @@
 namespace geocdt::refinement {
 
 inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr std::size_t kShortCavity = 16;  // searched as a list, not stamped
 
 // A triangle waiting to be split. The corners tell whether the slot still holds it when its
 // turn comes.
@@ -38,6 +39,15 @@ class BadQueue {
     ++size_;
   }
   bool empty() const { return size_ == 0; }
+  // Moves every waiting triangle to the end of out.
+  void drainInto(std::vector<BadTriangle>& out) {
+    for (std::size_t b = first_; b < kBuckets; ++b) {
+      out.insert(out.end(), buckets_[b].begin(), buckets_[b].end());
+      buckets_[b].clear();
+    }
+    first_ = kBuckets;
+    size_ = 0;
+  }
   // The worst triangle; skinny tells whether it was queued for its angle (key below 1), not
   // its area.
   BadTriangle pop(bool& skinny) {
@@ -63,6 +73,17 @@ struct Subsegment {
 };
 
 enum class Outcome { Done, Skipped, Retry, Failed };
+
+// What decides whether a triangle is bad: sin^2 of its smallest angle is cross2 / product
+// (twice its area squared, over the product of its two longer sides squared), compared
+// without the division for the many that are good.
+struct Shape {
+  double cross2, product, area;
+  bool skinny(double sin2Limit) const {
+    return product > 0 ? cross2 < sin2Limit * product : sin2Limit > 0;
+  }
+  double sin2() const { return product > 0 ? cross2 / product : 0; }
+};
 
 class Refiner {
  public:
@@ -115,14 +136,19 @@ class Refiner {
   void queueIfEncroached(std::int32_t e) {
     if (encroached(e)) queueSubsegment(e, false);
   }
-  // sin^2 of the smallest angle and the area of a real triangle.
-  void measure(std::int32_t t, double& sin2, double& area) const;
+  Shape shape(std::int32_t t) const;        // of a real triangle
+  bool holds(const BadTriangle& b) const {  // whether b's slot still holds it
+    const std::uint32_t* corner = &topo_.tri[3 * b.slot];
+    return corner[0] == b.a && corner[1] == b.b && corner[2] == b.c;
+  }
   void checkTriangle(std::int32_t t);
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v) const;
   int constrainedDegree(std::uint32_t u) const;
   bool smallInputAngle(std::int32_t t) const;
   void rebuild();
-  void afterInsert(std::int32_t from);
+  // winding, when known, is that of every triangle around the vertex (none a ghost).
+  static constexpr std::int32_t kUnknownWinding = std::numeric_limits<std::int32_t>::min();
+  void afterInsert(std::int32_t from, std::int32_t winding = kUnknownWinding);
   void noteCorners(std::int32_t t);
   void checkAround(std::int32_t t);  // the triangle and its subsegments
   void restoreDelaunay(std::vector<std::int32_t>& stack);
@@ -165,6 +191,7 @@ class Refiner {
   std::uint32_t epoch_ = 0;
   std::vector<Subsegment> subsegments_;
   BadQueue bad_;
+  std::vector<BadTriangle> unresolved_;  // taken from the queue and left as they were
   std::unordered_set<std::uint64_t> unsplittable_;
   // With keep all, the hull's edges are segments too: each hull subsegment's original edge.
   std::vector<InputSegment> hull_;

@@ -295,6 +295,24 @@ TEST(Refinement, ScaleFreeFromTinyToHugeCoordinates) {
   }
 }
 
+TEST(Refinement, LargeCavitiesOnAManySidedRing) {
+  // Nearly cocircular vertices: the first Steiner points' cavities hold most of the ring's
+  // triangles, past the short list the cavity search starts with.
+  const Polylines lines = {circle(0, 0, 100, 400), circle(0, 0, 30, 7)};
+  for (const Keep keep : {Keep::Inside, Keep::All}) {
+    RefineOptions ro;
+    ro.minAngle = 30;
+    ro.keep = keep;
+    const Refined r = refine({}, lines, ro);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_FALSE(r.stats.refineCapped);
+    EXPECT_GT(r.mesh.steiner.size(), 400u);
+    EXPECT_EQ(testing::checkRefined(r.mesh, {}, lines, r.ids, 30, 0, keep == Keep::Inside,
+                                    r.stats.refineSkipped),
+              "");
+  }
+}
+
 TEST(Refinement, WindingsKeptThroughRefinementMatchAFreshFlood) {
   // The export takes refinement's own windings; a change after it (here a duplicate point,
   // which adds nothing) makes the export flood them again. Both must give the same inside.
