@@ -126,19 +126,10 @@ int Refiner::constrainedDegree(std::uint32_t u) const {
   return degree;
 }
 
-// Whether t's shortest edge joins two points on two input segments that meet at an input
-// vertex, at equal distances from it: the concentric shells put them there, and the angle
+// Whether a triangle's shortest edge p, q (both on subsegments) joins two points on two input
+// segments that meet at an input vertex, at equal distances from it: the concentric shells put them there, and the angle
 // between the segments is then the triangle's. Splitting it would go on for ever.
-bool Refiner::smallInputAngle(std::int32_t t) const {
-  std::uint32_t corner[3] = {topo_.tri[3 * t], topo_.tri[3 * t + 1], topo_.tri[3 * t + 2]};
-  int shortest = 0;
-  double best = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    const std::uint32_t a = corner[k], b = corner[(k + 1) % 3];
-    const double l = (x(b) - x(a)) * (x(b) - x(a)) + (y(b) - y(a)) * (y(b) - y(a));
-    if (l < best) best = l, shortest = k;
-  }
-  const std::uint32_t p = corner[shortest], q = corner[(shortest + 1) % 3];
+bool Refiner::smallInputAngle(std::uint32_t p, std::uint32_t q) const {
   // The segments through a vertex, from its subsegments (a few).
   struct Through {
     InputSegment s;
@@ -158,7 +149,6 @@ bool Refiner::smallInputAngle(std::int32_t t) const {
     return n;
   };
   Through sp[8], sq[8];
-  if (!onSubsegment(p) || !onSubsegment(q)) return false;  // most triangles
   const int np = segmentsAt(p, sp);
   const int nq = segmentsAt(q, sq);
   for (int i = 0; i < np; ++i)
@@ -400,7 +390,6 @@ void Refiner::weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], dou
 
 Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
   const std::int32_t t = bad.slot;
-  if (smallInputAngle(t)) return Outcome::Skipped;
   // The shortest edge p -> q, the third corner r on its left.
   std::uint32_t corner[3] = {bad.a, bad.b, bad.c};
   int k0 = 0;
@@ -411,6 +400,8 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
     if (l < best) best = l, k0 = k;
   }
   const std::uint32_t p = corner[k0], q = corner[(k0 + 1) % 3], r = corner[(k0 + 2) % 3];
+  // Most triangles have an end of their shortest edge on no subsegment.
+  if (onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q)) return Outcome::Skipped;
   const double qx = x(q) - x(p), qy = y(q) - y(p), rx = x(r) - x(p), ry = y(r) - y(p);
   const double twice = 2 * (qx * ry - qy * rx);
   const double q2 = qx * qx + qy * qy, r2 = rx * rx + ry * ry;

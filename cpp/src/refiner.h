@@ -144,7 +144,7 @@ class Refiner {
   void checkTriangle(std::int32_t t);
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v) const;
   int constrainedDegree(std::uint32_t u) const;
-  bool smallInputAngle(std::int32_t t) const;
+  bool smallInputAngle(std::uint32_t p, std::uint32_t q) const;  // of the shortest edge p, q
   void rebuild();
   // winding, when known, is that of every triangle around the vertex (none a ghost).
   static constexpr std::int32_t kUnknownWinding = std::numeric_limits<std::int32_t>::min();
