@@ -27,6 +27,16 @@ inline int scaleExponent(std::initializer_list<double> differences) {
   return std::clamp(static_cast<int>(bits >> 52 & 0x7FF) - 1023, -1022, 1022);
 }
 
+// The exponent of x > 0 in half powers of two: k with sqrt(2)^k <= x < sqrt(2)^(k + 1), from
+// the bits (a subnormal or zero reads as 2^-1023, an infinity as 2^1024).
+inline int halfExponent(double x) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int exponent = static_cast<int>(bits >> 52 & 0x7FF) - 1023;
+  const std::uint64_t sqrt2Fraction = 0x6A09E667F3BCDull;  // the fraction bits of sqrt(2)
+  return 2 * exponent + ((bits & 0xFFFFFFFFFFFFFull) >= sqrt2Fraction);
+}
+
 // 2^e for e in [-1022, 1023], exactly.
 inline double powerOfTwo(int e) {
   const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;

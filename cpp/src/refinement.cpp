@@ -58,8 +58,10 @@ Shape Refiner::shape(std::int32_t t) const {
   // sizes from 2^-200 to 2^200 need no scaling (products of squares stay finite).
   const double size =
       std::max(std::max(std::fabs(abx), std::fabs(aby)), std::max(std::fabs(acx), std::fabs(acy)));
+  int e = 0;
   if (!(size >= 0x1p-200 && size <= 0x1p200)) {
-    const double scale = powerOfTwo(-scaleExponent({abx, aby, acx, acy}));
+    e = scaleExponent({abx, aby, acx, acy});
+    const double scale = powerOfTwo(-e);
     abx *= scale, aby *= scale, acx *= scale, acy *= scale;
   }
   const double bcx = acx - abx, bcy = acy - aby;
@@ -70,21 +72,20 @@ Shape Refiner::shape(std::int32_t t) const {
   // the two longer edges, whose squares' product is the largest of the three pairs'.
   s.cross2 = cross * cross;
   s.product = std::max(std::max(lab * lac, lab * lbc), lac * lbc);
+  // The shortest side's squared length is 2^(2e) times the frame's.
+  s.lengthExponent = halfExponent(std::min(std::min(lab, lac), lbc)) + 4 * e;
   return s;
 }
 
 void Refiner::checkTriangle(std::int32_t t) {
   if (!inRegion(t)) return;
   const Shape s = shape(t);
-  double key;
-  if (s.skinny(sin2_)) {
-    key = s.sin2();  // in [0, 0.75): angles first, the smallest first
-  } else if (s.area > maxArea_) {
-    key = 1 + maxArea_ / s.area;  // in (1, 2): then areas, the largest first
-  } else {
-    return;
-  }
-  bad_.push(key, {t, topo_.tri[3 * t], topo_.tri[3 * t + 1], topo_.tri[3 * t + 2]});
+  const bool skinny = s.skinny(sin2_);
+  if (!skinny && !(s.area > maxArea_)) return;
+  const std::uint32_t a = topo_.tri[3 * t], b = topo_.tri[3 * t + 1], c = topo_.tri[3 * t + 2];
+  const bool boundary = onSubsegment(a) || onSubsegment(b) || onSubsegment(c);
+  bad_.push(BadQueue::bucket(boundary, skinny, skinny ? s.sin2() : 0, s.lengthExponent),
+            {t, a, b, c, skinny});
 }
 
 std::int32_t Refiner::findEdge(std::uint32_t u, std::uint32_t v) const {
@@ -127,8 +128,9 @@ int Refiner::constrainedDegree(std::uint32_t u) const {
 }
 
 // Whether a triangle's shortest edge p, q (both on subsegments) joins two points on two input
-// segments that meet at an input vertex, at equal distances from it: the concentric shells put them there, and the angle
-// between the segments is then the triangle's. Splitting it would go on for ever.
+// segments that meet at an input vertex, at equal distances from it: the concentric shells put them
+// there, and the angle between the segments is then the triangle's. Splitting it would go on for
+// ever.
 bool Refiner::smallInputAngle(std::uint32_t p, std::uint32_t q) const {
   // The segments through a vertex, from its subsegments (a few).
   struct Through {
@@ -388,7 +390,8 @@ void Refiner::weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], dou
   }
 }
 
-Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
+Outcome Refiner::splitTriangle(const BadTriangle& bad) {
+  const bool skinny = bad.skinny;
   const std::int32_t t = bad.slot;
   // The shortest edge p -> q, the third corner r on its left.
   std::uint32_t corner[3] = {bad.a, bad.b, bad.c};
@@ -400,8 +403,10 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad, bool skinny) {
     if (l < best) best = l, k0 = k;
   }
   const std::uint32_t p = corner[k0], q = corner[(k0 + 1) % 3], r = corner[(k0 + 2) % 3];
-  // Most triangles have an end of their shortest edge on no subsegment.
-  if (onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q)) return Outcome::Skipped;
+  // Most triangles have an end of their shortest edge on no subsegment. One too large (and
+  // not skinny) is split wherever it lies: an input angle is no reason to leave it.
+  if (skinny && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q))
+    return Outcome::Skipped;
   const double qx = x(q) - x(p), qy = y(q) - y(p), rx = x(r) - x(p), ry = y(r) - y(p);
   const double twice = 2 * (qx * ry - qy * rx);
   const double q2 = qx * qx + qy * qy, r2 = rx * rx + ry * ry;
@@ -584,10 +589,9 @@ Status Refiner::run() {
     for (const BadTriangle& b : retry) checkTriangle(b.slot);
     retry.clear();
     if (bad_.empty()) break;
-    bool skinny = false;
-    const BadTriangle b = bad_.pop(skinny);
+    const BadTriangle b = bad_.pop();
     if (!holds(b)) continue;
-    const Outcome o = splitTriangle(b, skinny);
+    const Outcome o = splitTriangle(b);
     if (o == Outcome::Failed) return d_.lastError();
     if (o == Outcome::Retry) {
       retry.push_back(b);
