@@ -53,13 +53,13 @@ bool Incremental::insert(Output& out, Input& input, bool polyline, emscripten::v
 }
 
 bool Incremental::mesh(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-                       emscripten::val onProgress) {
+                       bool segmentSources, emscripten::val onProgress) {
   out.clear();
   relay_.start(std::move(onProgress), 0);
   const bool ok = guarded(
       out,
       [&] {
-        out.mesh = triangulation_.mesh(meshOptions(keep, fill, insideFlags, input));
+        out.mesh = triangulation_.mesh(meshOptions(keep, fill, insideFlags, segmentSources, input));
         out.stats = triangulation_.stats();
         return Status::success();
       },

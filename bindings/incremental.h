@@ -23,7 +23,7 @@ class Incremental {
   bool insertPolyline(Output& out, Input& input, emscripten::val onProgress);
   // input holds the polygons of region labels, if any (freed afterwards).
   bool mesh(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-            emscripten::val onProgress);
+            bool segmentSources, emscripten::val onProgress);
   // Values at the points of input.points (freed afterwards) into out.mesh.values.
   void interpolate(Output& out, Input& input, Interpolation method);
   // The raster into out.raster; false (with the status in out) on bad bounds or no memory.

@@ -8,11 +8,13 @@
 
 namespace geocdt::wasm {
 
-MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, const Input& input) {
+MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, bool segmentSources,
+                        const Input& input) {
   MeshOptions options;
   options.keep = keep;
   options.fill = fill;
   options.insideFlags = insideFlags;
+  options.segmentSources = segmentSources;
   options.regions = input.hasPolygons();
   options.polylinePolygons = input.polylinePolygons();
   return options;
@@ -30,8 +32,8 @@ RefineOptions refineOptions(Keep keep, FillRule fill, double minAngle, double ma
 }
 
 bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-                     std::uint32_t valuesPerPoint, emscripten::val onProgress, bool refine,
-                     double minAngle, double maxArea, double maxSteinerPoints) {
+                     bool segmentSources, std::uint32_t valuesPerPoint, emscripten::val onProgress,
+                     bool refine, double minAngle, double maxArea, double maxSteinerPoints) {
   out.clear();
   ProgressRelay relay;
   const std::size_t points = input.pointCount();
@@ -42,7 +44,8 @@ bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool i
   const bool ok = guarded(
       out,
       [&] {
-        const MeshOptions exportOptions = meshOptions(keep, fill, insideFlags, input);
+        const MeshOptions exportOptions =
+            meshOptions(keep, fill, insideFlags, segmentSources, input);
         const std::vector<double> values = std::move(input.values);
         const double* pointValues = values.empty() ? nullptr : values.data();
         const double* lineValues =

@@ -8,7 +8,9 @@
 namespace geocdt::wasm {
 
 // The core's options; input gives the polygons (region labels when it has any).
-MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, const Input& input);
+// segmentSources: the input segments of each constrained edge (Mesh::segmentSources).
+MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, bool segmentSources,
+                        const Input& input);
 
 // Triangulates what JS wrote into input (which is freed afterwards). The result, or the
 // failure, lands in out: with region labels when the input has polygons, with
@@ -16,8 +18,8 @@ MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, const Input&
 // fraction), or undefined. With refine (see refineOptions), the triangulation is refined
 // before export. Returns whether it succeeded.
 bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-                     std::uint32_t valuesPerPoint, emscripten::val onProgress, bool refine,
-                     double minAngle, double maxArea, double maxSteinerPoints);
+                     bool segmentSources, std::uint32_t valuesPerPoint, emscripten::val onProgress,
+                     bool refine, double minAngle, double maxArea, double maxSteinerPoints);
 
 // The core's refinement options from what JS checked: maxArea 0 and maxSteinerPoints 0 for
 // none.

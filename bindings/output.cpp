@@ -73,6 +73,8 @@ const char* jsName(Field field) {
     case Field::Steiner: return "steiner";
     case Field::SteinerParents: return "steinerParents";
     case Field::SteinerWeights: return "steinerWeights";
+    case Field::SegmentOffsets: return "segmentOffsets";
+    case Field::SegmentSources: return "segmentSources";
   }
   return nullptr;
 }
@@ -105,7 +107,9 @@ ElementType elementType(Field field) {
     case Field::InputToVertex:
     case Field::VertexIds:
     case Field::Steiner:
-    case Field::SteinerParents: return ElementType::Uint32;
+    case Field::SteinerParents:
+    case Field::SegmentOffsets:
+    case Field::SegmentSources: return ElementType::Uint32;
   }
   return ElementType::Uint32;
 }
@@ -128,6 +132,8 @@ std::uintptr_t Output::data(int field) const {
     case Field::Steiner: return address(mesh.steiner);
     case Field::SteinerParents: return address(mesh.steinerParents);
     case Field::SteinerWeights: return address(mesh.steinerWeights);
+    case Field::SegmentOffsets: return address(mesh.segmentOffsets);
+    case Field::SegmentSources: return address(mesh.segmentSources);
   }
   return 0;
 }
@@ -150,6 +156,8 @@ std::size_t Output::size(int field) const {
     case Field::Steiner: return mesh.steiner.size();
     case Field::SteinerParents: return mesh.steinerParents.size();
     case Field::SteinerWeights: return mesh.steinerWeights.size();
+    case Field::SegmentOffsets: return mesh.segmentOffsets.size();
+    case Field::SegmentSources: return mesh.segmentSources.size();
   }
   return 0;
 }
@@ -173,6 +181,8 @@ void Output::clear() {
   release(mesh.constraintEdges);
   release(mesh.sourceOffsets);
   release(mesh.sources);
+  release(mesh.segmentOffsets);
+  release(mesh.segmentSources);
   release(mesh.inside);
   release(mesh.regions);
   release(mesh.values);

@@ -33,6 +33,8 @@ enum class Field : int {
   Steiner,
   SteinerParents,
   SteinerWeights,
+  SegmentOffsets,
+  SegmentSources,
 };
 
 // Named after the JS typed array that holds such elements (Float64Array, ...).

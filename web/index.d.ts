@@ -78,6 +78,8 @@ export interface MeshOptions extends ProgressOptions {
   fillRule?: FillRule;
   /** Return `inside`, one flag per triangle (implied by keep: 'inside'). */
   insideFlags?: boolean;
+  /** Return `segmentOffsets` and `segmentSources`: the input segments of each constrained edge. */
+  segmentSources?: boolean;
 }
 
 /**
@@ -193,6 +195,18 @@ export interface Mesh {
   sourceOffsets: Uint32Array;
   /** Polyline indices (the order of `input.polylines`, or of insertPolyline calls). */
   sources: Uint32Array;
+  /**
+   * With segmentSources: constrained edge i lies on the input segments
+   * segmentSources[segmentOffsets[i] .. segmentOffsets[i + 1]); constraintEdges.length + 1
+   * entries.
+   */
+  segmentOffsets?: Uint32Array;
+  /**
+   * Input segments, numbered across the polylines in order, counting each pair of
+   * consecutive points whose vertices differ (inputToVertex): a repeated point, or two points
+   * that became one vertex, make no segment.
+   */
+  segmentSources?: Uint32Array;
   /** 1 for each triangle inside the rings; present with insideFlags or keep: 'inside'. */
   inside?: Uint8Array;
   /**

@@ -200,7 +200,7 @@ export class Kernel {
 
   // Copies the output's mesh out, then frees it; the flags say which optional arrays to take
   // (the Steiner records come whenever there are any, or refinement was asked for).
-  takeMesh({ inputToVertex, inside, regions, values, steiner }) {
+  takeMesh({ inputToVertex, inside, regions, values, steiner, segmentSources }) {
     try {
       const mesh = {
         points: this.read('points'),
@@ -212,6 +212,10 @@ export class Kernel {
       mesh.constraintEdges = this.read('constraintEdges');
       mesh.sourceOffsets = this.read('sourceOffsets');
       mesh.sources = this.read('sources');
+      if (segmentSources) {
+        mesh.segmentOffsets = this.read('segmentOffsets');
+        mesh.segmentSources = this.read('segmentSources');
+      }
       if (inside) mesh.inside = this.read('inside');
       if (regions) mesh.regions = this.read('regions');
       if (values) mesh.values = this.read('values');
@@ -230,12 +234,16 @@ export class Kernel {
   // options -> what the binding takes; the names come from the module's enums.
   meshOptions(options) {
     if (options == null) {
-      return { keep: this.keep.all, fill: this.fillRule.evenodd, insideFlags: false };
+      return {
+        keep: this.keep.all, fill: this.fillRule.evenodd, insideFlags: false,
+        segmentSources: false,
+      };
     }
     if (typeof options !== 'object') {
       throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
     }
-    const { keep = 'all', fillRule = 'evenodd', insideFlags = false } = options;
+    const { keep = 'all', fillRule = 'evenodd', insideFlags = false, segmentSources = false }
+      = options;
     const choice = (what, value, embindEnum) => {
       if (typeof value === 'string' && value !== 'values' && Object.hasOwn(embindEnum, value)) {
         return embindEnum[value];
@@ -245,11 +253,14 @@ export class Kernel {
     };
     const k = choice('keep', keep, this.keep);
     const f = choice('fillRule', fillRule, this.fillRule);
-    if (typeof insideFlags !== 'boolean') {
-      throw new TypeError(
-        `geocdt: options.insideFlags must be a boolean, got ${describe(insideFlags)}`);
-    }
-    return { keep: k, fill: f, insideFlags: insideFlags || k === this.keep.inside };
+    const flag = (what, value) => {
+      if (typeof value !== 'boolean') {
+        throw new TypeError(`geocdt: options.${what} must be a boolean, got ${describe(value)}`);
+      }
+    };
+    flag('insideFlags', insideFlags);
+    flag('segmentSources', segmentSources);
+    return { keep: k, fill: f, insideFlags: insideFlags || k === this.keep.inside, segmentSources };
   }
 
   // options.refine -> { refine, minAngle, maxArea, maxSteinerPoints } for the binding (0 for
@@ -334,7 +345,8 @@ export class Kernel {
       this.writeInput(checked);
       const started = now();
       ok = this.wasm.triangulateInto(this.output, this.input, o.keep, o.fill, o.insideFlags,
-        valuesPerPoint, progress.callback, r.refine, r.minAngle, r.maxArea, r.maxSteinerPoints);
+        o.segmentSources, valuesPerPoint, progress.callback, r.refine, r.minAngle, r.maxArea,
+        r.maxSteinerPoints);
       coreMilliseconds = now() - started;
     } finally {
       this.input.clear();
@@ -350,7 +362,7 @@ export class Kernel {
     progress.rethrow();
     const mesh = this.takeMesh({
       inputToVertex: true, inside: o.insideFlags, regions: polygons !== undefined,
-      values: values !== undefined, steiner: r.refine,
+      values: values !== undefined, steiner: r.refine, segmentSources: o.segmentSources,
     });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
@@ -396,7 +408,7 @@ export class Kernel {
         incremental.polylineCount(), 'options.polygons');
       started = now();
       ok = incremental.mesh(this.output, this.input, o.keep, o.fill, o.insideFlags,
-        progress.callback);
+        o.segmentSources, progress.callback);
     } finally {
       this.input.clear();
       this.leave();
@@ -406,6 +418,7 @@ export class Kernel {
     progress.rethrow();
     const mesh = this.takeMesh({
       inside: o.insideFlags, regions: polygons !== undefined, values: incremental.hasValues(),
+      segmentSources: o.segmentSources,
     });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;

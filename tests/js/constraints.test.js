@@ -10,7 +10,7 @@ import { isRoundedCrossing } from './support/exact.js';
 before(() => init());
 
 function check(input, options = {}) {
-  const r = triangulate(input, { insideFlags: true, ...options });
+  const r = triangulate(input, { insideFlags: true, segmentSources: true, ...options });
   const keepAll = options.keep !== 'inside';
   checkMesh(r, input, { keepAll });
   checkConstraints(r, input, { keepAll });
@@ -210,6 +210,18 @@ test('constraint calls leave the heap at its baseline', () => {
   assert.equal(memoryUsage().allocatedBytes, baseline);
 });
 
+test('the checker refuses a route that names the wrong segment', () => {
+  // Segments 0 = (0,0)-(4,0) and 1 = (2,-1)-(2,1) cross at (2,0): four edges, each on one.
+  const input = { polylines: [[0, 0, 4, 0], [2, -1, 2, 1]] };
+  const r = triangulate(input, { segmentSources: true });
+  checkConstraints(r, input);
+  const swapped = { ...r, segmentSources: r.segmentSources.map((t) => 1 - t) };
+  assert.throws(() => checkConstraints(swapped, input), /segment/);
+  const none = { ...r, segmentOffsets: new Uint32Array(r.segmentOffsets.length),
+    segmentSources: new Uint32Array(0) };
+  assert.throws(() => checkConstraints(none, input), /covered|no segment/);
+});
+
 test('real data: Natural Earth 110m country rings, shared borders overlapping', async () => {
   const { createRequire } = await import('node:module');
   const { readFileSync } = await import('node:fs');
@@ -230,4 +242,39 @@ test('real data: Natural Earth 110m country rings, shared borders overlapping', 
   assert.ok(shared > 1_000, `borders shared by two countries: ${shared}`);
   const kept = check({ polylines }, { keep: 'inside' });
   assert.equal(kept.triangles.length / 3, r.inside.reduce((s, f) => s + f, 0));
+});
+
+test('segmentSources names the input segments each constrained edge lies on', () => {
+  // Segments, numbered across polylines, a repeated point making none: 0 = (0,0)-(4,0),
+  // 1 = (4,0)-(4,4), 2 = (2,-1)-(2,5) crossing 0 at (2,0), 3 = (0,0)-(2,0) along 0.
+  const polylines = [[0, 0, 4, 0, 4, 0, 4, 4], [2, -1, 2, 5], [0, 0, 2, 0]];
+  const r = check({ polylines }, { segmentSources: true });
+  assert.equal(r.segmentOffsets.length, r.constraintEdges.length + 1);
+  assert.equal(r.segmentOffsets[r.segmentOffsets.length - 1], r.segmentSources.length);
+  // Each edge by its end coordinates, with its segments.
+  const segmentsOfEdges = (m) => {
+    const lies = {};
+    m.constraintEdges.forEach((e, i) => {
+      const ends = [m.triangles[e], m.triangles[e % 3 === 2 ? e - 2 : e + 1]]
+        .map((v) => [m.points[2 * v], m.points[2 * v + 1]])
+        .sort((p, q) => p[0] - q[0] || p[1] - q[1]);
+      lies[ends.join('-')] = Array.from(
+        m.segmentSources.subarray(m.segmentOffsets[i], m.segmentOffsets[i + 1])).sort();
+    });
+    return lies;
+  };
+  const expected = {
+    '0,0-2,0': [0, 3], '2,0-4,0': [0], '4,0-4,4': [1], '2,-1-2,0': [2], '2,0-2,5': [2],
+  };
+  assert.deepEqual(segmentsOfEdges(r), expected);
+  // Without the option the arrays are not there; the incremental results take it too.
+  const plain = triangulate({ polylines });
+  assert.equal(plain.segmentSources, undefined);
+  assert.equal(plain.segmentOffsets, undefined);
+  const t = new Triangulation();
+  for (const p of polylines) t.insertPolyline(p);
+  assert.deepEqual(segmentsOfEdges(t.results({ segmentSources: true })), expected);
+  t.dispose();
+  assert.throws(() => triangulate({ polylines }, { segmentSources: 1 }),
+    (e) => e instanceof TypeError && /options\.segmentSources must be a boolean/.test(e.message));
 });

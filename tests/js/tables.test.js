@@ -87,12 +87,12 @@ test('location kinds, keep, fill rules and phases', () => {
 test('output fields: the module\'s arrays are the result\'s, typed and documented', () => {
   const fields = wasm.fieldNames();
   const elementTypes = names(wasm.ElementType);
-  // Every optional array asked for: inside flags, region labels (polygons), values and
-  // Steiner records (refine).
+  // Every optional array asked for: inside flags, region labels (polygons), values, Steiner
+  // records (refine) and segment sources.
   const r = triangulate({
     points: [0, 0, 1, 0, 0, 1], polylines: [[0, 0, 1, 1]], polygons: [0, 1],
     values: [1, 2, 3, 4, 5],
-  }, { insideFlags: true, refine: { minAngle: 0 } });
+  }, { insideFlags: true, refine: { minAngle: 0 }, segmentSources: true });
   // Not in results: the incremental insertions' and rasterize()'s return values.
   const returned = ['vertexIds', 'raster'];
   const documented = [...members('Mesh'), ...members('TriangulateResult')];

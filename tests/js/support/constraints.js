@@ -66,20 +66,38 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     }
   }
 
+  // With segmentSources, the input segments each constrained edge lies on (its route): keyed
+  // by the edge's two vertices.
+  const routes = r.segmentSources === undefined ? null : new Map();
+  const edgeKey = (a, b) => (a < b ? `${a},${b}` : `${b},${a}`);
+  if (routes) {
+    assert.equal(r.segmentOffsets.length, r.constraintEdges.length + 1);
+    r.constraintEdges.forEach((e, i) => {
+      routes.set(edgeKey(triangles[e], triangles[next(e)]),
+        new Set(r.segmentSources.subarray(r.segmentOffsets[i], r.segmentOffsets[i + 1])));
+    });
+  }
+
   // Every input segment is covered by a chain of constrained edges whose vertices lie within
   // the bound of it, each further along it than the one before: a search from its first
-  // vertex (several vertices can lie within the bound where vertices are a few ulps apart).
+  // vertex (several vertices can lie within the bound where vertices are a few ulps apart),
+  // along the edges that name it when the result says which segments each edge lies on.
   let pointBase = (input.points?.length ?? 0) / 2;
+  const numbered = [];  // [segment, polyline], numbered as segmentSources numbers them
   polylines.forEach((line, j) => {
-    for (let k = 0; keepAll && k + 3 < line.length; k += 2) {
+    for (let k = 0; k + 3 < line.length; k += 2) {
       const s = [line[k], line[k + 1], line[k + 2], line[k + 3]];
       const from = r.inputToVertex[pointBase + k / 2];
       const to = r.inputToVertex[pointBase + k / 2 + 1];
       if (from === to) continue;
+      const index = numbered.length;
+      numbered.push([s, j]);
+      if (!keepAll) continue;
       const seen = new Set([from]), frontier = [from];
       for (let i = 0; i < frontier.length && !seen.has(to); i++) {
         const at = frontier[i];
         for (const w of neighbours.get(at) ?? []) {
+          if (routes && !routes.get(edgeKey(at, w))?.has(index)) continue;
           if (seen.has(w) || !withinBound(s, x(w), y(w))) continue;
           if (signAlong(s, x(at), y(at), x(w), y(w)) <= 0) continue;
           seen.add(w);
@@ -127,6 +145,15 @@ export function checkConstraints(r, input, { keepAll = true } = {}) {
     for (const j of must) {
       assert.ok(named.includes(j), `${where} lies on polyline ${j} but names only ${named}`);
     }
+    // Its route: segments it lies within the bound of, of polylines it names.
+    for (const t of routes?.get(edgeKey(a, b)) ?? []) {
+      assert.ok(t < numbered.length, `${where} names segment ${t} of ${numbered.length}`);
+      const [seg, j] = numbered[t];
+      assert.ok(withinBound(seg, ax, ay) && withinBound(seg, bx, by),
+        `${where} lies on segment ${t} by its route, beyond that segment's bound`);
+      assert.ok(named.includes(j), `${where} lies on segment ${t} of polyline ${j}, not named`);
+    }
+    if (routes) assert.ok(routes.get(edgeKey(a, b)).size > 0, `${where} lies on no segment`);
   });
 }
 
