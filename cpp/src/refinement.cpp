@@ -210,7 +210,17 @@ void Refiner::afterInsert(std::int32_t from, std::int32_t winding) {
     if (topo_.tri[outer] != kGhost) vertexEdge_[topo_.tri[outer]] = outer;
   }
   vertexEdge_[topo_.tri[from]] = from;
-  for (const std::int32_t h : around_) checkAround(h / 3);
+  if (winding == kUnknownWinding) {
+    for (const std::int32_t h : around_) checkAround(h / 3);
+    return;
+  }
+  // Joined to a cavity's border: the spokes are new and unconstrained, none on the hull (no
+  // ghost was in the cavity), so only the border edges can be subsegments.
+  for (const std::int32_t h : around_) {
+    checkTriangle(h / 3);
+    const std::int32_t outer = nextEdge(h);
+    if (isSubsegment(outer)) queueIfEncroached(outer);
+  }
 }
 
 void Refiner::noteCorners(std::int32_t t) {
