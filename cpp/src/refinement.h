@@ -1,9 +1,10 @@
 #pragma once
 // Delaunay refinement after Ruppert and Chew, made robust as Shewchuk describes: encroached
 // subsegments are split first (on concentric shells around input vertices, so that small
-// input angles do not make it loop), then bad triangles, worst first, at their off-centre or
-// circumcentre; a candidate that would encroach a subsegment splits the subsegment instead.
-// Steiner points are computed in floating point and inserted through the exact core.
+// input angles do not make it loop), then bad triangles (in BadQueue's order) at their
+// off-centre or circumcentre; a candidate that would encroach a subsegment splits the
+// subsegment instead. Steiner points are computed in floating point and inserted through the
+// exact core, by the cavity the encroachment check found where it is a star.
 #include "delaunay.h"
 
 namespace geocdt {
