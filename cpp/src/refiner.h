@@ -86,6 +86,9 @@ struct Subsegment {
   bool forced;
 };
 
+// Where p projects on a -> b, as the fraction of the way from a, clamped to [0, 1].
+double projection(double ax, double ay, double bx, double by, double px, double py);
+
 enum class Outcome { Done, Skipped, Retry, Failed };
 
 // What decides whether a triangle is bad: sin^2 of its smallest angle is cross2 / product
