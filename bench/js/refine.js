@@ -4,12 +4,17 @@
 // within the outer boundary: lakes given as rings stay filled). Prints, per engine, the median
 // time, the Steiner points, the triangles and the worst angle of the triangles refined.
 // With --uniform N: N uniform points in a square ring instead, where both domains are the
-// square.
+// square. With --baseline DIR, another build of the package (a folder holding its web/) runs
+// in the same rounds, and the median of this build's time over the baseline's, round by
+// round, is printed: a before/after in one process.
 //   node bench/js/refine.js [--scale 110m | --uniform 20000] [--angle 30] [--rounds 3]
+//     [--baseline DIR]
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
 import { init, triangulate } from 'geocdt';
 import { countryRings, indexedGraph, pointCount, uniform } from './datasets.js';
 import * as peers from './peers.js';
-import { alternate } from './timing.js';
+import { alternate, median } from './timing.js';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -41,15 +46,22 @@ const { name, input, graph } = uniformCount > 0 ? pointsInSquare(uniformCount) :
     graph: indexedGraph(rings.polylines) };
 })();
 const vertices = graph.xy.length / 2;
+const refineWith = (run) => ({
+  run: () => run(input, { keep: 'inside', refine: { minAngle: angle } }),
+  describe: (r) => `${r.steiner.length} Steiner points, ${r.triangles.length / 3} triangles, `
+    + `worst ${peers.worstAngle(r.points, r.triangles).toFixed(2)} deg, `
+    + `${r.stats.refineSkipped} left (capped: ${r.stats.refineCapped})`,
+});
+const baselineDir = option('baseline', null);
+let baseline = null;
+if (baselineDir) {
+  baseline = await import(pathToFileURL(join(resolve(baselineDir), 'web/index.node.js')).href);
+  await baseline.init({ warmUp: false });
+}
 const triangle = peers.triangleInWorker(600_000);
 const results = await alternate([
-  {
-    name: 'geocdt',
-    run: () => triangulate(input, { keep: 'inside', refine: { minAngle: angle } }),
-    describe: (r) => `${r.steiner.length} Steiner points, ${r.triangles.length / 3} triangles, `
-      + `worst ${peers.worstAngle(r.points, r.triangles).toFixed(2)} deg, `
-      + `${r.stats.refineSkipped} left (capped: ${r.stats.refineCapped})`,
-  },
+  { name: 'geocdt', ...refineWith(triangulate) },
+  ...(baseline ? [{ name: 'baseline', ...refineWith(baseline.triangulate) }] : []),
   {
     name: 'triangle-wasm',
     run: () => triangle.run({ ...graph, switches: { quality: angle } }),
@@ -61,4 +73,10 @@ const points = (input.points?.length ?? 0) / 2 + pointCount(input.polylines);
 console.log(`${name}: ${points} points (${vertices} distinct), ${angle} degrees`);
 for (const [engine, r] of Object.entries(results)) {
   console.log(`  ${engine}: ${r.error ?? `${r.ms.toFixed(0)} ms, ${r.summary}`}`);
+}
+if (baseline && !results.geocdt.error && !results.baseline.error) {
+  const ratios = results.geocdt.times.map((t, i) => t / results.baseline.times[i]);
+  const range = `${Math.min(...ratios).toFixed(3)}-${Math.max(...ratios).toFixed(3)}`;
+  console.log(`  this build / baseline: ${median(ratios).toFixed(3)} `
+    + `(${range}, ${ratios.length} rounds)`);
 }
