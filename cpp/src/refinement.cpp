@@ -395,6 +395,7 @@ Status Refiner::run() {
     }
   }
   std::vector<BadTriangle> retry;
+  std::vector<BadTriangle> unresolved;  // taken from the queue and left as they were
   while (!capped_) {
     if (!subsegments_.empty()) {
       const Subsegment s = subsegments_.back();
@@ -414,18 +415,18 @@ Status Refiner::run() {
     if (o == Outcome::Retry) {
       retry.push_back(b);
     } else if (holds(b)) {
-      unresolved_.push_back(b);  // skipped, or the cap stopped it
+      unresolved.push_back(b);  // skipped, or the cap stopped it
     }
   }
   // What is left bad: every triangle was checked when it was made, and a bad one queued; a
   // queued one was split (then it is gone, or it is among these), skipped, or is still
   // waiting. A pass over all the slots instead missed the cache for every one of them.
-  unresolved_.insert(unresolved_.end(), retry.begin(), retry.end());
-  bad_.drainInto(unresolved_);
+  unresolved.insert(unresolved.end(), retry.begin(), retry.end());
+  bad_.drainInto(unresolved);
   std::uint64_t left = 0;
   ++epoch_;
   stamp_.resize(topo_.slotCount(), 0);
-  for (const BadTriangle& b : unresolved_) {
+  for (const BadTriangle& b : unresolved) {
     if (stamp_[b.slot] == epoch_ || !holds(b) || !inRegion(b.slot)) continue;
     stamp_[b.slot] = epoch_;
     const Shape s = shape(b.slot);

@@ -164,7 +164,9 @@ class Refiner {
   int constrainedDegree(std::uint32_t u) const;
   bool smallInputAngle(std::uint32_t p, std::uint32_t q) const;  // of the shortest edge p, q
   void rebuild();
-  // winding, when known, is that of every triangle around the vertex (none a ghost).
+  // winding, when given, says the vertex went in inside one region (a cavity's border joined
+  // to it): every triangle around it has that winding, none is a ghost, and no spoke is
+  // constrained, so only the outer edges are checked for subsegments.
   static constexpr std::int32_t kUnknownWinding = std::numeric_limits<std::int32_t>::min();
   void afterInsert(std::int32_t from, std::int32_t winding = kUnknownWinding);
   void noteCorners(std::int32_t t);
@@ -205,11 +207,10 @@ class Refiner {
   // Per vertex: 1 for an end of a subsegment. Most vertices are on none, and smallInputAngle
   // learns that here instead of turning round them.
   std::vector<std::uint8_t> onSubsegment_;
-  std::vector<std::uint32_t> stamp_;  // per slot: the cavity search that saw it
+  std::vector<std::uint32_t> stamp_;  // per slot: the large cavity search (or count) that saw it
   std::uint32_t epoch_ = 0;
   std::vector<Subsegment> subsegments_;
   BadQueue bad_;
-  std::vector<BadTriangle> unresolved_;  // taken from the queue and left as they were
   std::unordered_set<std::uint64_t> unsplittable_;
   // With keep all, the hull's edges are segments too: each hull subsegment's original edge.
   std::vector<InputSegment> hull_;

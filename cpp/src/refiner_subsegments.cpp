@@ -1,10 +1,8 @@
 // The refiner's subsegments: which are encroached, which input segment each lies on, where
 // one is split (on concentric shells next to input vertices where constraints meet), and the
 // small input angles that leave a triangle as it is.
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include "euclidean_norm.h"
 #include "exact_geometry.h"
