@@ -15,10 +15,11 @@ bool Delaunay::build(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   const Sign o = orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1]);
   if (o == Sign::Zero) return false;
   if (o == Sign::Negative) std::swap(b, c);
-  const std::int32_t t = topo.addTriangle(a, b, c);
-  const std::int32_t g0 = topo.addTriangle(b, a, kGhost);
-  const std::int32_t g1 = topo.addTriangle(c, b, kGhost);
-  const std::int32_t g2 = topo.addTriangle(a, c, kGhost);
+  const std::int32_t t = addSlots(4), g0 = t + 1, g1 = t + 2, g2 = t + 3;
+  topo.setTriangle(t, a, b, c);
+  topo.setTriangle(g0, b, a, kGhost);
+  topo.setTriangle(g1, c, b, kGhost);
+  topo.setTriangle(g2, a, c, kGhost);
   topo.link(3 * t, 3 * g0);
   topo.link(3 * t + 1, 3 * g1);
   topo.link(3 * t + 2, 3 * g2);
@@ -33,7 +34,15 @@ bool Delaunay::build(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
 
 Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint32_t* ids) {
   if (count == 0) return Status::success();
+  if (xy.empty() && wantsStrips(count)) {
+    xy.assign(input, input + 2 * static_cast<std::size_t>(count));
+    bool handled = false;
+    const Status s = insertInStrips(count, ids, handled);
+    if (!s.ok() || handled) return s;
+    xy.clear();
+  }
   const std::uint32_t base = vertexCount();
+  stats.threads = 1;
   options_.progress(Phase::Sort, 0, count);
   std::vector<std::uint32_t> order = insertionOrder(input, count, options_.order);
   options_.progress(Phase::Sort, count, count);
@@ -66,6 +75,12 @@ Status Delaunay::insertBatch(std::vector<double>&& buffer, std::uint32_t* ids) {
     std::vector<double>().swap(buffer);
   }
   const std::size_t base = xy.size() / 2 - count;
+  if (base == 0 && wantsStrips(count)) {
+    bool handled = false;
+    const Status s = insertInStrips(count, ids, handled);
+    if (!s.ok() || handled) return s;
+  }
+  stats.threads = 1;
   options_.progress(Phase::Sort, 0, count);
   std::vector<std::uint32_t> order = insertionOrder(xy.data() + 2 * base, count, options_.order);
   options_.progress(Phase::Sort, count, count);
@@ -97,7 +112,7 @@ Status Delaunay::insertStored(std::uint32_t count, std::uint32_t* ids,
   if (!built_) s = insertPending(order, built);
   if (s.ok() && built_) {
     if (large && options_.start == LocateStart::LastTriangle) {
-      s = insertRun(order, built);
+      s = insertRun(order.data(), count, built);
     } else {
       topo.reserve(topo.tri.size() / 3 + 2 * static_cast<std::size_t>(count) + 8);
       for (std::uint32_t k = 0; k < count && s.ok(); ++k) {
@@ -140,9 +155,8 @@ Status Delaunay::insertStored(std::uint32_t count, std::uint32_t* ids,
   return Status::success();
 }
 
-Status Delaunay::insertRun(const std::vector<std::uint32_t>& order,
+Status Delaunay::insertRun(const std::uint32_t* order, std::uint32_t count,
                            std::array<std::uint32_t, 3> skip) {
-  const auto count = static_cast<std::uint32_t>(order.size());
   const std::uint32_t base = batch_.base;
   const bool sorted = batch_.order != nullptr;
   const auto vertex = [&](std::uint32_t k) { return base + (sorted ? k : order[k]); };
@@ -150,10 +164,14 @@ Status Delaunay::insertRun(const std::vector<std::uint32_t>& order,
   const std::size_t first = vertex(0);
   last_ = startTriangle(xy[2 * first], xy[2 * first + 1], true);
   batchStart_ = false;
-  const std::int32_t used = topo.slotCount();
   // Each insertion adds two slots: with them all in place, a split writes without checks.
-  topo.resizeSlots(static_cast<std::size_t>(used) + 2 * static_cast<std::size_t>(count));
-  runSlots_ = used;
+  // A strip worker's are in place already, from runSlots_ on.
+  const bool worker = firstSlot_ >= 0;
+  if (!worker) {
+    const std::int32_t used = topo.slotCount();
+    topo.resizeSlots(static_cast<std::size_t>(used) + 2 * static_cast<std::size_t>(count));
+    runSlots_ = used;
+  }
   const bool withFlags = constrained();
   Status s;
   for (std::uint32_t k = 0; k < count && s.ok(); ++k) {
@@ -163,16 +181,18 @@ Status Delaunay::insertRun(const std::vector<std::uint32_t>& order,
     // 4M; with it 1.06-1.13x that of points stored in insertion order).
     if ((k & 4095) == 0) options_.progress(Phase::Points, k, count);
     if (!sorted && k % kRunBlock == 0 && k + kRunBlock < count)
-      touch_ += touchPoints(base, order.data() + k + kRunBlock,
-                            std::min(kRunBlock, count - k - kRunBlock));
+      touch_ +=
+          touchPoints(base, order + k + kRunBlock, std::min(kRunBlock, count - k - kRunBlock));
     const std::uint32_t v = vertex(k);
     if (v == skip[0] || v == skip[1] || v == skip[2]) continue;
     const std::uint32_t r = withFlags ? insertRunVertex<true>(v) : insertRunVertex<false>(v);
     if (r == kGhost) s = error_;
     if (r != v) recordDuplicate(v, r);
   }
-  topo.resizeSlots(static_cast<std::size_t>(runSlots_));
-  runSlots_ = -1;
+  if (!worker) {
+    topo.resizeSlots(static_cast<std::size_t>(runSlots_));
+    runSlots_ = -1;
+  }
   return s;
 }
 

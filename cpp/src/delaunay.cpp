@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include "geocdt/predicates.h"
 
@@ -17,6 +18,34 @@ inline bool ccw(const double* p, std::uint32_t a, std::uint32_t b, std::uint32_t
 }
 
 }  // namespace
+
+Delaunay& Delaunay::operator=(Delaunay&& other) noexcept {
+  xy = std::move(other.xy);
+  topo = std::move(other.topo);
+  constraints = std::move(other.constraints);
+  stats = other.stats;
+  steiner = std::move(other.steiner);
+  options_ = other.options_;
+  grid_ = std::move(other.grid_);
+  gridStale_ = other.gridStale_;
+  built_ = other.built_;
+  batchStart_ = other.batchStart_;
+  smallBatch_ = other.smallBatch_;
+  inBatch_ = other.inBatch_;
+  splits_ = std::move(other.splits_);
+  last_ = other.last_;
+  runSlots_ = other.runSlots_;
+  firstSlot_ = other.firstSlot_;
+  batch_ = other.batch_;
+  touch_ = other.touch_;
+  pending_ = std::move(other.pending_);
+  stack_ = std::move(other.stack_);
+  star_ = std::move(other.star_);
+  lawson_ = std::move(other.lawson_);
+  lawsonTop_ = other.lawsonTop_;
+  error_ = std::move(other.error_);
+  return *this;
+}
 
 void Delaunay::clear() {
   xy.clear();

@@ -33,11 +33,24 @@ struct SteinerVertex {
 };
 
 class Delaunay {
- public:
-  explicit Delaunay(const Options& options) : options_(options) {}
+  // Storage of its own, or none when it works on a strip of another's (see xy, topo).
+  std::vector<double> ownXy_;
+  Topology ownTopo_;
 
-  std::vector<double> xy;  // 2 per vertex
-  Topology topo;
+ public:
+  explicit Delaunay(const Options& options) : xy(ownXy_), topo(ownTopo_), options_(options) {}
+  // A worker that triangulates one strip of owner's points into owner's arrays, in the slots
+  // from firstSlot on (strip_insertion.cpp): it reads owner's xy and writes only its slots.
+  Delaunay(const Options& options, Delaunay& owner, std::int32_t firstSlot)
+      : xy(owner.xy), topo(owner.topo), options_(options), firstSlot_(firstSlot) {}
+  Delaunay(const Delaunay&) = delete;
+  Delaunay& operator=(const Delaunay&) = delete;
+  // Takes other's whole state (snap rounding's fresh triangulation); both own their storage.
+  // Member by member: a new member must be added there too.
+  Delaunay& operator=(Delaunay&& other) noexcept;
+
+  std::vector<double>& xy;  // 2 per vertex
+  Topology& topo;
   ConstraintStore constraints;
   Stats stats;
   std::vector<SteinerVertex> steiner;
@@ -91,6 +104,12 @@ class Delaunay {
   void dropGrid() { grid_ = PointGrid(); }  // its memory, before the arrays are handed out
   void clear();
 
+  // A strip worker's job: triangulates the vertices order[0..count) on their own, in
+  // insertion order, into the slots from firstSlot on. Duplicates are recorded in ids (by
+  // vertex). Fails when the strip's points are all collinear. usedSlots() tells where it ended.
+  Status insertStrip(const std::uint32_t* order, std::uint32_t count, std::uint32_t* ids);
+  std::int32_t usedSlots() const { return runSlots_; }
+
  private:
   // Whether any edge is or was constrained: only then do splits and flips carry the flags.
   bool constrained() const { return constraints.polylineCount > 0 || constraints.edgeCount() > 0; }
@@ -112,7 +131,13 @@ class Delaunay {
   void dedupCollinear(std::uint32_t base);
   // Inserts the batch's points in turn, from the last triangle, into arrays sized for all
   // of them up front.
-  Status insertRun(const std::vector<std::uint32_t>& order, std::array<std::uint32_t, 3> skip);
+  Status insertRun(const std::uint32_t* order, std::uint32_t count,
+                   std::array<std::uint32_t, 3> skip);
+  // Whether the batch goes to strips triangulated in parallel (strip_insertion.cpp), and
+  // that path; it falls back to one thread (returns false in handled) where strips do not
+  // pay or cannot be built.
+  bool wantsStrips(std::uint32_t count) const;
+  Status insertInStrips(std::uint32_t count, std::uint32_t* ids, bool& handled);
   template <bool kConstrained>
   GEOCDT_NOINLINE std::uint32_t insertRunVertex(std::uint32_t v);
   static constexpr std::uint32_t kRunBlock = 64;
@@ -165,6 +190,8 @@ class Delaunay {
   std::int32_t last_ = -1;
   // During insertRun the arrays hold the whole batch's slots; runSlots_ of them are used.
   std::int32_t runSlots_ = -1;
+  // A strip worker's first slot (its slots run from there), or -1 for an owner.
+  std::int32_t firstSlot_ = -1;
   // The batch being inserted: its first vertex, the caller's ids, and while its points are
   // stored in insertion order, that order (vertex base + k is input point order[k]).
   struct Batch {

@@ -1,7 +1,6 @@
 #include "insertion_order.h"
 
 #include <algorithm>
-#include <numeric>
 
 #include "chunks.h"
 
@@ -124,13 +123,34 @@ Bounds boundsOf(const double* xy, std::uint32_t count) {
 
 std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
                                           InsertionOrder order) {
+  return insertionOrder(xy, nullptr, count, order);
+}
+
+std::vector<std::uint32_t> insertionOrder(const double* xy, const std::uint32_t* subset,
+                                          std::uint32_t count, InsertionOrder order) {
+  const auto at = [subset](std::size_t i) -> std::size_t { return subset ? subset[i] : i; };
   if (order == InsertionOrder::Input || count < 3) {
     std::vector<std::uint32_t> ids(count);
-    std::iota(ids.begin(), ids.end(), 0u);
+    for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(at(i));
     return ids;
   }
 
-  const Bounds box = boundsOf(xy, count);
+  Bounds box{xy[2 * at(0)], xy[2 * at(0) + 1], xy[2 * at(0)], xy[2 * at(0) + 1]};
+  if (subset) {
+    forChunks(1, count, [&](std::size_t begin, std::size_t end) {
+      Bounds c = box;
+      for (std::size_t i = begin; i < end; ++i) {
+        const double x = xy[2 * at(i)], y = xy[2 * at(i) + 1];
+        c.minX = std::min(c.minX, x);
+        c.maxX = std::max(c.maxX, x);
+        c.minY = std::min(c.minY, y);
+        c.maxY = std::max(c.maxY, y);
+      }
+      box = c;
+    });
+  } else {
+    box = boundsOf(xy, count);
+  }
   const double minX = box.minX, minY = box.minY, maxX = box.maxX, maxY = box.maxY;
   // The finest curve the key holds (BRIO keeps 4 bits for the round): clustered points
   // need cells much smaller than the average spacing. On 1M points in gaussian clusters,
@@ -152,8 +172,9 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
   std::uint64_t* item = items.data();
   forChunks(0, count, [=](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const std::uint64_t key = hilbertIndex(toCell(xy[2 * i], minX, scale, top),
-                                             toCell(xy[2 * i + 1], minY, scale, top), bits);
+      const std::size_t v = at(i);
+      const std::uint64_t key = hilbertIndex(toCell(xy[2 * v], minX, scale, top),
+                                             toCell(xy[2 * v + 1], minY, scale, top), bits);
       int round = lastRound;  // earlier with probability 1/8 per round
       if (round > 0) {
         std::uint64_t h = (i + 1) * 0x9E3779B97F4A7C15ull;  // splitmix64's finaliser
@@ -170,7 +191,8 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
   sortByKey(items, 2 * bits + roundBits);
   std::vector<std::uint32_t> ids(count);
   forChunks(0, count, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) ids[i] = static_cast<std::uint32_t>(items[i]);
+    for (std::size_t i = begin; i < end; ++i)
+      ids[i] = static_cast<std::uint32_t>(at(static_cast<std::uint32_t>(items[i])));
   });
   return ids;
 }

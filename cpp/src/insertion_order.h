@@ -11,6 +11,10 @@ namespace geocdt {
 // Returns the indices 0..count-1 of the points xy in the order to insert them.
 std::vector<std::uint32_t> insertionOrder(const double* xy, std::uint32_t count,
                                           InsertionOrder order);
+// The same for the points subset[0..count) of xy: returns them (their indices in xy) in the
+// order to insert them.
+std::vector<std::uint32_t> insertionOrder(const double* xy, const std::uint32_t* subset,
+                                          std::uint32_t count, InsertionOrder order);
 
 // The bounding box of count >= 1 points xy.
 struct Bounds {

@@ -1,5 +1,7 @@
 // Point location: a visibility walk from the grid's cell hint or the last triangle, with
 // an exhaustive scan as the guaranteed answer when a walk gives up.
+#include <algorithm>
+
 #include "delaunay.h"
 #include "geocdt/predicates.h"
 
@@ -134,7 +136,8 @@ Hit Delaunay::scan(double x, double y) const {
   const double* p = xy.data();
   const std::uint32_t* tri = topo.tri.data();
   const std::int32_t slots = runSlots_ >= 0 ? runSlots_ : topo.slotCount();
-  for (std::int32_t t = 0; t < slots; ++t) {
+  const std::int32_t first = std::max(firstSlot_, 0);  // a strip worker's own slots only
+  for (std::int32_t t = first; t < slots; ++t) {
     if (topo.isGhost(t)) continue;
     const std::int32_t e0 = 3 * t;
     Sign o[3];
@@ -151,7 +154,7 @@ Hit Delaunay::scan(double x, double y) const {
       if (o[k] == Sign::Zero) return {Hit::Kind::Edge, e0 + k};
     return {Hit::Kind::Face, e0};
   }
-  for (std::int32_t t = 0; t < slots; ++t) {
+  for (std::int32_t t = first; t < slots; ++t) {
     if (!topo.isGhost(t)) continue;
     const std::int32_t e0 = 3 * t;
     const int g = tri[e0] == kGhost ? 0 : (tri[e0 + 1] == kGhost ? 1 : 2);

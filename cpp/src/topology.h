@@ -39,19 +39,6 @@ struct Topology {
     fixed.clear();
   }
 
-  // A slot for a new triangle; its twins are left unset (-1) for the caller to link.
-  std::int32_t addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    const std::int32_t t = slotCount();
-    tri.push_back(a);
-    tri.push_back(b);
-    tri.push_back(c);
-    for (int k = 0; k < 3; ++k) {
-      adj.push_back(-1);
-      fixed.push_back(0);
-    }
-    return t;
-  }
-
   // Exactly `slots` slots: new ones zeroed, removed ones' memory kept for later growth.
   void resizeSlots(std::size_t slots) {
     tri.resize(3 * slots);

@@ -36,16 +36,19 @@ Loaded load(const std::string& name) {
 }
 
 void checkDataset(const std::string& name, std::size_t minimumCrossings,
-                  SnapRounding snapRounding = SnapRounding::WhenNeeded) {
+                  SnapRounding snapRounding = SnapRounding::WhenNeeded, std::uint32_t threads = 1) {
   const Loaded l = load(name);
   ASSERT_GT(l.set.pointCount(), 0u);
   const std::vector<PolylineView> views = l.set.views();
   Options options;
   options.snapRounding = snapRounding;
+  options.threads = threads;
   Triangulation t(options);
   std::vector<std::uint32_t> ids(l.set.pointCount());
   const Status s = t.insertPolylines(views.data(), views.size(), ids.data());
   ASSERT_TRUE(s.ok()) << s.message;
+  // Every dataset here has enough points for strips on every thread asked for.
+  EXPECT_EQ(t.stats().threads, threads);
   EXPECT_GE(t.stats().crossings, minimumCrossings);
   // Real data keeps every computed crossing: none of it is a tangle.
   EXPECT_EQ(t.stats().snapRoundings, snapRounding == SnapRounding::Always ? 1u : 0u);
@@ -91,6 +94,28 @@ TEST(RealData, NaturalEarth10mRings) { checkDataset("ne_10m_rings.gpl", 400); }
 TEST(RealData, NaturalEarth10mArcs) { checkDataset("ne_10m_arcs.gpl", 400); }
 TEST(RealData, UsCountiesRings) { checkDataset("us_counties_rings.gpl", 0); }
 // Snap rounding everywhere keeps the guarantee on real data too.
+// The same on 2 and 4 threads: the points in strips, joined, then the constraints.
+class RealDataOnThreads : public ::testing::TestWithParam<std::uint32_t> {};
+TEST_P(RealDataOnThreads, NaturalEarth50mRings) {
+  checkDataset("ne_50m_rings.gpl", 100, SnapRounding::WhenNeeded, GetParam());
+}
+TEST_P(RealDataOnThreads, NaturalEarth50mArcs) {
+  checkDataset("ne_50m_arcs.gpl", 100, SnapRounding::WhenNeeded, GetParam());
+}
+TEST_P(RealDataOnThreads, NaturalEarth10mRings) {
+  checkDataset("ne_10m_rings.gpl", 400, SnapRounding::WhenNeeded, GetParam());
+}
+TEST_P(RealDataOnThreads, NaturalEarth10mArcs) {
+  checkDataset("ne_10m_arcs.gpl", 400, SnapRounding::WhenNeeded, GetParam());
+}
+TEST_P(RealDataOnThreads, UsCountiesRings) {
+  checkDataset("us_counties_rings.gpl", 0, SnapRounding::WhenNeeded, GetParam());
+}
+TEST_P(RealDataOnThreads, NaturalEarth50mRingsSnapRounded) {
+  checkDataset("ne_50m_rings.gpl", 100, SnapRounding::Always, GetParam());
+}
+INSTANTIATE_TEST_SUITE_P(Threads, RealDataOnThreads, ::testing::Values(2u, 4u));
+
 TEST(RealData, NaturalEarth50mRingsSnapRounded) {
   checkDataset("ne_50m_rings.gpl", 100, SnapRounding::Always);
 }

@@ -74,6 +74,11 @@ struct Options {
   // Values carried per point (elevation, depth, any attribute): the insertions' `values`
   // arguments hold this many per point. Nothing is stored until values are first given.
   std::uint32_t valuesPerPoint = 1;
+  // Threads for a large batch of points into an empty triangulation: the points are cut into
+  // this many vertical strips, triangulated side by side and joined along their seams (the
+  // same triangles as one thread, README "How it works"). 1 runs everything on the calling
+  // thread; so does a batch too small to pay for the threads.
+  std::uint32_t threads = 1;
 };
 
 // How interpolate() and rasterize() blend vertex values.
@@ -236,6 +241,8 @@ struct Stats {
   std::uint64_t steinerPoints = 0;
   std::uint64_t refineSkipped = 0;
   bool refineCapped = false;
+  // Threads that triangulated the last batch of points (1 when it ran on one thread).
+  std::uint32_t threads = 1;
 };
 
 // One Triangulation serves one thread at a time. Its const functions leave the mesh as it

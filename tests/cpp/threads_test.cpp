@@ -1,0 +1,185 @@
+// Options::threads: a large first batch of points triangulated in strips on several threads
+// and joined along the seams. Without cocircular points the triangles are those of one
+// thread; with them (lattices) any Delaunay triangulation is right, so the checker decides.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "constraint_invariants.h"
+#include "geocdt/triangulation.h"
+#include "invariants.h"
+#include "point_generators.h"
+
+namespace geocdt {
+namespace {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+// The triangles as a sorted list, each turned to start at its least vertex.
+std::vector<Triangle> triangleSet(const Mesh& m) {
+  std::vector<Triangle> set(m.triangles.size() / 3);
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    const std::uint32_t* t = m.triangles.data() + 3 * i;
+    const int k = static_cast<int>(std::min_element(t, t + 3) - t);
+    set[i] = {t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
+  }
+  std::sort(set.begin(), set.end());
+  return set;
+}
+
+struct Result {
+  Mesh mesh;
+  std::vector<std::uint32_t> ids;
+  Stats stats;
+};
+
+Result triangulateWith(const std::vector<double>& xy, std::uint32_t threads) {
+  Options options;
+  options.threads = threads;
+  Triangulation t(options);
+  Result r;
+  r.ids.resize(xy.size() / 2);
+  const Status s = t.insertPoints(xy.data(), xy.size() / 2, r.ids.data());
+  EXPECT_TRUE(s.ok()) << s.message;
+  r.stats = t.stats();
+  r.mesh = t.mesh();
+  return r;
+}
+
+std::string check(const std::vector<double>& xy, const Result& r) {
+  testing::CheckOptions c;
+  c.inputXY = &xy;
+  c.inputToVertex = &r.ids;
+  return testing::checkTriangulation(r.mesh, c);
+}
+
+// Each thread count's result is valid, numbers vertices as one thread does, and (without
+// cocircular points) has one thread's triangles.
+void expectSameAsOneThread(const std::vector<double>& xy, bool generalPosition) {
+  const Result one = triangulateWith(xy, 1);
+  EXPECT_EQ(one.stats.threads, 1u);
+  for (const std::uint32_t threads : {2u, 3u, 4u}) {
+    SCOPED_TRACE(threads);
+    const Result many = triangulateWith(xy, threads);
+    EXPECT_EQ(many.stats.threads, threads);
+    EXPECT_EQ(check(xy, many), "");
+    EXPECT_EQ(many.ids, one.ids);
+    EXPECT_EQ(many.mesh.points, one.mesh.points);
+    EXPECT_EQ(many.stats.inserted, one.stats.inserted);
+    EXPECT_EQ(many.stats.duplicates, one.stats.duplicates);
+    EXPECT_EQ(many.mesh.triangles.size(), one.mesh.triangles.size());
+    if (generalPosition) EXPECT_TRUE(triangleSet(many.mesh) == triangleSet(one.mesh));
+  }
+}
+
+TEST(Threads, UniformPointsGiveOneThreadsTriangles) {
+  expectSameAsOneThread(testing::uniformPoints(120000, 3), true);
+}
+
+TEST(Threads, ClusteredPointsGiveOneThreadsTriangles) {
+  expectSameAsOneThread(testing::gaussianClusters(120000, 4), true);
+}
+
+TEST(Threads, LatticeWithCocircularPointsEverywhereIsDelaunay) {
+  expectSameAsOneThread(testing::latticePoints(260), false);
+}
+
+TEST(Threads, DuplicatesNumberedAsOneThreadNumbersThem) {
+  std::vector<double> xy = testing::uniformPoints(60000, 5);
+  const std::vector<double> again = testing::uniformPoints(30000, 5);
+  xy.insert(xy.end(), again.begin(), again.end());  // every point of again is a duplicate
+  std::reverse(xy.begin(), xy.end());               // (y, x) pairs: the repeats come first
+  EXPECT_EQ(triangulateWith(xy, 1).stats.duplicates, 30000u);
+  expectSameAsOneThread(xy, true);
+}
+
+TEST(Threads, RunToRunIdentical) {
+  const std::vector<double> xy = testing::uniformPoints(100000, 6);
+  const Result a = triangulateWith(xy, 4), b = triangulateWith(xy, 4);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.mesh.halfedges, b.mesh.halfedges);
+}
+
+TEST(Threads, SmallBatchStaysOnOneThread) {
+  const std::vector<double> xy = testing::uniformPoints(20000, 7);
+  const Result r = triangulateWith(xy, 4);
+  EXPECT_EQ(r.stats.threads, 1u);
+  EXPECT_EQ(check(xy, r), "");
+}
+
+TEST(Threads, CollinearStripFallsBackToOneThread) {
+  // Half the points on one vertical line: the right strip would be all collinear.
+  std::vector<double> xy = testing::uniformPoints(50000, 8);
+  testing::Random random(9);
+  for (int i = 0; i < 50000; ++i) {
+    xy.push_back(2.0);
+    xy.push_back(static_cast<double>(random.next() % 1000000) / 1e6);
+  }
+  const Result r = triangulateWith(xy, 2);
+  EXPECT_EQ(r.stats.threads, 1u);
+  EXPECT_EQ(check(xy, r), "");
+}
+
+TEST(Threads, AllOnOneVerticalLineFallsBack) {
+  std::vector<double> xy;
+  for (int i = 0; i < 40000; ++i) {
+    xy.push_back(1.0);
+    xy.push_back(i);
+  }
+  xy.push_back(2.0);
+  xy.push_back(0.5);
+  const Result r = triangulateWith(xy, 2);
+  EXPECT_EQ(r.stats.threads, 1u);
+  EXPECT_EQ(check(xy, r), "");
+}
+
+// What comes after the points (more points, constraints) works on the joined triangulation.
+TEST(Threads, ConstraintsAndMorePointsAfterTheStrips) {
+  const std::vector<double> xy = testing::uniformPoints(100000, 10);
+  testing::Random random(11);
+  testing::Polylines lines;
+  for (int i = 0; i < 200; ++i) {
+    std::vector<double> line;
+    for (int k = 0; k < 4; ++k) {
+      line.push_back(static_cast<double>(random.next() % 1000000) / 1e6);
+      line.push_back(static_cast<double>(random.next() % 1000000) / 1e6);
+    }
+    lines.push_back(line);
+  }
+  const std::vector<double> more = testing::uniformPoints(5000, 12);
+  Mesh meshes[2];
+  std::vector<std::uint32_t> ids[2];
+  for (int r = 0; r < 2; ++r) {
+    Options options;
+    options.threads = r == 0 ? 1 : 2;
+    Triangulation t(options);
+    ids[r].resize(xy.size() / 2 + more.size() / 2 + 800);
+    ASSERT_TRUE(t.insertPoints(xy.data(), xy.size() / 2, ids[r].data()).ok());
+    EXPECT_EQ(t.stats().threads, r == 0 ? 1u : 2u);
+    std::vector<PolylineView> views;
+    for (const auto& line : lines) views.push_back({line.data(), line.size() / 2});
+    ASSERT_TRUE(t.insertPolylines(views.data(), views.size(), ids[r].data() + xy.size() / 2).ok());
+    ASSERT_TRUE(
+        t.insertPoints(more.data(), more.size() / 2, ids[r].data() + xy.size() / 2 + 800).ok());
+    MeshOptions mo;
+    mo.segmentSources = true;
+    meshes[r] = t.mesh(mo);
+  }
+  std::vector<double> all = xy;
+  for (const auto& line : lines) all.insert(all.end(), line.begin(), line.end());
+  all.insert(all.end(), more.begin(), more.end());
+  testing::CheckOptions c;
+  c.inputXY = &all;
+  c.inputToVertex = &ids[1];
+  EXPECT_EQ(testing::checkTriangulation(meshes[1], c), "");
+  const std::vector<std::uint32_t> lineIds(ids[1].begin() + xy.size() / 2,
+                                           ids[1].begin() + xy.size() / 2 + 800);
+  EXPECT_EQ(testing::checkConstraints(meshes[1], lines, lineIds), "");
+  EXPECT_EQ(ids[0], ids[1]);
+  EXPECT_TRUE(triangleSet(meshes[0]) == triangleSet(meshes[1]));
+}
+
+}  // namespace
+}  // namespace geocdt
