@@ -20,4 +20,7 @@ void printTargetsTable(const BenchConfig& config);
 // Issue 3's table: constrained triangulation of real and random polylines.
 void printConstrainedTable(const BenchConfig& config);
 
+// Issue 13's table: 1, 2 and 4 threads against each other (wall clock).
+void printThreadsTable(const BenchConfig& config);
+
 }  // namespace bench

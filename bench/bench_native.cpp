@@ -1,6 +1,6 @@
 // The native benchmark: prints markdown tables of geocdt against CGAL.
 // Usage: bench_native [--quick] [--targets] [--dt] [--cdt] [--cpu] [--data DIR]
-//                     [--timeout SECONDS]
+//                     [--threads] [--timeout SECONDS]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -37,10 +37,12 @@ const char* compiler() {
 
 void usage(const char* program) {
   std::printf(
-      "usage: %s [--quick] [--targets] [--dt] [--cdt] [--cpu] [--data DIR] [--timeout SECONDS]\n"
+      "usage: %s [--quick] [--targets] [--dt] [--cdt] [--threads] [--cpu] [--data DIR]\n"
+      "          [--timeout SECONDS]\n"
       "  --targets  issue 9's targets only\n"
       "  --dt       Delaunay tables only\n"
       "  --cdt      constrained table only (all three when none is given)\n"
+      "  --threads  1, 2 and 4 threads against each other (wall clock; only when asked)\n"
       "  --quick    fewer repetitions, no 4M run: checks that everything runs\n"
       "  --cpu      time with the process CPU clock instead of the wall clock (for a\n"
       "             machine shared with other work; the code measured is single-threaded)\n"
@@ -54,7 +56,7 @@ void usage(const char* program) {
 int main(int argc, char** argv) {
   bench::BenchConfig config;
   config.dataDir = GEOCDT_BENCH_DATA_DIR;
-  bool targets = false, delaunay = false, constrained = false;
+  bool targets = false, delaunay = false, constrained = false, threads = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
@@ -65,6 +67,8 @@ int main(int argc, char** argv) {
       delaunay = true;
     } else if (arg == "--cdt") {
       constrained = true;
+    } else if (arg == "--threads") {
+      threads = true;
     } else if (arg == "--cpu") {
       bench::useProcessCpuClock(true);
     } else if (arg == "--data" && i + 1 < argc) {
@@ -76,7 +80,7 @@ int main(int argc, char** argv) {
       return arg == "--help" || arg == "-h" ? 0 : 2;
     }
   }
-  if (!targets && !delaunay && !constrained) targets = delaunay = constrained = true;
+  if (!targets && !delaunay && !constrained && !threads) targets = delaunay = constrained = true;
   if (config.timeoutSeconds <= 0) config.timeoutSeconds = 300;
 
   std::printf(
@@ -88,6 +92,7 @@ int main(int argc, char** argv) {
   if (targets) bench::printTargetsTable(config);
   if (delaunay) bench::printDelaunayTables(config);
   if (constrained) bench::printConstrainedTable(config);
+  if (threads) bench::printThreadsTable(config);
   std::printf("Load average at end: %s.\n", loadAverage().c_str());
   return 0;
 }

@@ -98,7 +98,7 @@ bool geocdtDelaunayThenLate(const std::vector<double>& xy, const std::vector<dou
 
 bool geocdtConstrained(const std::vector<double>& freePoints,
                        const geocdt::testing::PolylineSet& polylines, ConstrainedCalls calls,
-                       Sample& sample, std::string& error) {
+                       Sample& sample, std::string& error, const geocdt::Options& options) {
   std::vector<double> points = freePoints;
   if (calls == ConstrainedCalls::PointsThenPolylines) {
     points.insert(points.end(), polylines.xy.begin(), polylines.xy.end());
@@ -108,7 +108,7 @@ bool geocdtConstrained(const std::vector<double>& freePoints,
   const std::size_t heapBefore = heapInUse();
   resetHeapPeak();
   std::uint64_t start = nowNanos();
-  geocdt::Triangulation triangulation;
+  geocdt::Triangulation triangulation(options);
   geocdt::Status status = triangulation.insertPoints(points.data(), points.size() / 2);
   sample.pointSeconds = secondsSince(start);
   if (!status.ok()) {

@@ -39,6 +39,6 @@ enum class ConstrainedCalls {
 // A constrained triangulation. The result is checked for flipped and zero-area triangles.
 bool geocdtConstrained(const std::vector<double>& freePoints,
                        const geocdt::testing::PolylineSet& polylines, ConstrainedCalls calls,
-                       Sample& sample, std::string& error);
+                       Sample& sample, std::string& error, const geocdt::Options& options = {});
 
 }  // namespace bench

@@ -1,23 +1,26 @@
 // Replaces every form of the global operator new and delete with malloc/free plus a count
 // of the bytes in use. malloc_usable_size gives the size on release, so unsized deletes
-// count right and the count includes the allocator's rounding up. The benchmark is single
-// threaded, so plain counters suffice.
+// count right and the count includes the allocator's rounding up. Atomic counters: geocdt's
+// strips allocate from several threads (Options::threads).
 #include "heap_counter.h"
 
 #include <malloc.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <new>
 
 namespace {
 
-std::size_t inUse = 0;
-std::size_t peak = 0;
+std::atomic<std::size_t> inUse{0};
+std::atomic<std::size_t> peak{0};
 
 void* counted(void* p) {
   if (p) {
-    inUse += malloc_usable_size(p);
-    if (inUse > peak) peak = inUse;
+    const std::size_t now = inUse.fetch_add(malloc_usable_size(p)) + malloc_usable_size(p);
+    std::size_t before = peak.load();
+    while (now > before && !peak.compare_exchange_weak(before, now)) {
+    }
   }
   return p;
 }
@@ -38,7 +41,7 @@ void* allocateAligned(std::size_t size, std::align_val_t align) {
 
 void release(void* p) noexcept {
   if (!p) return;
-  inUse -= malloc_usable_size(p);
+  inUse.fetch_sub(malloc_usable_size(p));
   std::free(p);
 }
 
@@ -47,7 +50,7 @@ void release(void* p) noexcept {
 namespace bench {
 std::size_t heapInUse() { return inUse; }
 std::size_t heapPeak() { return peak; }
-void resetHeapPeak() { peak = inUse; }
+void resetHeapPeak() { peak = inUse.load(); }
 }  // namespace bench
 
 void* operator new(std::size_t n) { return allocate(n); }
