@@ -7,12 +7,13 @@
 
 namespace geocdt::wasm {
 
-Incremental::Incremental(std::uint32_t valuesPerPoint)
-    : valuesPerPoint_(valuesPerPoint), triangulation_(options()) {}
+Incremental::Incremental(std::uint32_t valuesPerPoint, std::uint32_t threads)
+    : valuesPerPoint_(valuesPerPoint), threads_(threads), triangulation_(options()) {}
 
 Options Incremental::options() {
   Options options;
   options.valuesPerPoint = valuesPerPoint_;
+  options.threads = threads_;
   options.progress = relay_.hook();
   return options;
 }

@@ -12,7 +12,8 @@ namespace geocdt::wasm {
 
 class Incremental {
  public:
-  explicit Incremental(std::uint32_t valuesPerPoint);
+  // threads: Options::threads, for the first batch of points.
+  Incremental(std::uint32_t valuesPerPoint, std::uint32_t threads);
   Incremental(const Incremental&) = delete;  // the triangulation's options point at relay_
   Incremental& operator=(const Incremental&) = delete;
 
@@ -50,6 +51,7 @@ class Incremental {
   Options options();
 
   std::uint32_t valuesPerPoint_;
+  std::uint32_t threads_;
   // Declared before the triangulation, whose options point at it.
   ProgressRelay relay_;
   Triangulation triangulation_;

@@ -84,7 +84,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("clear", &Input::clear);
 
   class_<Incremental>("Incremental")
-      .constructor<std::uint32_t>()
+      .constructor<std::uint32_t, std::uint32_t>()
       .function("insertPoints", &Incremental::insertPoints)
       .function("insertPolyline", &Incremental::insertPolyline)
       .function("mesh", &Incremental::mesh)

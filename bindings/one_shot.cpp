@@ -32,14 +32,16 @@ RefineOptions refineOptions(Keep keep, FillRule fill, double minAngle, double ma
 }
 
 bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-                     bool segmentSources, std::uint32_t valuesPerPoint, emscripten::val onProgress,
-                     bool refine, double minAngle, double maxArea, double maxSteinerPoints) {
+                     bool segmentSources, std::uint32_t valuesPerPoint, std::uint32_t threads,
+                     emscripten::val onProgress, bool refine, double minAngle, double maxArea,
+                     double maxSteinerPoints) {
   out.clear();
   ProgressRelay relay;
   const std::size_t points = input.pointCount();
   relay.start(std::move(onProgress), points + input.linePointCount());
   Options options;
   options.valuesPerPoint = valuesPerPoint;
+  options.threads = threads;
   if (relay.active()) options.progress = relay.hook();  // else the core never calls out
   const bool ok = guarded(
       out,

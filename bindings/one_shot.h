@@ -15,11 +15,13 @@ MeshOptions meshOptions(Keep keep, FillRule fill, bool insideFlags, bool segment
 // Triangulates what JS wrote into input (which is freed afterwards). The result, or the
 // failure, lands in out: with region labels when the input has polygons, with
 // valuesPerPoint values per vertex when it has values. onProgress: a JS function (phase,
-// fraction), or undefined. With refine (see refineOptions), the triangulation is refined
+// fraction), or undefined. threads: Options::threads (1 in the single-threaded build, where
+// no thread can start). With refine (see refineOptions), the triangulation is refined
 // before export. Returns whether it succeeded.
 bool triangulateInto(Output& out, Input& input, Keep keep, FillRule fill, bool insideFlags,
-                     bool segmentSources, std::uint32_t valuesPerPoint, emscripten::val onProgress,
-                     bool refine, double minAngle, double maxArea, double maxSteinerPoints);
+                     bool segmentSources, std::uint32_t valuesPerPoint, std::uint32_t threads,
+                     emscripten::val onProgress, bool refine, double minAngle, double maxArea,
+                     double maxSteinerPoints);
 
 // The core's refinement options from what JS checked: maxArea 0 and maxSteinerPoints 0 for
 // none.

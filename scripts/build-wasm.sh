@@ -1,9 +1,12 @@
 #!/bin/sh
-# Builds the WebAssembly module (geocdt.mjs + geocdt.wasm) into web/dist/, the folder that
-# ships in the npm package. Users of the package never need Emscripten; this script does.
+# Builds the WebAssembly modules into web/dist/, the folder that ships in the npm package:
+# geocdt.mjs + geocdt.wasm (one thread), and geocdt-threads.mjs + .wasm + .worker.js (the
+# threaded build, for init({ threads })). Users of the package never need Emscripten; this
+# script does.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="${GEOCDT_WASM_BUILD_DIR:-$root/build-wasm}"
+threads_build="${build}-threads"
 
 if ! command -v emcmake >/dev/null 2>&1; then
   if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
@@ -34,10 +37,22 @@ fi
 
 emcmake cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j2 --target geocdt_wasm
-# The glue and the wasm must come from the same link: copy both, then rename into place.
-cp "$build/bindings/geocdt.mjs" "$root/web/dist/.geocdt.mjs.tmp"
-cp "$build/bindings/geocdt.wasm" "$root/web/dist/.geocdt.wasm.tmp"
-mv "$root/web/dist/.geocdt.wasm.tmp" "$root/web/dist/geocdt.wasm"
-mv "$root/web/dist/.geocdt.mjs.tmp" "$root/web/dist/geocdt.mjs"
+emcmake cmake -S "$root" -B "$threads_build" -DCMAKE_BUILD_TYPE=Release \
+  -DGEOCDT_WASM_THREADS=ON >/dev/null
+# (Emscripten warns that growing shared memory slows JS access to it: the binding reads the
+# heap once per output array.)
+cmake --build "$threads_build" -j2 --target geocdt_wasm 2>&1 | grep -v pthreads-mem-growth >&2
+# A glue and its wasm must come from the same link: copy each set, then rename into place.
+install_files() {
+  for file in "$@"; do cp "$file" "$root/web/dist/.$(basename "$file").tmp"; done
+  for file in "$@"; do
+    mv "$root/web/dist/.$(basename "$file").tmp" "$root/web/dist/$(basename "$file")"
+  done
+}
+install_files "$build/bindings/geocdt.wasm" "$build/bindings/geocdt.mjs"
+install_files "$threads_build/bindings/geocdt-threads.wasm" \
+  "$threads_build/bindings/geocdt-threads.worker.js" "$threads_build/bindings/geocdt-threads.mjs"
 bytes=$(wc -c <"$root/web/dist/geocdt.wasm")
-echo "build-wasm: web/dist/geocdt.mjs and web/dist/geocdt.wasm ($bytes bytes)" >&2
+threaded=$(wc -c <"$root/web/dist/geocdt-threads.wasm")
+echo "build-wasm: web/dist/geocdt.{mjs,wasm} ($bytes bytes)," \
+  "geocdt-threads.{mjs,wasm,worker.js} ($threaded bytes)" >&2

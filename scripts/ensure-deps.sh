@@ -65,10 +65,12 @@ if [ ! -f node_modules/.package-lock.json ] \
   rm -f "$log"
 fi
 
-# The wasm (glue and binary) when either is missing or any source of it is newer: the core,
+# The wasm builds (glue and binary, and the threaded build's worker script) when any is
+# missing or any source of them is newer: the core,
 # the bindings, the CMake files and the build script. Folders count too (a file removed).
 wasm=web/dist/geocdt.wasm
-if [ ! -f "$wasm" ] || [ ! -f web/dist/geocdt.mjs ] \
+if [ ! -f "$wasm" ] || [ ! -f web/dist/geocdt.mjs ] || [ ! -f web/dist/geocdt-threads.wasm ] \
+  || [ ! -f web/dist/geocdt-threads.mjs ] || [ ! -f web/dist/geocdt-threads.worker.js ] \
   || [ -n "$(find cpp bindings CMakeLists.txt scripts/build-wasm.sh -newer "$wasm" | head -n 1)" ]
 then
   echo "ensure-deps: building the wasm (web/dist is missing or older than its sources)" >&2

@@ -27,6 +27,11 @@ function insertOptions(options) {
   return options.onProgress;
 }
 
+// The most threads init() takes; 'auto' takes the cores, at most kAutoThreads.
+export const kMaxThreads = 64;
+export const kAutoThreads = 8;
+
+// instantiate(options) resolves to { wasm, threads }: the module and the threads it may use.
 export function createApi(instantiate) {
   let kernel = null;
   let loading = null;
@@ -40,7 +45,8 @@ export function createApi(instantiate) {
   }
 
   // Loads the wasm once; later calls resolve at once. A failed load can be retried.
-  // options.warmUp: false starts no warm-up worker (web/warm-up.js).
+  // options.warmUp: false starts no warm-up worker (web/warm-up.js). options.threads: a
+  // number of threads or 'auto'; more than 1 loads the threaded build where it can run.
   function init(options) {
     if (kernel !== null) return Promise.resolve();
     const warmUp = options?.warmUp;
@@ -48,8 +54,18 @@ export function createApi(instantiate) {
       return Promise.reject(new TypeError(
         `geocdt: options.warmUp must be a boolean, got ${describe(warmUp)}`));
     }
+    const threads = options?.threads;
+    if (threads !== undefined && threads !== 'auto' && typeof threads !== 'number') {
+      return Promise.reject(new TypeError(
+        `geocdt: options.threads must be a number or 'auto', got ${describe(threads)}`));
+    }
+    if (typeof threads === 'number' && !(Number.isInteger(threads) && threads >= 1
+      && threads <= kMaxThreads)) {
+      return Promise.reject(new RangeError(
+        `geocdt: options.threads must be an integer from 1 to ${kMaxThreads}, got ${threads}`));
+    }
     loading ??= instantiate(options ?? {}).then(
-      (wasm) => { kernel = new Kernel(wasm); },
+      (loaded) => { kernel = new Kernel(loaded.wasm, loaded.threads); },
       (error) => { loading = null; throw error; });
     return loading;
   }

@@ -24,6 +24,7 @@ Options:
   --min-angle <degrees>      refine until every kept triangle has angles at least this
   --max-area <area>          refine until every kept triangle has at most this area
   --max-steiner <count>      stop refining after this many added vertices
+  --threads <n|auto>         threads for the points (default 1; auto: the cores, at most 8)
   --stats                    print statistics to stderr
   --quiet                    no progress (a bar on a terminal, lines otherwise)
   -h, --help                 show this help
@@ -37,7 +38,7 @@ class UsageError extends Error {}
 function parseArgs(argv) {
   const args = {
     input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false,
-    stats: false, quiet: false, refine: null,
+    stats: false, quiet: false, refine: null, threads: 1,
   };
   const refine = (what, text) => {
     args.refine ??= {};
@@ -58,6 +59,7 @@ function parseArgs(argv) {
     else if (a === '--min-angle') refine('minAngle', value(i++, a));
     else if (a === '--max-area') refine('maxArea', value(i++, a));
     else if (a === '--max-steiner') refine('maxSteinerPoints', value(i++, a));
+    else if (a === '--threads') args.threads = value(i++, a);
     else if (a === '--stats') args.stats = true;
     else if (a === '--quiet') args.quiet = true;
     else if (a.startsWith('-') && a !== '-') throw new UsageError(`unknown option ${a}`);
@@ -67,6 +69,13 @@ function parseArgs(argv) {
   if (!args.help && !args.version && args.input === null) throw new UsageError('no input file');
   if (!['all', 'inside'].includes(args.keep)) {
     throw new UsageError(`--keep must be all or inside, not ${args.keep}`);
+  }
+  if (args.threads !== 'auto') {
+    const threads = Number(args.threads);
+    if (!Number.isInteger(threads) || threads < 1 || threads > 64) {
+      throw new UsageError(`--threads must be auto or a number from 1 to 64, not ${args.threads}`);
+    }
+    args.threads = threads;
   }
   if (!['evenodd', 'nonzero'].includes(args.fillRule)) {
     throw new UsageError(`--fill-rule must be evenodd or nonzero, not ${args.fillRule}`);
@@ -140,7 +149,7 @@ async function main(argv) {
   let show = null;
 
   // Loading first lets the warm-up (init()'s worker) run while the input is read and parsed.
-  const loaded = init();
+  const loaded = init({ threads: args.threads });
   loaded.catch(() => {});  // awaited below, after the input is read
   const text = await readInput(args.input);
   let geojson;

@@ -48,7 +48,7 @@ async function instantiate(options) {
   // both cores free (the warm-up would only compete with it, bench/EXPERIMENTS.md), and a
   // caller that loads its data first gets the warm-up meanwhile.
   if (options.warmUp !== false) setTimeout(() => startWarmUp(module), 0);
-  return wasm;
+  return { wasm, threads: 1 };
 }
 
 export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =

@@ -150,6 +150,11 @@ export interface CoreStats {
   refineSkipped: number;
   /** 1 when maxSteinerPoints ended the last refinement, else 0. */
   refineCapped: number;
+  /**
+   * Threads that triangulated the last batch of points: 1 unless init() loaded the threaded
+   * build and the batch was large enough for strips (about 16,000 points a thread).
+   */
+  threads: number;
 }
 
 /** triangulate()'s options. */
@@ -259,6 +264,13 @@ export interface InitOptions {
    * or where workers are unavailable or refused.
    */
   warmUp?: boolean;
+  /**
+   * Threads for large batches of points (default 1): a number from 1 to 64, or 'auto' (the
+   * cores, at most 8). More than 1 loads the threaded build (geocdt-threads.*) in Node; in
+   * browsers the single-threaded build stays for now, and stats.threads says 1. No warm-up
+   * worker runs with the threaded build.
+   */
+  threads?: number | 'auto';
 }
 
 /** Loads the WebAssembly module once; later calls resolve at once. */

@@ -6,7 +6,8 @@ import { readFile } from 'node:fs/promises';
 import { availableParallelism, setPriority } from 'node:os';
 import { Worker } from 'node:worker_threads';
 import createGeocdtModule from './dist/geocdt.mjs';
-import { createApi } from './api.js';
+import { createApi, kAutoThreads } from './api.js';
+import { PthreadWorker } from './pthread-worker.node.js';
 import { instantiateCompiled } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
@@ -56,7 +57,46 @@ function startWarmUp(module) {
   }
 }
 
+// The threaded build, with a pool of threads - 1 workers (the calling thread is the first).
+// Its glue starts the pool's workers as it is created, with the browser's Worker, which
+// stands in only for that moment.
+async function instantiateThreaded(threads) {
+  const glue = new URL('./dist/geocdt-threads.mjs', import.meta.url);
+  const { default: createThreadedModule } = await import(glue.href);
+  const module = await WebAssembly.compile(
+    await readFile(new URL('./dist/geocdt-threads.wasm', import.meta.url)));
+  const pool = [];
+  const had = Object.hasOwn(globalThis, 'Worker');
+  const before = globalThis.Worker;
+  globalThis.Worker = class extends PthreadWorker {
+    constructor(url) {
+      super(url);
+      pool.push(this);
+    }
+  };
+  let ready;
+  try {
+    ready = instantiateCompiled(createThreadedModule, module, {
+      geocdtThreadPool: threads - 1,
+      mainScriptUrlOrBlob: glue.href,
+      // Node's main thread may block; the glue's warning is for a browser's.
+      printErr: (text) => {
+        if (!text.startsWith('Blocking on the main thread')) console.warn(text);
+      },
+    });
+  } finally {
+    if (had) globalThis.Worker = before;
+    else delete globalThis.Worker;
+  }
+  const wasm = await ready;
+  for (const worker of pool) worker.unref();
+  return wasm;
+}
+
 async function instantiate(options) {
+  const threads = options.threads === 'auto'
+    ? Math.min(availableParallelism(), kAutoThreads) : options.threads ?? 1;
+  if (threads > 1) return { wasm: await instantiateThreaded(threads), threads };
   const { wasmUrl } = options;
   const where = wasmUrl === undefined ? new URL('./dist/geocdt.wasm', import.meta.url)
     : typeof wasmUrl === 'string' ? wasmUrl : new URL(wasmUrl.href);
@@ -66,7 +106,7 @@ async function instantiate(options) {
   // both cores free (the warm-up would only compete with it, bench/EXPERIMENTS.md), and a
   // caller that loads its data first gets the warm-up meanwhile.
   if (options.warmUp !== false) setTimeout(() => startWarmUp(module), 0);
-  return wasm;
+  return { wasm, threads: 1 };
 }
 
 export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =

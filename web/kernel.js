@@ -68,8 +68,11 @@ function copyValues(heap, at, values, name) {
 }
 
 export class Kernel {
-  constructor(wasm) {
+  // threads: what the core may use for a large batch of points (1 in the single-threaded
+  // build).
+  constructor(wasm, threads = 1) {
     this.wasm = wasm;
+    this.threads = threads;
     this.output = new wasm.Output();
     this.input = new wasm.Input();
     this.scratch = this.alloc(6 * 8);
@@ -87,6 +90,18 @@ export class Kernel {
     });
   }
 
+  // The memory's current views. In the threaded build a pool thread can grow the memory, and
+  // the glue renews its views only on a thread that grows it: look at the memory itself.
+  heap() {
+    const memory = this.wasm.wasmMemory;
+    if (memory !== undefined && this.wasm.HEAPU8.buffer !== memory.buffer) {
+      this.wasm.HEAPU8 = new Uint8Array(memory.buffer);
+      this.wasm.HEAPU32 = new Uint32Array(memory.buffer);
+      this.wasm.HEAPF64 = new Float64Array(memory.buffer);
+    }
+    return this.wasm;
+  }
+
   // A byte address in the heap; pointers past 2 GB come back negative from the export.
   alloc(bytes) {
     const address = this.wasm._malloc(Math.max(bytes, 8)) >>> 0;
@@ -96,7 +111,7 @@ export class Kernel {
 
   memory() {
     return {
-      heapBytes: this.wasm.HEAPU8.length,
+      heapBytes: this.heap().HEAPU8.length,
       allocatedBytes: this.wasm.allocatedBytes(),
       peakBytes: this.wasm.peakBytes(),
     };
@@ -133,8 +148,7 @@ export class Kernel {
         + 4 * (lines.count + 1 + polygonCount + 1);
       throw outOfMemoryError(`the input alone needs ${bytes} bytes`);
     }
-    const f64 = this.wasm.HEAPF64;
-    const u32 = this.wasm.HEAPU32;
+    const { HEAPF64: f64, HEAPU32: u32 } = this.heap();
     copyCoordinates(f64, input.pointsAddress() / 8, points, 'points');
     if (polygons !== undefined) {
       copyOffsets(u32, input.polygonOffsetsAddress() / 4, polygons, polygonsName);
@@ -187,7 +201,7 @@ export class Kernel {
     const n = o.size(id);
     if (n === 0) return new Type(0);
     const start = o.data(id) / Type.BYTES_PER_ELEMENT;
-    return new Type(this.wasm.HEAPU8.buffer).slice(start, start + n);
+    return new Type(this.heap().HEAPU8.buffer).slice(start, start + n);
   }
 
   // Without constraints every flag is 0: a fresh zeroed array costs no copy and, until it is
@@ -345,8 +359,8 @@ export class Kernel {
       this.writeInput(checked);
       const started = now();
       ok = this.wasm.triangulateInto(this.output, this.input, o.keep, o.fill, o.insideFlags,
-        o.segmentSources, valuesPerPoint, progress.callback, r.refine, r.minAngle, r.maxArea,
-        r.maxSteinerPoints);
+        o.segmentSources, valuesPerPoint, this.threads, progress.callback, r.refine, r.minAngle,
+        r.maxArea, r.maxSteinerPoints);
       coreMilliseconds = now() - started;
     } finally {
       this.input.clear();
@@ -369,7 +383,7 @@ export class Kernel {
   }
 
   createIncremental(valuesPerPoint) {
-    return new this.wasm.Incremental(valuesPerPoint);
+    return new this.wasm.Incremental(valuesPerPoint, this.threads);
   }
 
   // Inserts checked coordinates, with checked values or undefined, into an Incremental;
@@ -487,7 +501,7 @@ export class Kernel {
   locate(incremental, x, y) {
     incremental.locate(x, y, this.scratch);
     const at = this.scratch / 8;
-    const slots = this.wasm.HEAPF64.subarray(at, at + 6);
+    const slots = this.heap().HEAPF64.subarray(at, at + 6);
     return {
       kind: this.locationKinds[slots[0]],
       triangle: slots[1],

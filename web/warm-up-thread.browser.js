@@ -7,7 +7,9 @@ import { instantiateCompiled, runWarmUp } from './warm-up.js';
 
 self.addEventListener('message', async ({ data }) => {
   try {
-    const api = createApi(() => instantiateCompiled(createGeocdtModule, data.module));
+    const api = createApi(async () => ({
+      wasm: await instantiateCompiled(createGeocdtModule, data.module), threads: 1,
+    }));
     await api.init({ warmUp: false });
     self.postMessage({ triangles: runWarmUp(api.triangulate) });
   } finally {

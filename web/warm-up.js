@@ -5,14 +5,15 @@
 
 // The glue's instantiateWasm hook, instantiating an already compiled module. Resolves to the
 // ready module, or rejects with the error of instantiating it (the glue would only log it).
-export function instantiateCompiled(createModule, module) {
+// settings: more properties of the module object (the threaded build's pool).
+export function instantiateCompiled(createModule, module, settings = {}) {
   return new Promise((resolve, reject) => {
     const instantiateWasm = (imports, receive) => {
       WebAssembly.instantiate(module, imports).then((instance) => receive(instance, module))
         .catch(reject);
       return {};
     };
-    createModule({ instantiateWasm }).then(resolve, reject);
+    createModule({ ...settings, instantiateWasm }).then(resolve, reject);
   });
 }
 

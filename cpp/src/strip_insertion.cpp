@@ -30,16 +30,28 @@
 
 namespace geocdt {
 
-namespace {
-
 // Below this many points a strip costs more in threads and seams than it saves.
 constexpr std::uint32_t kMinStripPoints = 16384;
 
+bool Delaunay::wantsStrips(std::uint32_t count) const {
+#ifdef GEOCDT_THREADS
+  return options_.threads > 1 && count / kMinStripPoints >= 2 && !built_ && pending_.empty() &&
+         firstSlot_ < 0 && !constrained() && options_.start == LocateStart::LastTriangle;
+#else
+  (void)count;
+  return false;  // a build without threads
+#endif
+}
+
+#ifdef GEOCDT_THREADS
+namespace {
+
 // Runs job(i) for i in [0, n): job(0) on the calling thread, the others on threads of their
-// own, or on the calling thread too where no thread can be started (a build without them).
-// An exception in a job is caught there and rethrown here once all have ended.
+// own, or on the calling thread too where no thread can be started (a build without them, a
+// pool of workers used up). An exception in a job is caught there and rethrown here once all
+// have ended. Returns the threads that ran the jobs, the calling one included.
 template <typename Job>
-void inParallel(std::uint32_t n, Job job) {
+std::uint32_t inParallel(std::uint32_t n, Job job) {
   std::vector<std::exception_ptr> failed(n);
   const auto run = [&](std::uint32_t i) {
     try {
@@ -62,6 +74,7 @@ void inParallel(std::uint32_t n, Job job) {
   for (std::thread& t : threads) t.join();
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
+  return static_cast<std::uint32_t>(threads.size()) + 1;
 }
 
 // The x values that cut count points into k strips of about equal size: strip s holds the
@@ -315,11 +328,6 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
 
 }  // namespace
 
-bool Delaunay::wantsStrips(std::uint32_t count) const {
-  return options_.threads > 1 && count / kMinStripPoints >= 2 && !built_ && pending_.empty() &&
-         firstSlot_ < 0 && !constrained() && options_.start == LocateStart::LastTriangle;
-}
-
 Status Delaunay::insertStrip(const std::uint32_t* order, std::uint32_t count, std::uint32_t* ids) {
   runSlots_ = firstSlot_;
   batch_ = {0, ids, nullptr};
@@ -409,7 +417,7 @@ Status Delaunay::insertInStrips(std::uint32_t count, std::uint32_t* ids, bool& h
   std::vector<Status> status(k);
   std::vector<std::int32_t> used(k), ghost(k, -1);
   std::vector<Stats> workerStats(k);
-  inParallel(k, [&](std::uint32_t s) {
+  const std::uint32_t running = inParallel(k, [&](std::uint32_t s) {
     Delaunay worker(workerOptions, *this, first[s]);
     status[s] =
         worker.insertStrip(strip[s].data(), static_cast<std::uint32_t>(strip[s].size()), ids);
@@ -453,7 +461,7 @@ Status Delaunay::insertInStrips(std::uint32_t count, std::uint32_t* ids, bool& h
   const Status joined = joinStrips(*this, options_, seams, slots, stats);
   if (!joined.ok()) return joined;
   built_ = true;
-  stats.threads = k;
+  stats.threads = running;
 
   // The batch's end, as insertStored's for a large batch.
   if (stats.duplicates != 0) {
@@ -473,5 +481,18 @@ Status Delaunay::insertInStrips(std::uint32_t count, std::uint32_t* ids, bool& h
   options_.progress(Phase::Points, count, count);
   return Status::success();
 }
+
+#else
+
+Status Delaunay::insertStrip(const std::uint32_t*, std::uint32_t, std::uint32_t*) {
+  return {StatusCode::InternalError, "a build without threads has no strips"};
+}
+
+Status Delaunay::insertInStrips(std::uint32_t, std::uint32_t*, bool& handled) {
+  handled = false;
+  return Status::success();
+}
+
+#endif  // GEOCDT_THREADS
 
 }  // namespace geocdt

@@ -63,7 +63,7 @@ void expectSameAsOneThread(const std::vector<double>& xy, bool generalPosition) 
   for (const std::uint32_t threads : {2u, 3u, 4u}) {
     SCOPED_TRACE(threads);
     const Result many = triangulateWith(xy, threads);
-    EXPECT_EQ(many.stats.threads, threads);
+    EXPECT_EQ(many.stats.threads, threads);  // each strip on a thread of its own
     EXPECT_EQ(check(xy, many), "");
     EXPECT_EQ(many.ids, one.ids);
     EXPECT_EQ(many.mesh.points, one.mesh.points);

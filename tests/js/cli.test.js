@@ -94,6 +94,23 @@ test('--stats and progress for a big input go to stderr', () => {
   assert.ok(JSON.parse(readFileSync(out, 'utf8')).features.length > 490_000);
 });
 
+test('--threads: the points on two threads, the same triangles', () => {
+  const file = multiPointFile(100_000);
+  const outs = ['1', '2'].map((threads) => {
+    const out = join(dir, `threads-${threads}.geojson`);
+    const p = run([file, '-o', out, '--threads', threads, '--stats', '--quiet']);
+    assert.equal(p.status, 0, p.stderr);
+    assert.match(p.stderr, new RegExp(`threads\\s+${threads}\\b`));
+    return readFileSync(out, 'utf8');
+  });
+  const corners = (text) => JSON.parse(text).features
+    .map((f) => JSON.stringify(f.geometry.coordinates[0].slice(0, 3).sort())).sort();
+  assert.deepEqual(corners(outs[1]), corners(outs[0]));
+  const bad = run([file, '--threads', '0']);
+  assert.notEqual(bad.status, 0);
+  assert.match(bad.stderr, /--threads must be auto or a number from 1 to 64, not 0/);
+});
+
 test('--keep inside with polygons', () => {
   const out = join(dir, 'inside.geojson');
   const p = run([fixture, '-o', out, '--keep', 'inside', '--inside-flags']);

@@ -31,8 +31,9 @@ test('npm pack ships the wasm and the sources, nothing else', () => {
     JSON.parse(npm(['pack', '--json', '--pack-destination', dir], root));
   const paths = files.map((f) => f.path);
   for (const needed of ['package.json', 'web/dist/geocdt.wasm', 'web/dist/geocdt.mjs',
-    'web/index.node.js', 'web/index.browser.js', 'web/index.d.ts', 'web/worker.d.ts',
-    'web/cli.js']) {
+    'web/dist/geocdt-threads.wasm', 'web/dist/geocdt-threads.mjs',
+    'web/dist/geocdt-threads.worker.js', 'web/pthread-worker.node.js', 'web/index.node.js',
+    'web/index.browser.js', 'web/index.d.ts', 'web/worker.d.ts', 'web/cli.js']) {
     assert.ok(paths.includes(needed), `${needed} is in the tarball`);
   }
   assert.ok(paths.includes('LICENSE'), 'the licence text is in the tarball');
@@ -59,6 +60,13 @@ test('the installed package runs in Node, worker and CLI included', () => {
   assert.deepEqual(out, { triangles: 4, features: 1, workerTriangles: 4 });
   const bin = join(app, 'node_modules/.bin/geocdt');
   assert.match(execFileSync(bin, ['--help'], { encoding: 'utf8' }), /Usage: geocdt/);
+  // The threaded build, from the installed files; the process ends by itself.
+  const threads = execFileSync(process.execPath, ['--input-type=module', '-e', `
+    import { init, triangulate } from 'geocdt';
+    await init({ threads: 2 });
+    const points = new Float64Array(2 * 100000).map((_, i) => (Math.sin(i) * 43758.5453) % 1);
+    console.log(triangulate({ points }).stats.threads);`], { cwd: app, encoding: 'utf8' });
+  assert.equal(threads.trim(), '2');
 });
 
 const MIME = {

@@ -242,7 +242,7 @@ struct Stats {
   std::uint64_t refineSkipped = 0;
   bool refineCapped = false;
   // Threads that triangulated the last batch of points (1 when it ran on one thread).
-  std::uint32_t threads = 1;
+  std::uint64_t threads = 1;
 };
 
 // One Triangulation serves one thread at a time. Its const functions leave the mesh as it
