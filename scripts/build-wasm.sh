@@ -42,6 +42,18 @@ emcmake cmake -S "$root" -B "$threads_build" -DCMAKE_BUILD_TYPE=Release \
 # (Emscripten warns that growing shared memory slows JS access to it: the binding reads the
 # heap once per output array.)
 cmake --build "$threads_build" -j2 --target geocdt_wasm 2>&1 | grep -v pthreads-mem-growth >&2
+# The threaded glue starts its pool with new Worker(new URL("geocdt-threads.worker.js",
+# import.meta.url)). Bundlers take that form as a worker to bundle, and Vite's default
+# worker format cannot bundle one that imports the glue back (every Vite app using geocdt
+# would fail to build). Written as new Worker((0, new URL(...))), the script is an asset
+# copied as it is, as the glue expects; the build stops if the form ever changes.
+glue="$threads_build/bindings/geocdt-threads.mjs"
+pool='new Worker(new URL("geocdt-threads.worker.js",import.meta.url))'
+if ! grep -qF "$pool" "$glue" && ! grep -qF 'new Worker((0,new URL(' "$glue"; then
+  echo "build-wasm: the threaded glue no longer starts its workers as expected: $pool" >&2
+  exit 1
+fi
+sed -i 's|new Worker(new URL("geocdt-threads.worker.js",import.meta.url))|new Worker((0,new URL("geocdt-threads.worker.js",import.meta.url)))|' "$glue"
 # A glue and its wasm must come from the same link: copy each set, then rename into place.
 install_files() {
   for file in "$@"; do cp "$file" "$root/web/dist/.$(basename "$file").tmp"; done

@@ -1,7 +1,7 @@
 // The browser and web-worker entry. The wasm is fetched from beside this file; bundlers see
 // the `new URL(..., import.meta.url)` and ship it (and the warm-up's worker) as assets.
 import createGeocdtModule from './dist/geocdt.mjs';
-import { createApi } from './api.js';
+import { createApi, kAutoThreads } from './api.js';
 import { instantiateCompiled } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
@@ -26,12 +26,13 @@ function startWarmUp(module) {
 }
 
 // Compiles while the bytes arrive where the server sends application/wasm; otherwise (or
-// when the bytes are given) from the whole buffer.
-async function compile(options) {
-  if (options.wasmBinary) return WebAssembly.compile(options.wasmBinary);
+// when the bytes are given) from the whole buffer. threaded: the threaded build's bytes.
+async function compile(options, threaded) {
+  if (options.wasmBinary && !threaded) return WebAssembly.compile(options.wasmBinary);
   const { wasmUrl } = options;
-  const url = wasmUrl === undefined ? new URL('./dist/geocdt.wasm', import.meta.url).href
-    : typeof wasmUrl === 'string' ? wasmUrl : wasmUrl.href;
+  const url = threaded ? new URL('./dist/geocdt-threads.wasm', import.meta.url).href
+    : wasmUrl === undefined ? new URL('./dist/geocdt.wasm', import.meta.url).href
+      : typeof wasmUrl === 'string' ? wasmUrl : wasmUrl.href;
   const response = await fetch(url, { credentials: 'same-origin' });
   if (!response.ok) throw new Error(`geocdt: could not fetch ${url}: HTTP ${response.status}`);
   const wasm = response.headers.get('Content-Type')?.startsWith('application/wasm');
@@ -41,8 +42,50 @@ async function compile(options) {
   return WebAssembly.compile(await response.arrayBuffer());
 }
 
+// Shared memory needs a cross-origin isolated page (served with COOP: same-origin and COEP:
+// require-corp); a worker of such a page is one too.
+const canShareMemory = () => globalThis.crossOriginIsolated === true
+  && typeof SharedArrayBuffer === 'function';
+
+// The threaded build, with a pool of threads - 1 workers started now (the calling thread is
+// the first). In a page's main thread a call then blocks it while the pool works, as any call
+// does: a worker (geocdt/worker) keeps the page responsive.
+// The glue, its worker script and the wasm are referenced by URL only, so that bundlers copy
+// them as they are (assets) rather than bundle them: a dynamic import() of the glue would make
+// every bundle of this entry a code-splitting one, which a worker bundle in Vite's default
+// format cannot be. The pool's workers get their script from locateFile(), as a blob: URL of
+// this page's origin: a bundler may inline the small script as a data: URL, whose worker has
+// no origin and may not import the glue.
+async function poolScript() {
+  const script = new URL('./dist/geocdt-threads.worker.js', import.meta.url).href;
+  const response = await fetch(script, { credentials: 'same-origin' });
+  if (!response.ok) throw new Error(`geocdt: could not fetch ${script}: HTTP ${response.status}`);
+  return URL.createObjectURL(new Blob([await response.text()], { type: 'text/javascript' }));
+}
+
+async function instantiateThreaded(options, threads) {
+  const glue = new URL('./dist/geocdt-threads.mjs', import.meta.url).href;
+  const [{ default: createThreadedModule }, module, script] = await Promise.all([
+    import(/* @vite-ignore */ /* webpackIgnore: true */ glue), compile(options, true),
+    poolScript()]);
+  return instantiateCompiled(createThreadedModule, module, {
+    geocdtThreadPool: threads - 1,
+    mainScriptUrlOrBlob: glue,
+    locateFile: (path) => (path.endsWith('.worker.js') ? script : new URL(path, glue).href),
+    printErr: (text) => {
+      if (!text.startsWith('Blocking on the main thread')) console.warn(text);
+    },
+  });
+}
+
 async function instantiate(options) {
-  const module = await compile(options);
+  const threads = options.threads === 'auto'
+    ? Math.min(globalThis.navigator?.hardwareConcurrency ?? 1, kAutoThreads)
+    : options.threads ?? 1;
+  if (threads > 1 && canShareMemory()) {
+    return { wasm: await instantiateThreaded(options, threads), threads };
+  }
+  const module = await compile(options, false);
   const wasm = await instantiateCompiled(createGeocdtModule, module);
   // After the code that awaits init() has run to its first wait: a call made at once finds
   // both cores free (the warm-up would only compete with it, bench/EXPERIMENTS.md), and a

@@ -266,9 +266,10 @@ export interface InitOptions {
   warmUp?: boolean;
   /**
    * Threads for large batches of points (default 1): a number from 1 to 64, or 'auto' (the
-   * cores, at most 8). More than 1 loads the threaded build (geocdt-threads.*) in Node; in
-   * browsers the single-threaded build stays for now, and stats.threads says 1. No warm-up
-   * worker runs with the threaded build.
+   * cores, at most 8). More than 1 loads the threaded build (geocdt-threads.*) in Node, and in
+   * browsers on a cross-origin isolated page (COOP same-origin, COEP require-corp); elsewhere
+   * the single-threaded build, and stats.threads says 1. No warm-up worker runs with the
+   * threaded build.
    */
   threads?: number | 'auto';
 }

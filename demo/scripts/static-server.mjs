@@ -31,6 +31,10 @@ export function serveDirectory(root, { port = 0, host = '127.0.0.1' } = {}) {
         'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream',
         'Content-Length': info.size,
         'Cache-Control': 'no-cache',
+        // Cross-origin isolation: shared memory, hence geocdt's threaded build. Everything the
+        // demo loads is served from here.
+        'Cross-Origin-Opener-Policy': 'same-origin',
+        'Cross-Origin-Embedder-Policy': 'require-corp',
       });
       if (request.method === 'HEAD') return response.end();
       createReadStream(file).pipe(response);

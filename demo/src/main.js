@@ -219,6 +219,7 @@ function showStats(s) {
   $('stat-points').textContent = format(s.inputPoints);
   $('stat-constraints').textContent = format(s.constraints);
   $('stat-crossings').textContent = format(s.crossings);
+  $('stat-threads').textContent = format(s.threads);
   $('stat-vertices').textContent = format(s.vertices);
   $('stat-triangles').textContent = format(s.triangles);
   $('stat-inside').textContent = format(s.insideTriangles);

@@ -45,7 +45,9 @@ self.onmessage = async ({ data: request }) => {
 
 async function loadWasm() {
   try {
-    await init();
+    // Every core (at most 8) where the page is cross-origin isolated (the demo's server makes
+    // it so); one thread elsewhere.
+    await init({ threads: 'auto' });
   } catch (e) {
     throw new Error(`could not load geocdt's WebAssembly module (${e.message})`, { cause: e });
   }
@@ -204,6 +206,7 @@ function reply(result, triangulateMs, loadMs, bounds) {
     vertices: result.points.length / 2,
     constraints,
     crossings: result.stats.crossings,
+    threads: result.stats.threads,
     triangles: result.triangles.length / 3,
     insideTriangles: mesh.insideTriangles,
     loadMs,

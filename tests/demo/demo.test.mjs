@@ -118,6 +118,11 @@ test('the bundled Natural Earth dataset is triangulated and drawn', async () => 
   assert.ok(s.vertices > 0 && s.vertices <= s.points + s.crossings, `vertices: ${s.vertices}`);
   assert.ok(s.triangulateMs > 0 && s.totalMs >= s.triangulateMs);
   assert.match(s.renderer, /^WebGL/);
+  // The server isolates the page: the worker loads the threaded build, and the points of the
+  // dataset (over 100,000) go in strips on every core.
+  assert.equal(await page.evaluate(() => globalThis.crossOriginIsolated), true);
+  const cores = await page.evaluate(() => navigator.hardwareConcurrency);
+  assert.equal(s.raw.threads, Math.min(cores, 8), `threads: ${s.raw.threads}`);
   assert.deepEqual(consoleErrors, []);
   await page.screenshot({ path: join(OUTPUT, 'demo-world-50m.png') });
 });

@@ -76,7 +76,8 @@ const MIME = {
   '.wasm': 'application/wasm',
 };
 
-function serve(folder) {
+// headers: more response headers (cross-origin isolation).
+function serve(folder, headers = {}) {
   const server = createServer((req, res) => {
     const pathname = new URL(req.url, 'http://localhost').pathname;
     const path = join(folder, pathname.replace(/\/$/, '/index.html'));
@@ -84,7 +85,8 @@ function serve(folder) {
       res.writeHead(404).end();
       return;
     }
-    res.writeHead(200, { 'content-type': MIME[extname(path)] ?? 'application/octet-stream' });
+    res.writeHead(200,
+      { 'content-type': MIME[extname(path)] ?? 'application/octet-stream', ...headers });
     res.end(readFileSync(path));
   });
   return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
@@ -146,6 +148,47 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
     }, [warmUp, wasm]);
     await init({ warmUp: false });
     assert.equal(triangles, runWarmUp(triangulate));
+  } finally {
+    await browser.close();
+    server.close();
+  }
+});
+
+test('the threaded build in Chromium, on a cross-origin isolated page', async () => {
+  assert.ok(installed);
+  const app = join(dir, 'app', 'threads');  // under the app: its node_modules resolve
+  execFileSync('mkdir', ['-p', app]);
+  for (const f of ['index.html', 'main.js']) {
+    copyFileSync(join(here, 'threads', f), join(app, f));
+  }
+  const { build } = await import('vite');
+  await build({ root: app, logLevel: 'error', resolve: { preserveSymlinks: true },
+    build: { outDir: join(app, 'dist'), target: 'es2022' } });
+  const server = await serve(join(app, 'dist'), {
+    'cross-origin-opener-policy': 'same-origin', 'cross-origin-embedder-policy': 'require-corp',
+  });
+  const { chromium } = await import('playwright-core');
+  const browser = await chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
+  });
+  try {
+    const page = await browser.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    const logged = [];  // (a 404 for the favicon among them)
+    page.on('console', (m) => m.type() === 'error' && logged.push(m.text()));
+    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    await page.waitForFunction(
+      () => document.getElementById('result').textContent !== 'running', null,
+      { timeout: 60_000 }).catch((e) => assert.fail(`${e.message}: ${errors} ${logged}`));
+    const text = await page.textContent('#result');
+    assert.deepEqual(errors, []);
+    const result = JSON.parse(text.startsWith('{') ? text : JSON.stringify({ error: text }));
+    assert.equal(result.error, undefined, text);
+    assert.equal(result.isolated, true);
+    assert.equal(result.threads, 2, text);
+    assert.ok(result.triangles > 2 * result.vertices - 100, text);
   } finally {
     await browser.close();
     server.close();
