@@ -97,12 +97,23 @@ std::vector<double> stripCuts(const double* xy, std::uint32_t count, std::uint32
 }
 
 // Whether the circumcircle of a, b, c (counter-clockwise) lies in lo <= x < hi, with room
-// for every rounding error of its computation: when in doubt, no.
+// for every rounding error of its computation: when in doubt, no. The sides are scaled by a
+// power of two (exactly) to about 1 first, so that their squares neither overflow nor
+// underflow at the ends of the coordinate range.
 bool circleInSlab(const double* p, std::uint32_t a, std::uint32_t b, std::uint32_t c, double lo,
                   double hi) {
   const double ax = p[2 * a], ay = p[2 * a + 1];
-  const double bx = p[2 * b] - ax, by = p[2 * b + 1] - ay;
-  const double cx = p[2 * c] - ax, cy = p[2 * c + 1] - ay;
+  double bx = p[2 * b] - ax, by = p[2 * b + 1] - ay;
+  double cx = p[2 * c] - ax, cy = p[2 * c + 1] - ay;
+  const double longest =
+      std::max(std::max(std::fabs(bx), std::fabs(by)), std::max(std::fabs(cx), std::fabs(cy)));
+  if (!(longest > 0) || !std::isfinite(longest)) return false;
+  int exponent = 0;
+  std::frexp(longest, &exponent);
+  bx = std::ldexp(bx, -exponent);
+  by = std::ldexp(by, -exponent);
+  cx = std::ldexp(cx, -exponent);
+  cy = std::ldexp(cy, -exponent);
   const double bb = bx * bx + by * by, cc = cx * cx + cy * cy;
   const double cross = std::fabs(bx * cy) + std::fabs(by * cx);
   const double d = 2 * (bx * cy - by * cx);
@@ -110,14 +121,16 @@ bool circleInSlab(const double* p, std::uint32_t a, std::uint32_t b, std::uint32
   const double ux = (cy * bb - by * cc) / d, uy = (bx * cc - cx * bb) / d;
   const double r = std::sqrt(ux * ux + uy * uy);
   // Each quantity above carries a relative error of a few units of 2^-53 of its terms'
-  // magnitudes; the sum below bounds the centre's and the radius's errors with a wide margin.
+  // magnitudes; the sum below bounds the centre's and the radius's errors with a wide margin
+  // (the translation by a included, through |ax| and the sides' rounding).
   const double magnitude =
       ((std::fabs(cy) + std::fabs(cx)) * bb + (std::fabs(by) + std::fabs(bx)) * cc) / std::fabs(d) +
-      (std::fabs(ux) + std::fabs(uy)) * 2 * cross / std::fabs(d) + std::fabs(ax) + std::fabs(ux) +
-      std::fabs(uy) + r;
-  const double error = 64 * std::numeric_limits<double>::epsilon() * magnitude;
-  const double centre = ax + ux;
-  return centre - r - error >= lo && centre + r + error < hi;
+      (std::fabs(ux) + std::fabs(uy)) * 2 * cross / std::fabs(d) + std::fabs(ux) + std::fabs(uy) +
+      r + 1;
+  const double error = 64 * std::numeric_limits<double>::epsilon() *
+                       (std::ldexp(magnitude, exponent) + std::fabs(ax));
+  const double centre = ax + std::ldexp(ux, exponent), radius = std::ldexp(r, exponent);
+  return centre - radius - error >= lo && centre + radius + error < hi;
 }
 
 // A strip's share of the join, found on its own thread.

@@ -63,7 +63,8 @@ void expectSameAsOneThread(const std::vector<double>& xy, bool generalPosition) 
   for (const std::uint32_t threads : {2u, 3u, 4u}) {
     SCOPED_TRACE(threads);
     const Result many = triangulateWith(xy, threads);
-    EXPECT_EQ(many.stats.threads, threads);  // each strip on a thread of its own
+    // A strip on each thread asked for, as far as the points go (16,384 at least a strip).
+    EXPECT_EQ(many.stats.threads, std::min<std::size_t>(threads, xy.size() / 2 / 16384));
     EXPECT_EQ(check(xy, many), "");
     EXPECT_EQ(many.ids, one.ids);
     EXPECT_EQ(many.mesh.points, one.mesh.points);
@@ -84,6 +85,19 @@ TEST(Threads, ClusteredPointsGiveOneThreadsTriangles) {
 
 TEST(Threads, LatticeWithCocircularPointsEverywhereIsDelaunay) {
   expectSameAsOneThread(testing::latticePoints(260), false);
+}
+
+TEST(Threads, PointsOnOneCircleAreDelaunay) {
+  expectSameAsOneThread(testing::circlePoints(70000), false);
+}
+
+// Circumcircles computed in doubles overflow or underflow at the extremes of the coordinate
+// range: the join must then keep nothing it is unsure of, and still be right.
+TEST(Threads, TinyAndHugeCoordinates) {
+  const std::vector<double> xy = testing::uniformPoints(40000, 13);
+  expectSameAsOneThread(testing::transformed(xy, 1e-200, 0, 0), true);
+  expectSameAsOneThread(testing::transformed(xy, 1e140, -3e139, 1e139), true);
+  expectSameAsOneThread(testing::transformed(xy, 1e-3, 1e6, -2e6), true);
 }
 
 TEST(Threads, DuplicatesNumberedAsOneThreadNumbersThem) {
