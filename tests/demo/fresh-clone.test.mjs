@@ -73,14 +73,22 @@ test('npm run demo, first thing in a fresh clone, serves the page and the wasm',
   assert.equal(page.status, 200);
   assert.match(page.headers.get('content-type'), /^text\/html/);
   assert.match(await page.text(), /<main id="map">/);
+  // Cross-origin isolated, for the threaded build.
+  assert.equal(page.headers.get('cross-origin-opener-policy'), 'same-origin');
+  assert.equal(page.headers.get('cross-origin-embedder-policy'), 'require-corp');
 
+  // Both modules the clone built from its own sources (one thread, threads), served as built.
   const wasmFiles = readdirSync(join(dir, 'demo/dist/assets')).filter((f) => f.endsWith('.wasm'));
-  assert.equal(wasmFiles.length, 1, `the demo's wasm assets: ${wasmFiles}`);
-  const wasm = await fetch(new URL(`assets/${wasmFiles[0]}`, url));
-  assert.equal(wasm.status, 200);
-  assert.equal(wasm.headers.get('content-type'), 'application/wasm');
-  const bytes = new Uint8Array(await wasm.arrayBuffer());
-  assert.ok(WebAssembly.validate(bytes), 'the served wasm is a valid module');
-  // The module the clone built from its own sources, served as it was built.
-  assert.deepEqual(bytes, new Uint8Array(readFileSync(join(dir, 'web/dist/geocdt.wasm'))));
+  assert.equal(wasmFiles.length, 2, `the demo's wasm assets: ${wasmFiles}`);
+  for (const built of ['geocdt', 'geocdt-threads']) {
+    const file = wasmFiles.find((f) => f.startsWith(`${built}-`) && !f.slice(built.length + 1)
+      .startsWith('threads'));
+    assert.ok(file, `${built}.wasm among ${wasmFiles}`);
+    const wasm = await fetch(new URL(`assets/${file}`, url));
+    assert.equal(wasm.status, 200);
+    assert.equal(wasm.headers.get('content-type'), 'application/wasm');
+    const bytes = new Uint8Array(await wasm.arrayBuffer());
+    assert.ok(WebAssembly.validate(bytes), `${file} is a valid module`);
+    assert.deepEqual(bytes, new Uint8Array(readFileSync(join(dir, `web/dist/${built}.wasm`))));
+  }
 });
