@@ -4,7 +4,7 @@ import { Kernel } from './kernel.js';
 import { GeocdtError } from './errors.js';
 import {
   checkCoordinates, checkInput, checkOffsets, checkRaster, checkValues, checkValuesPerPoint,
-  describe,
+  describe, threadsError,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 
@@ -27,8 +27,7 @@ function insertOptions(options) {
   return options.onProgress;
 }
 
-// The most threads init() takes; 'auto' takes the cores, at most kAutoThreads.
-export const kMaxThreads = 64;
+// 'auto' threads: the cores, at most this many.
 export const kAutoThreads = 8;
 
 // instantiate(options) resolves to { wasm, threads }: the module and the threads it may use.
@@ -54,16 +53,8 @@ export function createApi(instantiate) {
       return Promise.reject(new TypeError(
         `geocdt: options.warmUp must be a boolean, got ${describe(warmUp)}`));
     }
-    const threads = options?.threads;
-    if (threads !== undefined && threads !== 'auto' && typeof threads !== 'number') {
-      return Promise.reject(new TypeError(
-        `geocdt: options.threads must be a number or 'auto', got ${describe(threads)}`));
-    }
-    if (typeof threads === 'number' && !(Number.isInteger(threads) && threads >= 1
-      && threads <= kMaxThreads)) {
-      return Promise.reject(new RangeError(
-        `geocdt: options.threads must be an integer from 1 to ${kMaxThreads}, got ${threads}`));
-    }
+    const wrongThreads = threadsError(options?.threads);
+    if (wrongThreads) return Promise.reject(wrongThreads);
     loading ??= instantiate(options ?? {}).then(
       (loaded) => { kernel = new Kernel(loaded.wasm, loaded.threads); },
       (error) => { loading = null; throw error; });

@@ -192,3 +192,21 @@ export function offsetError({ offsets, points }, i) {
   else why = `the last offset must be the number of points in polylines.coords (${points})`;
   return new RangeError(`geocdt: polylines.offsets[${i}] is ${v}: ${why}`);
 }
+
+// The most threads init() and createWorker() take.
+export const kMaxThreads = 64;
+
+// The error for a threads option that is neither 'auto' nor an integer from 1 to kMaxThreads,
+// or null when it is right (or absent).
+export function threadsError(threads) {
+  if (threads !== undefined && threads !== 'auto' && typeof threads !== 'number') {
+    return new TypeError(
+      `geocdt: options.threads must be a number or 'auto', got ${describe(threads)}`);
+  }
+  if (typeof threads === 'number' && !(Number.isInteger(threads) && threads >= 1
+    && threads <= kMaxThreads)) {
+    return new RangeError(
+      `geocdt: options.threads must be an integer from 1 to ${kMaxThreads}, got ${threads}`);
+  }
+  return null;
+}

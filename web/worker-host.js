@@ -58,9 +58,11 @@ export function createHost(api, post) {
     },
   };
 
+  let initOptions;  // from the client's configure message, sent before any request
+
   async function load() {
     try {
-      await api.init();
+      await api.init(initOptions);
     } catch (error) {
       throw new GeocdtError('NotLoaded',
         `geocdt: could not load the WebAssembly module in the worker: ${error?.message}`,
@@ -69,6 +71,10 @@ export function createHost(api, post) {
   }
 
   return async function onMessage({ id, op, args, progress }) {
+    if (op === 'configure') {
+      initOptions = args[0];
+      return;
+    }
     try {
       if (!Object.hasOwn(ops, op)) {
         throw new GeocdtError('InternalError', `geocdt worker: unknown request ${op}`);

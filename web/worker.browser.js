@@ -3,11 +3,15 @@
 // the worker with the wasm it loads.
 import { GeocdtWorker } from './worker-client.js';
 import { GeocdtError } from './errors.js';
+import { threadsError } from './input.js';
 
 export { GeocdtWorker, RemoteTriangulation } from './worker-client.js';
 export { GeocdtError } from './errors.js';
 
-export function createWorker() {
+// options.threads: as init()'s (the worker loads the threaded build where it can).
+export function createWorker(options) {
+  const wrongThreads = threadsError(options?.threads);
+  if (wrongThreads) throw wrongThreads;
   // Written in the one form bundlers recognise: the URL inline in the Worker call.
   const worker = new Worker(new URL('./worker-thread.browser.js', import.meta.url), {
     type: 'module',
@@ -17,6 +21,9 @@ export function createWorker() {
     busy: () => {},
     terminate: () => worker.terminate(),
   });
+  if (options?.threads !== undefined) {
+    worker.postMessage({ op: 'configure', args: [{ threads: options.threads }] });
+  }
   worker.addEventListener('message', (event) => client.receive(event.data));
   worker.addEventListener('error', (event) => {
     event.preventDefault?.();

@@ -64,5 +64,8 @@ export class RemoteTriangulation {
   dispose(): Promise<void>;
 }
 
-/** Starts a worker. In Node, an idle worker does not keep the process alive. */
-export function createWorker(): GeocdtWorker;
+/**
+ * Starts a worker. In Node, an idle worker does not keep the process alive. options.threads:
+ * as init()'s, for the worker's module (a TypeError or RangeError at once when wrong).
+ */
+export function createWorker(options?: { threads?: number | 'auto' }): GeocdtWorker;

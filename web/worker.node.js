@@ -3,6 +3,7 @@
 import { Worker } from 'node:worker_threads';
 import { GeocdtWorker } from './worker-client.js';
 import { GeocdtError } from './errors.js';
+import { threadsError } from './input.js';
 
 export { GeocdtWorker, RemoteTriangulation } from './worker-client.js';
 export { GeocdtError } from './errors.js';
@@ -18,7 +19,10 @@ function workerFlags() {
   return flags;
 }
 
-export function createWorker() {
+// options.threads: as init()'s (the worker loads the threaded build).
+export function createWorker(options) {
+  const wrongThreads = threadsError(options?.threads);
+  if (wrongThreads) throw wrongThreads;
   const url = new URL('./worker-thread.node.js', import.meta.url);
   const worker = new Worker(url, { execArgv: workerFlags() });
   const client = new GeocdtWorker({
@@ -26,6 +30,9 @@ export function createWorker() {
     busy: (isBusy) => (isBusy ? worker.ref() : worker.unref()),
     terminate: () => worker.terminate(),
   });
+  if (options?.threads !== undefined) {
+    worker.postMessage({ op: 'configure', args: [{ threads: options.threads }] });
+  }
   worker.unref();
   worker.on('message', (message) => client.receive(message));
   worker.on('error', (error) => client.fail(new GeocdtError('WorkerFailed',

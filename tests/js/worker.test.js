@@ -160,3 +160,18 @@ test('the worker takes every input form, and transfers any typed array', async (
     message: /polylines\.coords\[2\] \(x of point 1 of polyline 0\) is NaN/,
   });
 });
+
+test('createWorker({ threads }): the worker loads the threaded build', async () => {
+  assert.throws(() => createWorker({ threads: 0 }), RangeError);
+  assert.throws(() => createWorker({ threads: '2' }), TypeError);
+  const worker = createWorker({ threads: 2 });
+  try {
+    const points = uniform(100_000, 21);
+    const r = await worker.triangulate({ points }, { transfer: false });
+    assert.equal(r.stats.threads, 2);
+    await init();
+    assert.equal(r.triangles.length, triangulate({ points }).triangles.length);
+  } finally {
+    worker.terminate();
+  }
+});
