@@ -3,11 +3,13 @@
 // triangulate() and then warm calls, and reports medians over the runs. delaunator runs the
 // same way, on the same points, for context.
 //   node bench/js/first-call.js [--runs N] [--node] [--chromium] [--quick] [--baseline DIR]
-//     [--delay MS]
+//     [--delay MS] [--threads N]
 // --node or --chromium runs only that engine; --quick runs only the Natural Earth 50m rings;
 // --baseline DIR also runs another build of the package (a folder holding its web/) in the
 // same rounds, for a before/after; --delay MS waits that long between init() and the first
-// call, as a page or script that loads its data after init() does (default 0).
+// call, as a page or script that loads its data after init() does (default 0); --threads N
+// passes init({ threads: N }) (the threaded build; in Chromium the page is then served
+// cross-origin isolated).
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { createServer } from 'node:http';
@@ -26,6 +28,7 @@ const baselineDir = option('--baseline', null) && resolve(option('--baseline', n
 const runs = Number(option('--runs', 5));
 const warmCalls = 6;
 const delayMs = Number(option('--delay', 0));
+const threads = Number(option('--threads', 1));
 
 // Each dataset is { points } or { polylines: { coords, offsets } } (the flat form), made in
 // Node and handed to the browser as bytes; delaunator gets the same points, unconstrained.
@@ -89,12 +92,12 @@ async function measureOnce(bytes, load, warmCalls, delayMs, cpuClock) {
   return result;
 }
 
-function loader(library, geocdtUrl, delaunatorUrl) {
+function loader(library, geocdtUrl, delaunatorUrl, threads) {
   return async () => {
     if (library === 'geocdt') {
       const api = await import(geocdtUrl);
       const started = performance.now();
-      await api.init();
+      await api.init(threads > 1 ? { threads } : undefined);
       const initMs = performance.now() - started;
       return { initMs, run: (input) => api.triangulate(input) };
     }
@@ -109,7 +112,7 @@ async function child(library, dataset) {
   const bytes = encode(await makeDataset(dataset));
   const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
   const geocdtUrl = pathToFileURL(join(packageDir, 'web/index.node.js')).href;
-  const load = loader(library, geocdtUrl, 'delaunator');
+  const load = loader(library, geocdtUrl, 'delaunator', threads);
   const result = await measureOnce(buffer, load, warmCalls, delayMs, threadCpuClock());
   console.log(JSON.stringify(result));
 }
@@ -117,7 +120,8 @@ async function child(library, dataset) {
 function inNode(library, dataset) {
   const args = ['--expose-gc', new URL(import.meta.url).pathname, '--child',
     library === 'baseline' ? 'geocdt' : library, dataset,
-    '--package', library === 'baseline' ? baselineDir : packageDir, '--delay', String(delayMs)];
+    '--package', library === 'baseline' ? baselineDir : packageDir, '--delay', String(delayMs),
+    '--threads', String(threads)];
   return JSON.parse(execFileSync(process.execPath, args, { encoding: 'utf8' }));
 }
 
@@ -149,7 +153,10 @@ function serve(data) {
       body = null;
     }
     if (body == null) return response.writeHead(404).end();
-    response.writeHead(200, { 'Content-Type': type, 'Cache-Control': 'no-store' });
+    const isolation = threads > 1 ? {
+      'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp',
+    } : {};
+    response.writeHead(200, { 'Content-Type': type, 'Cache-Control': 'no-store', ...isolation });
     response.end(body);
   });
   return new Promise((done) => server.listen(0, '127.0.0.1', () => done(server)));
@@ -165,14 +172,16 @@ async function inChromium(server, library, dataset) {
   try {
     const page = await browser.newPage();
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
-    return await page.evaluate(async ([measureSource, loaderSource, lib, name, calls, delay]) => {
+    return await page.evaluate(async ([measureSource, loaderSource, lib, name, calls, delay,
+      threadCount]) => {
       const make = (source) => new Function(`return (${source})`)();
       const bytes = await (await fetch(`/data/${name}`)).arrayBuffer();
       const load = make(loaderSource)(lib === 'baseline' ? 'geocdt' : lib,
         `/${lib === 'baseline' ? 'baseline' : 'package'}/web/index.browser.js`,
-        '/node_modules/delaunator/index.js');
+        '/node_modules/delaunator/index.js', threadCount);
       return make(measureSource)(bytes, load, calls, delay);
-    }, [measureOnce.toString(), loader.toString(), library, dataset, warmCalls, delayMs]);
+    }, [measureOnce.toString(), loader.toString(), library, dataset, warmCalls, delayMs,
+      threads]);
   } finally {
     await browser.close();
   }
