@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "delaunay.h"
+#include "first_triangle.h"
 #include "geocdt/predicates.h"
 #include "insertion_order.h"
 
@@ -347,19 +348,8 @@ Status Delaunay::insertPending(const std::vector<std::uint32_t>& order,
     return base + (batch_.order ? k : order[k]);
   };
   const double* p = xy.data();
-  const auto same = [p](std::uint32_t u, std::uint32_t v) {
-    return p[2 * u] == p[2 * v] && p[2 * u + 1] == p[2 * v + 1];
-  };
-  std::size_t i1 = 1;
-  while (i1 < n && same(at(0), at(i1))) ++i1;
-  std::size_t i2 = i1 + 1;
-  if (i1 < n) {
-    const std::uint32_t a = at(0), b = at(i1);
-    while (i2 < n && orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * at(i2)],
-                              p[2 * at(i2) + 1]) == Sign::Zero)
-      ++i2;
-  }
-  if (i1 >= n || i2 >= n) {
+  std::size_t i1 = 0, i2 = 0;
+  if (!findFirstTriangle(p, at, n, i1, i2)) {
     // Still all collinear: no triangles yet; keep the vertices, without duplicates.
     for (std::uint32_t k = 0; k < order.size(); ++k) pending_.push_back(base + k);
     dedupCollinear(base);

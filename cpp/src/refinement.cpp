@@ -67,13 +67,7 @@ void Refiner::checkTriangle(std::int32_t t) {
 }
 
 std::int32_t Refiner::findEdge(std::uint32_t u, std::uint32_t v) const {
-  const std::int32_t start = vertexEdge_[u];
-  std::int32_t e = start;
-  do {
-    if (topo_.tri[nextEdge(e)] == v) return e;
-    e = topo_.adj[prevEdge(e)];
-  } while (e != start);
-  return -1;
+  return topo_.edgeAround(vertexEdge_[u], v);
 }
 
 void Refiner::rebuild() {

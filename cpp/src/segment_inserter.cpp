@@ -259,14 +259,7 @@ void SegmentInserter::bendThrough(std::uint32_t r, std::uint32_t l, std::uint32_
 }
 
 std::int32_t SegmentInserter::findEdge(std::uint32_t u, std::uint32_t v) {
-  const std::int32_t start = edgeOutOf(u);
-  if (start < 0) return -1;
-  std::int32_t e = start;
-  do {
-    if (d_.topo.tri[nextEdge(e)] == v) return e;
-    e = d_.topo.adj[prevEdge(e)];
-  } while (e != start);
-  return -1;
+  return d_.topo.edgeAround(edgeOutOf(u), v);
 }
 
 }  // namespace geocdt

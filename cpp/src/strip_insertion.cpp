@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "delaunay.h"
+#include "first_triangle.h"
 #include "geocdt/predicates.h"
 #include "insertion_order.h"
 #include "segment_inserter.h"
@@ -185,18 +186,6 @@ void findSeam(const Delaunay& d, std::int32_t ghost, std::int32_t first, std::in
   for (std::int32_t t = used; t < end; ++t) seam.holes.push_back(t);
 }
 
-// The half-edge u -> v of z, or -1.
-std::int32_t edgeBetween(Delaunay& z, VertexEdges& ends, std::uint32_t u, std::uint32_t v) {
-  const std::int32_t start = ends.find(z, u);
-  if (start < 0) return -1;
-  std::int32_t e = start;
-  do {
-    if (z.topo.tri[nextEdge(e)] == v) return e;
-    e = z.topo.adj[prevEdge(e)];
-  } while (e != start);
-  return -1;
-}
-
 Status broken(const char* what) {
   return {StatusCode::InternalError, std::string("joining the strips: ") + what};
 }
@@ -240,30 +229,31 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
   VertexEdges ends;
   ends.build(z);
   SegmentInserter inserter(z, ends);
-  std::vector<std::array<std::uint32_t, 2>> border;  // seam vertices of each border, in order
+  struct Border {
+    std::uint32_t u, v;  // its ends among the seam vertices
+    std::int32_t kept;   // its half-edge in the kept triangle
+  };
+  std::vector<Border> borders;
   for (const StripSeam& seam : seams)
     for (const std::int32_t e : seam.borders) {
       const std::uint32_t u = local(tri[e]), v = local(tri[nextEdge(e)]);
       if (u == kGhost || v == kGhost) return broken("a border's end is not a seam vertex");
-      border.push_back({u, v});
+      borders.push_back({u, v, e});
       if (inserter.insert(u, v, EdgeSource{}) != Outcome::Inserted) return inserter.error();
     }
   const Topology& zt = z.topo;
   std::vector<std::uint8_t> dropped(static_cast<std::size_t>(zt.slotCount()), 0);
   std::vector<std::int32_t> borderOf(zt.tri.size(), -1);  // seam half-edge -> kept half-edge
   std::vector<std::int32_t> stack;
-  std::size_t b = 0;
-  for (const StripSeam& seam : seams)
-    for (const std::int32_t e : seam.borders) {
-      const std::int32_t h = edgeBetween(z, ends, border[b][0], border[b][1]);
-      ++b;
-      if (h < 0 || !zt.fixed[h]) return broken("a border is missing from the seam");
-      borderOf[h] = e;
-      if (!dropped[h / 3]) {
-        dropped[h / 3] = 1;
-        stack.push_back(h / 3);
-      }
+  for (const Border& b : borders) {
+    const std::int32_t h = zt.edgeAround(ends.find(z, b.u), b.v);
+    if (h < 0 || !zt.fixed[h]) return broken("a border is missing from the seam");
+    borderOf[h] = b.kept;
+    if (!dropped[h / 3]) {
+      dropped[h / 3] = 1;
+      stack.push_back(h / 3);
     }
+  }
   while (!stack.empty()) {
     const std::int32_t t = stack.back();
     stack.pop_back();
@@ -346,18 +336,11 @@ Status Delaunay::insertStrip(const std::uint32_t* order, std::uint32_t count, st
   batch_ = {0, ids, nullptr};
   inBatch_ = true;
   const double* p = xy.data();
-  const auto same = [p](std::uint32_t u, std::uint32_t v) {
-    return p[2 * u] == p[2 * v] && p[2 * u + 1] == p[2 * v + 1];
-  };
-  std::uint32_t i1 = 1;
-  while (i1 < count && same(order[0], order[i1])) ++i1;
-  std::uint32_t i2 = i1 + 1;
-  const std::uint32_t a = order[0], b = i1 < count ? order[i1] : a;
-  while (i2 < count && orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * order[i2]],
-                                p[2 * order[i2] + 1]) == Sign::Zero)
-    ++i2;
-  if (i2 >= count) return {StatusCode::InvalidArgument, "a strip of collinear points"};
-  const std::uint32_t c = order[i2];
+  std::size_t i1 = 0, i2 = 0;
+  if (!findFirstTriangle(
+          p, [order](std::size_t i) { return order[i]; }, count, i1, i2))
+    return {StatusCode::InvalidArgument, "a strip of collinear points"};
+  const std::uint32_t a = order[0], b = order[i1], c = order[i2];
   build(a, b, c);
   grid_.reset(p[2 * a], p[2 * a + 1], p[2 * a], p[2 * a + 1], 1);  // one cell: the run walks
   grid_.fill(last_);

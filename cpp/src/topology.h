@@ -52,6 +52,17 @@ struct Topology {
     tri[3 * t + 2] = c;
   }
 
+  // Turning around the vertex that half-edge start leaves: the half-edge from it to v, or -1.
+  std::int32_t edgeAround(std::int32_t start, std::uint32_t v) const {
+    if (start < 0) return -1;
+    std::int32_t e = start;
+    do {
+      if (tri[nextEdge(e)] == v) return e;
+      e = adj[prevEdge(e)];
+    } while (e != start);
+    return -1;
+  }
+
   void link(std::int32_t e, std::int32_t f) {
     adj[e] = f;
     if (f >= 0) adj[f] = e;
