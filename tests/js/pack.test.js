@@ -92,6 +92,39 @@ function serve(folder, headers = {}) {
   return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
 }
 
+// Serves folder (with headers) and opens it in headless Chromium until the page's #result
+// is written; use({ page, text, result, workers }) runs before the browser closes. The page
+// must raise no error and its result none either.
+async function inChromium(folder, headers, use) {
+  const server = await serve(folder, headers);
+  const { chromium } = await import('playwright-core');
+  const browser = await chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
+  });
+  try {
+    const page = await browser.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    const logged = [];  // (a 404 for the favicon among them: said only on a timeout)
+    page.on('console', (m) => m.type() === 'error' && logged.push(m.text()));
+    const workers = [];
+    page.on('worker', (w) => workers.push(w.url()));
+    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    await page.waitForFunction(
+      () => document.getElementById('result').textContent !== 'running', null,
+      { timeout: 60_000 }).catch((e) => assert.fail(`${e.message}: ${errors} ${logged}`));
+    const text = await page.textContent('#result');
+    assert.deepEqual(errors, []);
+    const result = JSON.parse(text.startsWith('{') ? text : JSON.stringify({ error: text }));
+    assert.equal(result.error, undefined, text);
+    await use({ page, text, result, workers });
+  } finally {
+    await browser.close();
+    server.close();
+  }
+}
+
 test('a Vite bundle runs in headless Chromium, with the worker', async () => {
   assert.ok(installed);
   const app = join(dir, 'app');
@@ -102,26 +135,7 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
   const assets = readdirSync(join(app, 'dist/assets'));
   assert.ok(assets.some((f) => f.endsWith('.wasm')), `the wasm is emitted as an asset: ${assets}`);
 
-  const server = await serve(join(app, 'dist'));
-  const { chromium } = await import('playwright-core');
-  const browser = await chromium.launch({
-    executablePath: '/usr/bin/chromium',
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
-  });
-  try {
-    const page = await browser.newPage();
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(e.message));
-    const workers = [];
-    page.on('worker', (w) => workers.push(w.url()));
-    await page.goto(`http://127.0.0.1:${server.address().port}/`);
-    await page.waitForFunction(
-      () => document.getElementById('result').textContent !== 'running', null,
-      { timeout: 30_000 });
-    const text = await page.textContent('#result');
-    assert.deepEqual(errors, []);
-    const result = JSON.parse(text.startsWith('{') ? text : JSON.stringify({ error: text }));
-    assert.equal(result.error, undefined, text);
+  await inChromium(join(app, 'dist'), {}, async ({ page, text, result, workers }) => {
     assert.ok(result.triangles > 1_900, text);
     assert.equal(result.workerTriangles, result.triangles);
     assert.equal(result.transferred, true);
@@ -135,7 +149,9 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
     // what the same warm-up makes in Node.
     const warmUp = workers.find((url) => /warm-up/.test(url));
     assert.ok(warmUp, `init() started its warm-up worker: ${workers}`);
-    const wasm = `/assets/${assets.find((f) => f.endsWith('.wasm'))}`;
+    // The single-threaded build's wasm (the threaded build's is emitted too).
+    const wasm = `/assets/${assets.find((f) => f.endsWith('.wasm')
+      && !f.startsWith('geocdt-threads-'))}`;
     const triangles = await page.evaluate(async ([url, wasmUrl]) => {
       const module = await WebAssembly.compileStreaming(fetch(wasmUrl));
       const worker = new Worker(url, { type: 'module' });
@@ -148,10 +164,7 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
     }, [warmUp, wasm]);
     await init({ warmUp: false });
     assert.equal(triangles, runWarmUp(triangulate));
-  } finally {
-    await browser.close();
-    server.close();
-  }
+  });
 });
 
 test('the threaded build in Chromium, on a cross-origin isolated page', async () => {
@@ -162,35 +175,14 @@ test('the threaded build in Chromium, on a cross-origin isolated page', async ()
     copyFileSync(join(here, 'threads', f), join(app, f));
   }
   const { build } = await import('vite');
-  await build({ root: app, logLevel: 'error', resolve: { preserveSymlinks: true },
-    build: { outDir: join(app, 'dist'), target: 'es2022' } });
-  const server = await serve(join(app, 'dist'), {
+  await build(
+    { root: app, logLevel: 'error', build: { outDir: join(app, 'dist'), target: 'es2022' } });
+  const isolated = {
     'cross-origin-opener-policy': 'same-origin', 'cross-origin-embedder-policy': 'require-corp',
-  });
-  const { chromium } = await import('playwright-core');
-  const browser = await chromium.launch({
-    executablePath: '/usr/bin/chromium',
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
-  });
-  try {
-    const page = await browser.newPage();
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(e.message));
-    const logged = [];  // (a 404 for the favicon among them)
-    page.on('console', (m) => m.type() === 'error' && logged.push(m.text()));
-    await page.goto(`http://127.0.0.1:${server.address().port}/`);
-    await page.waitForFunction(
-      () => document.getElementById('result').textContent !== 'running', null,
-      { timeout: 60_000 }).catch((e) => assert.fail(`${e.message}: ${errors} ${logged}`));
-    const text = await page.textContent('#result');
-    assert.deepEqual(errors, []);
-    const result = JSON.parse(text.startsWith('{') ? text : JSON.stringify({ error: text }));
-    assert.equal(result.error, undefined, text);
+  };
+  await inChromium(join(app, 'dist'), isolated, ({ text, result }) => {
     assert.equal(result.isolated, true);
     assert.equal(result.threads, 2, text);
     assert.ok(result.triangles > 2 * result.vertices - 100, text);
-  } finally {
-    await browser.close();
-    server.close();
-  }
+  });
 });
