@@ -2,7 +2,7 @@
 // the `new URL(..., import.meta.url)` and ship it (and the warm-up's worker) as assets.
 import createGeocdtModule from './dist/geocdt.mjs';
 import { createApi, kAutoThreads } from './api.js';
-import { instantiateCompiled } from './warm-up.js';
+import { instantiateCompiled, threadedSettings } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
 export { GeocdtError } from './errors.js';
@@ -69,12 +69,8 @@ async function instantiateThreaded(options, threads) {
     import(/* @vite-ignore */ /* webpackIgnore: true */ glue), compile(options, true),
     poolScript()]);
   return instantiateCompiled(createThreadedModule, module, {
-    geocdtThreadPool: threads - 1,
-    mainScriptUrlOrBlob: glue,
+    ...threadedSettings(threads, glue),
     locateFile: (path) => (path.endsWith('.worker.js') ? script : new URL(path, glue).href),
-    printErr: (text) => {
-      if (!text.startsWith('Blocking on the main thread')) console.warn(text);
-    },
   });
 }
 

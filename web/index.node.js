@@ -8,7 +8,7 @@ import { Worker } from 'node:worker_threads';
 import createGeocdtModule from './dist/geocdt.mjs';
 import { createApi, kAutoThreads } from './api.js';
 import { PthreadWorker } from './pthread-worker.node.js';
-import { instantiateCompiled } from './warm-up.js';
+import { instantiateCompiled, threadedSettings } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
 export { GeocdtError } from './errors.js';
@@ -76,14 +76,8 @@ async function instantiateThreaded(threads) {
   };
   let ready;
   try {
-    ready = instantiateCompiled(createThreadedModule, module, {
-      geocdtThreadPool: threads - 1,
-      mainScriptUrlOrBlob: glue.href,
-      // Node's main thread may block; the glue's warning is for a browser's.
-      printErr: (text) => {
-        if (!text.startsWith('Blocking on the main thread')) console.warn(text);
-      },
-    });
+    ready = instantiateCompiled(createThreadedModule, module,
+      threadedSettings(threads, glue.href));
   } finally {
     if (had) globalThis.Worker = before;
     else delete globalThis.Worker;

@@ -17,6 +17,19 @@ export function instantiateCompiled(createModule, module, settings = {}) {
   });
 }
 
+// The threaded build's module settings: a pool of threads - 1 workers, which load the glue
+// from glueUrl. The glue's warning on a blocked main thread is dropped: a call blocks the
+// thread that makes it while the pool works, as any call does (API.md says so).
+export function threadedSettings(threads, glueUrl) {
+  return {
+    geocdtThreadPool: threads - 1,
+    mainScriptUrlOrBlob: glueUrl,
+    printErr: (text) => {
+      if (!text.startsWith('Blocking on the main thread')) console.warn(text);
+    },
+  };
+}
+
 // Pseudo-random numbers in [0, 1): the same warm-up in every run.
 function random(seed) {
   let s = seed;
