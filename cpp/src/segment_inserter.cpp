@@ -248,12 +248,17 @@ std::uint32_t SegmentInserter::addCrossingVertex(double x, double y, bool& faile
 }
 
 void SegmentInserter::bendThrough(std::uint32_t r, std::uint32_t l, std::uint32_t w) {
+  const std::uint32_t path[3] = {r, w, l};
+  bendAlong(path, 3);
+}
+
+void SegmentInserter::bendAlong(const std::uint32_t* path, std::size_t count) {
+  const std::uint32_t r = path[0], l = path[count - 1];
   const std::int32_t e = findEdge(r, l);
   if (e < 0) return;
   const EdgeSource moved = d_.constraints.take(r, l);
   d_.topo.fixed[e] = d_.topo.fixed[d_.topo.adj[e]] = 0;
-  pieces_.push_back({r, w, moved});
-  pieces_.push_back({w, l, moved});
+  for (std::size_t k = 0; k + 1 < count; ++k) pieces_.push_back({path[k], path[k + 1], moved});
   d_.flipStack().push_back(e);  // no longer constrained: it may have to flip now
   d_.restoreDelaunay();
 }

@@ -96,6 +96,12 @@ class SegmentInserter {
   std::uint32_t addCrossingVertex(double x, double y, bool& failed);
   // The constrained edge r-l, if it still is one, becomes the pieces r -> w -> l to insert.
   void bendThrough(std::uint32_t r, std::uint32_t l, std::uint32_t w);
+  // The same through path[1 .. count - 2], from r = path[0] to l = path[count - 1].
+  void bendAlong(const std::uint32_t* path, std::size_t count);
+  // Link u -> v of segment g bent through w, with the vertices that would otherwise change
+  // sides of it (those between g and u -> w or w -> v) on the way (snap_rounding.cpp).
+  std::vector<std::uint32_t> bentLink(const InputSegment& g, std::uint32_t u, std::uint32_t w,
+                                      std::uint32_t v);
   Outcome broken(const char* what);
 
   Delaunay& d_;

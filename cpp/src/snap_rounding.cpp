@@ -58,19 +58,17 @@ bool mayMeet(const InputSegment& s, double reach, const double* p, const double*
   return above < 3 && below < 3 && before < 3 && after < 3;
 }
 
-// The real triangles that may meet the points within `reach` of s, found by a search from
-// the triangles around s's first end (the region is convex, so its triangles are connected).
-void trianglesNear(const Delaunay& d, std::int32_t out, const InputSegment& s, double reach,
-                   std::uint32_t mark, std::vector<std::uint32_t>& stamp,
-                   std::vector<std::int32_t>& found) {
-  const Topology& topo = d.topo;
-  const double* xy = d.xy.data();
+// The real triangles around the origin of half-edge `out` and, through neighbours, every
+// real triangle joined to them that `meets` accepts (a region that is convex, or convex
+// pieces joined at a vertex, has its triangles connected). `firstVisit(t)` says whether t is
+// new to the search.
+template <class FirstVisit, class Meets>
+void searchTriangles(const Topology& topo, std::int32_t out, FirstVisit firstVisit, Meets meets,
+                     std::vector<std::int32_t>& found) {
   found.clear();
   const auto consider = [&](std::int32_t t) {
-    if (stamp[t] == mark || topo.isGhost(t)) return;
-    stamp[t] = mark;
-    const std::uint32_t* v = &topo.tri[3 * t];
-    if (mayMeet(s, reach, xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2])) found.push_back(t);
+    if (topo.isGhost(t) || !firstVisit(t)) return;
+    if (meets(&topo.tri[3 * t])) found.push_back(t);
   };
   std::int32_t e = out;
   do {
@@ -81,21 +79,65 @@ void trianglesNear(const Delaunay& d, std::int32_t out, const InputSegment& s, d
     for (int i = 0; i < 3; ++i) consider(topo.adj[3 * found[k] + i] / 3);
 }
 
+// The real triangles that may meet the points within `reach` of s, from the triangles around
+// s's first end.
+void trianglesNear(const Delaunay& d, std::int32_t out, const InputSegment& s, double reach,
+                   std::uint32_t mark, std::vector<std::uint32_t>& stamp,
+                   std::vector<std::int32_t>& found) {
+  const double* xy = d.xy.data();
+  searchTriangles(
+      d.topo, out,
+      [&](std::int32_t t) {
+        if (stamp[t] == mark) return false;
+        stamp[t] = mark;
+        return true;
+      },
+      [&](const std::uint32_t* v) {
+        return mayMeet(s, reach, xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]);
+      },
+      found);
+}
+
+// Vertices strictly between s and a link of chain (strictly between the link's ends along s,
+// off s's line on one side and on the other side of the link) join the chain, until none is
+// left (iterated snap rounding), so that no vertex changes sides. Each such vertex lies
+// nearer to s than the link's ends. Those that join leave `others`.
+void joinVerticesBetween(const InputSegment& s, std::vector<std::uint32_t>& chain,
+                         std::vector<std::uint32_t>& others, const double* xy) {
+  const auto along = [&](std::uint32_t u, std::uint32_t v) {
+    return signAlong(s, xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1]);
+  };
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t k = 0; k + 1 < chain.size() && !grew; ++k) {
+      const std::uint32_t u = chain[k], v = chain[k + 1];
+      for (std::size_t m = 0; m < others.size(); ++m) {
+        const std::uint32_t w = others[m];
+        if (along(u, w) <= 0 || along(w, v) <= 0) continue;
+        const double wx = xy[2 * w], wy = xy[2 * w + 1];
+        const int offLine = int(orient2d(s.ax, s.ay, s.bx, s.by, wx, wy));
+        if (offLine == 0 ||
+            int(orient2d(xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1], wx, wy)) != -offLine)
+          continue;
+        chain.insert(chain.begin() + static_cast<std::ptrdiff_t>(k + 1), w);
+        others.erase(others.begin() + static_cast<std::ptrdiff_t>(m));
+        grew = true;
+        break;
+      }
+    }
+  }
+}
+
 // The chain of segment s from vertex a to vertex b among the candidate vertices near it:
 // those whose rounding cells s meets, strictly between a and b along s, in order along it.
 // Where the spacing of doubles changes along s (a binade's end), a cell can be smaller than
 // the distance from s at which a link passes, so a vertex could end up strictly between s
-// and a link: it joins the chain too, until none does (iterated snap rounding), so that no
-// vertex changes sides. Each such vertex lies nearer to s than the link's ends.
+// and a link: it joins the chain too (joinVerticesBetween).
 void chainOf(const InputSegment& s, std::uint32_t a, std::uint32_t b,
              const std::vector<std::uint32_t>& candidates, const double* xy,
              std::vector<std::uint32_t>& chain) {
   const auto along = [&](std::uint32_t u, std::uint32_t v) {
     return signAlong(s, xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1]);
-  };
-  const auto side = [&](std::uint32_t u, std::uint32_t v, std::uint32_t w) {
-    return int(
-        orient2d(xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1], xy[2 * w], xy[2 * w + 1]));
   };
   chain.clear();
   std::vector<std::uint32_t> others;
@@ -112,30 +154,13 @@ void chainOf(const InputSegment& s, std::uint32_t a, std::uint32_t b,
   chain.insert(chain.begin(), a);
   chain.push_back(b);
   // Where the spacing is even along s, no vertex lies strictly between s and a link (every
-  // point there lies within a cell's reach of s, so its own cell meets s). Elsewhere, a
-  // vertex strictly between s and link u -> v is strictly between them along s, off s's line
-  // on one side, and on the other side of the link (which runs forward along s).
+  // point there lies within a cell's reach of s, so its own cell meets s).
   const auto even = [](double a, double b) {
     const double nearest = (a < 0) != (b < 0) ? 0 : std::fmin(std::fabs(a), std::fabs(b));
     return spacingAt(nearest) == spacingAt(std::fmax(std::fabs(a), std::fabs(b)));
   };
   if (even(s.ax, s.bx) && even(s.ay, s.by)) return;
-  for (bool grew = true; grew;) {
-    grew = false;
-    for (std::size_t k = 0; k + 1 < chain.size() && !grew; ++k) {
-      const std::uint32_t u = chain[k], v = chain[k + 1];
-      for (std::size_t m = 0; m < others.size(); ++m) {
-        const std::uint32_t w = others[m];
-        if (along(u, w) <= 0 || along(w, v) <= 0) continue;
-        const int offLine = side(a, b, w);
-        if (offLine == 0 || side(u, v, w) != -offLine) continue;
-        chain.insert(chain.begin() + static_cast<std::ptrdiff_t>(k + 1), w);
-        others.erase(others.begin() + static_cast<std::ptrdiff_t>(m));
-        grew = true;
-        break;
-      }
-    }
-  }
+  joinVerticesBetween(s, chain, others, xy);
 }
 
 struct Crossing {
@@ -185,9 +210,63 @@ std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, 
               "snap rounding found no vertex within the bound where two links cross"};
     return kGhost;
   }
-  // The crossed link bends through w, unless w split it already (it lay on it).
-  if (w != r && w != l) bendThrough(r, l, w);
-  return w == piece.a || w == piece.b ? kGhost : w;
+  // Both bend through w, and through any vertex the bend would otherwise pass over (fuzz: a
+  // link bent past the end of another segment's chain, which then crossed it). The piece is
+  // replaced by its links, the first on top; the crossed link's go above it.
+  const std::size_t at = pieces_.size() - 1;
+  std::vector<std::uint32_t> path;
+  if (w != piece.a && w != piece.b)
+    path = bentLink(store.geometry(piece.src.segment, d_.xy), piece.a, w, piece.b);
+  if (w != r && w != l) {  // (else w split it already: it lay on it)
+    const std::vector<std::uint32_t> bent =
+        bentLink(store.geometry(crossedSegment, d_.xy), r, w, l);
+    bendAlong(bent.data(), bent.size());
+  }
+  if (path.empty()) return kGhost;  // the piece stays as it is; the crossed link moved
+  pieces_.erase(pieces_.begin() + static_cast<std::ptrdiff_t>(at));
+  std::vector<Piece> links;
+  for (std::size_t k = path.size() - 1; k > 0; --k)
+    links.push_back({path[k - 1], path[k], piece.src});
+  pieces_.insert(pieces_.begin() + static_cast<std::ptrdiff_t>(at), links.begin(), links.end());
+  return kGhost;
+}
+
+std::vector<std::uint32_t> SegmentInserter::bentLink(const InputSegment& g, std::uint32_t u,
+                                                     std::uint32_t w, std::uint32_t v) {
+  // Such vertices lie within g's bound of the new links (between g and a link whose ends are
+  // within it): the corners of the triangles that may meet those regions, found by a search
+  // from u's triangles (the regions are convex and joined at w, so their triangles are too).
+  const double* p = d_.xy.data();
+  const double reach = std::ldexp(1.0, chainBoundExponent(g));
+  const InputSegment first{p[2 * u], p[2 * u + 1], p[2 * w], p[2 * w + 1]};
+  const InputSegment second{p[2 * w], p[2 * w + 1], p[2 * v], p[2 * v + 1]};
+  std::vector<std::uint32_t> path{u, w, v};
+  const std::int32_t out = edgeOutOf(u);
+  if (out < 0) return path;
+  EdgeMap<std::uint8_t> seen;
+  std::vector<std::int32_t> found;
+  searchTriangles(
+      d_.topo, out,
+      [&](std::int32_t t) { return seen.insert(static_cast<std::uint32_t>(t), 1).second; },
+      [&](const std::uint32_t* c) {
+        const double *c0 = p + 2 * c[0], *c1 = p + 2 * c[1], *c2 = p + 2 * c[2];
+        return mayMeet(first, reach, c0, c1, c2) || mayMeet(second, reach, c0, c1, c2);
+      },
+      found);
+  std::vector<std::uint32_t> others;
+  for (const std::int32_t t : found)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t c = d_.topo.tri[3 * t + k];
+      if (c != u && c != w && c != v) others.push_back(c);
+    }
+  std::sort(others.begin(), others.end());
+  others.erase(std::unique(others.begin(), others.end()), others.end());
+  // (The link may run against g's direction: the growth runs along it.)
+  const bool backward = signAlong(g, p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]) < 0;
+  if (backward) std::reverse(path.begin(), path.end());
+  joinVerticesBetween(g, path, others, p);
+  if (backward) std::reverse(path.begin(), path.end());
+  return path;
 }
 
 namespace {

@@ -493,6 +493,18 @@ int snapRoundings(const Polylines& lines, const Options& options, bool oneCall,
   return static_cast<int>(t.stats().snapRoundings);
 }
 
+// Snap-rounded (when needed and always, in one call and a call per polyline) and valid.
+void expectSnapRoundedAndValid(const Polylines& lines, Options o) {
+  std::string broken;
+  for (const bool always : {false, true}) {
+    o.snapRounding = always ? SnapRounding::Always : SnapRounding::WhenNeeded;
+    for (const bool oneCall : {false, true}) {
+      EXPECT_GE(snapRoundings(lines, o, oneCall, broken), 1) << always << oneCall;
+      EXPECT_EQ(broken, "") << always << oneCall;
+    }
+  }
+}
+
 TEST(Constraints, FuzzTangleOfRingsAroundOneAndMinus12345) {
   // Rings and lines within 3e-11 of (1, -12345.678), one call each: re-routed constraints
   // kept pushing each other back (ConstraintUnresolved before snap rounding).
@@ -1556,15 +1568,29 @@ TEST(Constraints, FuzzTangleOfLongSegmentsFromUlpsApartEnds) {
   Options o;
   o.order = InsertionOrder::Hilbert;
   o.start = LocateStart::Grid;
-  std::string broken;
-  for (const bool always : {false, true}) {
-    o.snapRounding = always ? SnapRounding::Always : SnapRounding::WhenNeeded;
-    for (const bool oneCall : {false, true}) {
-      EXPECT_GE(snapRoundings(lines, o, oneCall, broken), 1) << always << oneCall;
-      EXPECT_EQ(broken, "") << always << oneCall;
-    }
-  }
+  expectSnapRoundedAndValid(lines, o);
 }
 
+TEST(Constraints, FuzzBentLinkMustNotPassAVertexOver) {
+  // Three polylines within 2e-11 of (-12345.678, 0), reduced from CI's fuzz run: x has a
+  // spacing of 1.8e-12 there and y one of about 1e-27, so each rounding cell is a sliver, and
+  // y spans several binades. Snap rounding bent a link of segment 0 through the rounded
+  // crossing of two links, and the bend passed over an input vertex that its segment passes
+  // on the other side: the chains of segments 0 and 3 crossed twice, though the segments do
+  // not meet. A bend now takes every vertex between its segment and the bent link with it
+  // (and does so for links stored against their segment's direction too).
+  const Polylines lines = {
+      {-12345.678000000005, 5.3056564363842135e-12, -12345.678000000011, 9.9682030016915524e-12},
+      {-12345.678000000018, 1.8650186261229356e-11, -12345.678000000005, 4.9841015008457762e-12,
+       -12345.678, 1.9936406003383105e-11},
+      {-12345.678, 6.4310987107687431e-13, -12345.678000000018, 1.9936406003383108e-11, -12345.678,
+       0, -12345.678000000007, 7.7173184529224921e-12, -12345.678000000016, 2.3151955358767476e-11},
+  };
+  Options o;
+  o.order = InsertionOrder::Hilbert;
+  o.start = LocateStart::LastTriangle;
+  o.gridDensity = 0.25;
+  expectSnapRoundedAndValid(lines, o);
+}
 }  // namespace
 }  // namespace geocdt
