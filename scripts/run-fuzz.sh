@@ -6,14 +6,16 @@
 #   scripts/run-fuzz.sh [seconds-per-target]     (default 60)
 #
 # Environment: GEOCDT_FUZZ_BUILD (build directory, default build-fuzz),
-# GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines fuzz_refine"), GEOCDT_FUZZ_SEED and
-# GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: a reproducible run).
+# GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines fuzz_refine fuzz_strips"),
+# GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: a reproducible run,
+# as long as the seconds do not cut it short), GEOCDT_FUZZ_TIMEOUT (seconds one input may
+# take, default 20; fuzz_strips triangulates 33,000 points a few times: 60).
 # Replay one input:  build-fuzz/tests/fuzz/fuzz_polylines FILE   (GEOCDT_FUZZ_PRINT=1 prints it)
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 build=${GEOCDT_FUZZ_BUILD:-$root/build-fuzz}
-targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines fuzz_refine}
+targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines fuzz_refine fuzz_strips}
 
 # (0 would mean no limit to libFuzzer.)
 case $seconds in
@@ -61,12 +63,14 @@ for target in $targets; do
   # New inputs go to a corpus in the build directory; the checked-in seeds are read only.
   corpus=$build/corpus/$target
   mkdir -p "$corpus" "$build/artifacts"
+  timeout=${GEOCDT_FUZZ_TIMEOUT:-20}
+  [ "$target" = fuzz_strips ] && timeout=${GEOCDT_FUZZ_TIMEOUT:-60}
   echo "run-fuzz: $target for ${seconds}s" >&2
   # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS make a run reproducible (CI uses them): the same
   # seed and number of inputs give the same inputs, so a pass here is a pass there.
   if ! "$build/tests/fuzz/$target" "$corpus" "$root/tests/fuzz/corpus/$target" \
       -max_total_time="$seconds" ${GEOCDT_FUZZ_SEED:+-seed=$GEOCDT_FUZZ_SEED} \
-      ${GEOCDT_FUZZ_RUNS:+-runs=$GEOCDT_FUZZ_RUNS} -max_len=4096 -timeout=20 -rss_limit_mb=2048 \
+      ${GEOCDT_FUZZ_RUNS:+-runs=$GEOCDT_FUZZ_RUNS} -max_len=4096 -timeout="$timeout" -rss_limit_mb=2048 \
       -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" \
       2>"$build/$target.log"; then
     status=1

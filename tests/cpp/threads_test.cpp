@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "constraint_invariants.h"
@@ -14,20 +13,6 @@
 
 namespace geocdt {
 namespace {
-
-using Triangle = std::array<std::uint32_t, 3>;
-
-// The triangles as a sorted list, each turned to start at its least vertex.
-std::vector<Triangle> triangleSet(const Mesh& m) {
-  std::vector<Triangle> set(m.triangles.size() / 3);
-  for (std::size_t i = 0; i < set.size(); ++i) {
-    const std::uint32_t* t = m.triangles.data() + 3 * i;
-    const int k = static_cast<int>(std::min_element(t, t + 3) - t);
-    set[i] = {t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
-  }
-  std::sort(set.begin(), set.end());
-  return set;
-}
 
 struct Result {
   Mesh mesh;
@@ -71,7 +56,8 @@ void expectSameAsOneThread(const std::vector<double>& xy, bool generalPosition) 
     EXPECT_EQ(many.stats.inserted, one.stats.inserted);
     EXPECT_EQ(many.stats.duplicates, one.stats.duplicates);
     EXPECT_EQ(many.mesh.triangles.size(), one.mesh.triangles.size());
-    if (generalPosition) EXPECT_TRUE(triangleSet(many.mesh) == triangleSet(one.mesh));
+    if (generalPosition)
+      EXPECT_TRUE(testing::triangleSet(many.mesh) == testing::triangleSet(one.mesh));
   }
 }
 
@@ -192,7 +178,7 @@ TEST(Threads, ConstraintsAndMorePointsAfterTheStrips) {
                                            ids[1].begin() + xy.size() / 2 + 800);
   EXPECT_EQ(testing::checkConstraints(meshes[1], lines, lineIds), "");
   EXPECT_EQ(ids[0], ids[1]);
-  EXPECT_TRUE(triangleSet(meshes[0]) == triangleSet(meshes[1]));
+  EXPECT_TRUE(testing::triangleSet(meshes[0]) == testing::triangleSet(meshes[1]));
 }
 
 }  // namespace

@@ -173,4 +173,15 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options) {
   return "";
 }
 
+std::vector<std::array<std::uint32_t, 3>> triangleSet(const Mesh& mesh) {
+  std::vector<std::array<std::uint32_t, 3>> set(mesh.triangles.size() / 3);
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    const std::uint32_t* t = mesh.triangles.data() + 3 * i;
+    const int k = static_cast<int>(std::min_element(t, t + 3) - t);
+    set[i] = {t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
+  }
+  std::sort(set.begin(), set.end());
+  return set;
+}
+
 }  // namespace geocdt::testing

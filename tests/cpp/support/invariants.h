@@ -1,6 +1,7 @@
 #pragma once
 // One checker for every test: the properties a valid (constrained) Delaunay triangulation
 // must have, decided with exact predicates. Returns "" when all hold, else the first failure.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,5 +21,9 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options = {
 
 // Hull vertex count of the mesh (boundary loop length), for tests that predict it.
 std::size_t hullSize(const Mesh& mesh);
+
+// The triangles as a sorted list, each turned to start at its least vertex: two meshes of the
+// same points have the same triangles when these are equal.
+std::vector<std::array<std::uint32_t, 3>> triangleSet(const Mesh& mesh);
 
 }  // namespace geocdt::testing
