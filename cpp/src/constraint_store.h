@@ -135,7 +135,9 @@ class ConstraintStore {
   const EdgeSource* find(std::uint32_t u, std::uint32_t v) const { return edges_.find(key(u, v)); }
   const EdgeSource* find(std::uint64_t edgeKey) const { return edges_.find(edgeKey); }
   // Brings the entries of n keys into the cache before they are looked up (EdgeMap::touch).
-  void touch(const std::uint64_t* keys, std::size_t n) const { edges_.touch(keys, n); }
+  std::uint64_t touch(const std::uint64_t* keys, std::size_t n) const {
+    return edges_.touch(keys, n);
+  }
 
   // Winding change met when crossing from the left of u->v to its right.
   std::int32_t windingAcross(std::uint32_t u, std::uint32_t v) const {

@@ -83,11 +83,11 @@ class EdgeMap {
   // Reads the first slot each key probes, so that finds of the same keys right after hit the
   // cache: the independent loads of this plain loop overlap their misses, where a find's
   // probe loop waits for each in turn (and WebAssembly has no prefetch instruction).
-  void touch(const std::uint64_t* keys, std::size_t n) const {
-    if (entries_.empty()) return;
+  std::uint64_t touch(const std::uint64_t* keys, std::size_t n) const {
+    if (entries_.empty()) return 0;
     std::uint64_t any = 0;
     for (std::size_t k = 0; k < n; ++k) any |= entries_[slot(keys[k])].key;
-    sink_ = any;  // kept, so that the loads are
+    return any;  // for the caller to keep (in a volatile), so that the loads are
   }
 
   // The value at key, and whether it was inserted (with value) rather than found.
@@ -188,7 +188,6 @@ class EdgeMap {
   Slot slot_;
   std::uint64_t idBound_ = 0;
   std::size_t inserts_ = 0, probes_ = 0;  // since the table was sized
-  mutable volatile std::uint64_t sink_ = 0;
   std::size_t size_ = 0;
 };
 

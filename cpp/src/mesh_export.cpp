@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "chunks.h"
+#include "in_parallel.h"
 #include "region_labels.h"
 #include "slot_windings.h"
 #include "triangulation_state.h"
@@ -63,9 +64,9 @@ std::int32_t planCompaction(std::vector<std::uint8_t>& kept, Move move) {
   return count;
 }
 
-std::vector<std::uint8_t> realSlots(const std::vector<std::uint32_t>& tri) {
+std::vector<std::uint8_t> realSlots(const std::vector<std::uint32_t>& tri, std::uint32_t threads) {
   std::vector<std::uint8_t> kept(tri.size() / 3);
-  forChunks(0, kept.size(), [&](std::size_t begin, std::size_t end) {
+  forChunksOn(threads, 0, kept.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t)
       kept[t] = tri[3 * t] != kGhost && tri[3 * t + 1] != kGhost && tri[3 * t + 2] != kGhost;
   });
@@ -77,11 +78,11 @@ std::vector<std::uint8_t> realSlots(const std::vector<std::uint32_t>& tri) {
 // few dropped slots (ghosts, mostly) cost anything beyond one pass. flags and labels, when
 // given, hold one value per slot and move with their triangles.
 void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t>* labels,
-             std::vector<std::uint8_t> kept) {
+             std::vector<std::uint8_t> kept, std::uint32_t threads) {
   std::vector<std::uint32_t>& tri = m.triangles;
   std::vector<std::int32_t>& adj = m.halfedges;
   std::vector<std::uint8_t>& fixed = m.constrained;
-  forChunks(0, kept.size(), [&](std::size_t begin, std::size_t end) {
+  forChunksOn(threads, 0, kept.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t) {
       if (!kept[t]) continue;
       for (std::size_t k = 0; k < 3; ++k) {
@@ -108,16 +109,10 @@ void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t
   if (labels) labels->resize(count);
 }
 
-void addProvenance(const Delaunay& d, Mesh& m, bool segments) {
-  const std::size_t edges = d.constraints.edgeCount();
-  if (edges == 0) return;
-  // Sized at once: the export is where the heap peaks, and doubling on the way would add
-  // half again of each array.
-  m.constraintEdges.reserve(edges);
-  m.sourceOffsets.reserve(edges + 1);
-  m.sources.reserve(edges + d.constraints.extraMembers());
-  m.sourceOffsets.push_back(0);
-  if (segments) m.segmentOffsets.push_back(0);
+// The provenance of the constrained half-edges in [first, last) (each edge listed from its
+// lower half-edge), appended to m's arrays; offsets continue from their last entries.
+void appendProvenance(const Delaunay& d, Mesh& m, bool segments, std::size_t first,
+                      std::size_t last, const Mesh& mesh) {
   // The store's table is far larger than the caches and its entries come in no useful order
   // here: the edges go in batches whose entries are touched first, so that their misses
   // overlap (bench/EXPERIMENTS.md).
@@ -125,8 +120,9 @@ void addProvenance(const Delaunay& d, Mesh& m, bool segments) {
   std::uint32_t edge[kBatch];
   std::uint64_t key[kBatch];
   std::size_t n = 0;
+  volatile std::uint64_t touched = 0;  // (one per thread: touch's loads are kept through it)
   const auto flush = [&] {
-    d.constraints.touch(key, n);
+    touched = d.constraints.touch(key, n);
     for (std::size_t k = 0; k < n; ++k) {
       const EdgeSource* src = d.constraints.find(key[k]);
       if (!src) continue;
@@ -139,13 +135,13 @@ void addProvenance(const Delaunay& d, Mesh& m, bool segments) {
     }
     n = 0;
   };
-  forChunks(0, m.triangles.size(), [&](std::size_t begin, std::size_t end) {
+  forChunks(first, last, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {
-      if (!m.constrained[e]) continue;
-      const std::int32_t twin = m.halfedges[e];
+      if (!mesh.constrained[e]) continue;
+      const std::int32_t twin = mesh.halfedges[e];
       if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;  // listed from its twin
-      const std::uint32_t u = m.triangles[e];
-      const std::uint32_t v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
+      const std::uint32_t u = mesh.triangles[e];
+      const std::uint32_t v = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
       edge[n] = static_cast<std::uint32_t>(e);
       key[n] = ConstraintStore::key(u, v);
       if (++n == kBatch) flush();
@@ -154,10 +150,52 @@ void addProvenance(const Delaunay& d, Mesh& m, bool segments) {
   flush();
 }
 
+void addProvenance(const Delaunay& d, Mesh& m, bool segments, std::uint32_t threads) {
+  const std::size_t edges = d.constraints.edgeCount();
+  if (edges == 0) return;
+  // Sized at once: the export is where the heap peaks, and doubling on the way would add
+  // half again of each array.
+  m.constraintEdges.reserve(edges);
+  m.sourceOffsets.reserve(edges + 1);
+  m.sources.reserve(edges + d.constraints.extraMembers());
+  m.sourceOffsets.push_back(0);
+  if (segments) m.segmentOffsets.push_back(0);
+  const std::size_t halfEdges = m.triangles.size();
+  if (!kThreadsBuilt || threads < 2 || edges < kParallelLoop) {
+    appendProvenance(d, m, segments, 0, halfEdges, m);
+    return;
+  }
+  // Side by side: each thread lists a range of half-edges into lists of its own (the first
+  // range straight into m), which are then appended in order, offsets moved on.
+  std::vector<Mesh> parts(threads - 1);
+  inParallel(threads, [&](std::uint32_t i) {
+    Mesh& into = i == 0 ? m : parts[i - 1];
+    if (i > 0) {
+      into.sourceOffsets.push_back(0);
+      if (segments) into.segmentOffsets.push_back(0);
+    }
+    appendProvenance(d, into, segments, halfEdges * i / threads, halfEdges * (i + 1) / threads, m);
+  });
+  for (const Mesh& part : parts) {
+    const std::uint32_t sourceBase = static_cast<std::uint32_t>(m.sources.size());
+    const std::uint32_t segmentBase = static_cast<std::uint32_t>(m.segmentSources.size());
+    m.constraintEdges.insert(m.constraintEdges.end(), part.constraintEdges.begin(),
+                             part.constraintEdges.end());
+    m.sources.insert(m.sources.end(), part.sources.begin(), part.sources.end());
+    for (std::size_t k = 1; k < part.sourceOffsets.size(); ++k)
+      m.sourceOffsets.push_back(sourceBase + part.sourceOffsets[k]);
+    if (!segments) continue;
+    m.segmentSources.insert(m.segmentSources.end(), part.segmentSources.begin(),
+                            part.segmentSources.end());
+    for (std::size_t k = 1; k < part.segmentOffsets.size(); ++k)
+      m.segmentOffsets.push_back(segmentBase + part.segmentOffsets[k]);
+  }
+}
+
 }  // namespace
 
 std::vector<std::int32_t> slotIndices(const Topology& topo) {
-  std::vector<std::uint8_t> kept = realSlots(topo.tri);
+  std::vector<std::uint8_t> kept = realSlots(topo.tri, 1);
   std::vector<std::int32_t> index(kept.size(), -1);
   for (std::size_t t = 0; t < kept.size(); ++t)
     if (kept[t]) index[t] = static_cast<std::int32_t>(t);
@@ -187,17 +225,19 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume,
     m.halfedges = topo.adj;
     m.constrained = topo.fixed;
   }
-  std::vector<std::uint8_t> kept = realSlots(m.triangles);
+  const std::uint32_t threads = d.options().threads;
+  std::vector<std::uint8_t> kept = realSlots(m.triangles, threads);
   if (options.keep == Keep::Inside)
-    forChunks(0, kept.size(), [&](std::size_t begin, std::size_t end) {
+    forChunksOn(threads, 0, kept.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t t = begin; t < end; ++t) kept[t] &= inside[t];
     });
   progress(Phase::Export, 1, 3);
-  compact(m, classify ? &inside : nullptr, options.regions ? &regions : nullptr, std::move(kept));
+  compact(m, classify ? &inside : nullptr, options.regions ? &regions : nullptr, std::move(kept),
+          threads);
   if (options.insideFlags) m.inside = std::move(inside);
   if (options.regions) m.regions = std::move(regions);
   progress(Phase::Export, 2, 3);
-  addProvenance(d, m, options.segmentSources);
+  addProvenance(d, m, options.segmentSources, threads);
   for (const SteinerVertex& s : d.steiner) {
     m.steiner.push_back(s.vertex);
     m.steinerParents.insert(m.steinerParents.end(), s.parents, s.parents + 3);

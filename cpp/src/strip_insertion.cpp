@@ -15,16 +15,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <string>
-#include <system_error>
-#include <thread>
 #include <utility>
 
 #include "delaunay.h"
 #include "first_triangle.h"
 #include "geocdt/predicates.h"
+#include "in_parallel.h"
 #include "insertion_order.h"
 #include "segment_inserter.h"
 #include "vertex_edges.h"
@@ -46,37 +44,6 @@ bool Delaunay::wantsStrips(std::uint32_t count) const {
 
 #ifdef GEOCDT_THREADS
 namespace {
-
-// Runs job(i) for i in [0, n): job(0) on the calling thread, the others on threads of their
-// own, or on the calling thread too where no thread can be started (a build without them, a
-// pool of workers used up). An exception in a job is caught there and rethrown here once all
-// have ended. Returns the threads that ran the jobs, the calling one included.
-template <typename Job>
-std::uint32_t inParallel(std::uint32_t n, Job job) {
-  std::vector<std::exception_ptr> failed(n);
-  const auto run = [&](std::uint32_t i) {
-    try {
-      job(i);
-    } catch (...) {
-      failed[i] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> threads;
-  std::vector<std::uint32_t> inline_;
-  for (std::uint32_t i = 1; i < n; ++i) {
-    try {
-      threads.emplace_back(run, i);
-    } catch (const std::system_error&) {
-      inline_.push_back(i);
-    }
-  }
-  run(0);
-  for (const std::uint32_t i : inline_) run(i);
-  for (std::thread& t : threads) t.join();
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
-  return static_cast<std::uint32_t>(threads.size()) + 1;
-}
 
 // The x values that cut count points into k strips of about equal size: strip s holds the
 // points with cuts[s - 1] <= x < cuts[s]. From a sample of the points, which is plenty for

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "constraint_invariants.h"
 #include "geocdt/triangulation.h"
@@ -181,5 +183,83 @@ TEST(Threads, ConstraintsAndMorePointsAfterTheStrips) {
   EXPECT_TRUE(testing::triangleSet(meshes[0]) == testing::triangleSet(meshes[1]));
 }
 
+TEST(Threads, ExportListsProvenanceAsOneThreadDoes) {
+  // More than 65,536 constrained edges, so that the provenance is listed side by side: one
+  // long ring through every point of a lattice row by row (each edge its own), plus lines
+  // across it, some edges shared by two polylines (an overlap).
+  testing::Polylines lines(1);
+  testing::Random random(31);
+  for (int y = 0; y < 300; ++y)
+    for (int k = 0; k < 300; ++k) {
+      const int x = y % 2 ? 299 - k : k;
+      lines[0].push_back(x + static_cast<double>(random.next() % 1000) / 4000);
+      lines[0].push_back(y + static_cast<double>(random.next() % 1000) / 4000);
+    }
+  for (int i = 0; i < 20; ++i) lines.push_back({0.5 + i * 10, 0.5, 290.5 - i * 10, 298.5});
+  lines.push_back({lines[0][0], lines[0][1], lines[0][2], lines[0][3]});  // the ring's first edge
+  Mesh meshes[3];
+  for (std::uint32_t threads = 1; threads <= 3; ++threads) {
+    Options options;
+    options.threads = threads;
+    Triangulation t(options);
+    std::vector<PolylineView> views;
+    for (const auto& line : lines) views.push_back({line.data(), line.size() / 2});
+    ASSERT_TRUE(t.insertPolylines(views.data(), views.size()).ok());
+    MeshOptions mo;
+    mo.segmentSources = true;
+    meshes[threads - 1] = t.mesh(mo);
+  }
+  ASSERT_GT(meshes[0].constraintEdges.size(), 65536u);
+  // The slots' order differs between thread counts (the ring's points went in as strips), so
+  // each edge's provenance is compared by its vertices (numbered alike), and the listing
+  // order checked: by half-edge, each edge once, from the lower of its two.
+  using Sources = std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>>;
+  const auto provenance = [](const Mesh& m) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, Sources> out;
+    for (std::size_t i = 0; i < m.constraintEdges.size(); ++i) {
+      const std::uint32_t e = m.constraintEdges[i];
+      const std::uint32_t u = m.triangles[e], v = m.triangles[e % 3 == 2 ? e - 2 : e + 1];
+      Sources& at = out[{std::min(u, v), std::max(u, v)}];
+      at.first.assign(m.sources.begin() + m.sourceOffsets[i],
+                      m.sources.begin() + m.sourceOffsets[i + 1]);
+      at.second.assign(m.segmentSources.begin() + m.segmentOffsets[i],
+                       m.segmentSources.begin() + m.segmentOffsets[i + 1]);
+    }
+    return out;
+  };
+  const auto expected = provenance(meshes[0]);
+  for (int r = 1; r < 3; ++r) {
+    const Mesh& m = meshes[r];
+    EXPECT_EQ(m.sourceOffsets.size(), m.constraintEdges.size() + 1);
+    EXPECT_EQ(m.segmentOffsets.size(), m.constraintEdges.size() + 1);
+    bool ordered = true;
+    for (std::size_t i = 0; i < m.constraintEdges.size(); ++i) {
+      const std::int32_t e = static_cast<std::int32_t>(m.constraintEdges[i]);
+      ordered &= (i == 0 || m.constraintEdges[i - 1] < m.constraintEdges[i]) &&
+                 (m.halfedges[e] < 0 || m.halfedges[e] > e);
+    }
+    EXPECT_TRUE(ordered) << r + 1 << " threads";
+    EXPECT_TRUE(provenance(m) == expected) << r + 1 << " threads";
+  }
+}
+
+TEST(Threads, CoordinatesCheckedSideBySideNameTheFirstBadPoint) {
+  // Bad values in both halves: the one in the first half is named, as one thread names it.
+  std::vector<double> xy = testing::uniformPoints(100000, 21);
+  xy[2 * 70000 + 1] = std::nan("");
+  xy[2 * 30000] = 1e200;
+  for (std::uint32_t threads = 1; threads <= 4; ++threads) {
+    Options options;
+    options.threads = threads;
+    Triangulation t(options);
+    const Status s = t.insertPoints(xy.data(), xy.size() / 2);
+    EXPECT_EQ(s.code, StatusCode::InvalidCoordinate) << threads;
+    EXPECT_EQ(s.index, 30000u) << threads;
+    EXPECT_EQ(s.message, "point 30000 has x = " + std::to_string(1e200) +
+                             ": coordinates must lie within +-1e150")
+        << threads;
+    EXPECT_EQ(t.vertexCount(), 0u) << threads;
+  }
+}
 }  // namespace
 }  // namespace geocdt
