@@ -170,11 +170,23 @@ void addProvenance(const Delaunay& d, Mesh& m, bool segments, std::uint32_t thre
   std::vector<Mesh> parts(threads - 1);
   inParallel(threads, [&](std::uint32_t i) {
     Mesh& into = i == 0 ? m : parts[i - 1];
+    const std::size_t first = halfEdges * i / threads, last = halfEdges * (i + 1) / threads;
     if (i > 0) {
+      // Sized at once, as above: the edges listed from this range, counted.
+      std::size_t listed = 0;
+      for (std::size_t e = first; e < last; ++e)
+        listed += m.constrained[e] && (m.halfedges[e] < 0 || std::size_t(m.halfedges[e]) > e);
+      into.constraintEdges.reserve(listed);
+      into.sourceOffsets.reserve(listed + 1);
+      into.sources.reserve(listed);
       into.sourceOffsets.push_back(0);
-      if (segments) into.segmentOffsets.push_back(0);
+      if (segments) {
+        into.segmentSources.reserve(listed);
+        into.segmentOffsets.reserve(listed + 1);
+        into.segmentOffsets.push_back(0);
+      }
     }
-    appendProvenance(d, into, segments, halfEdges * i / threads, halfEdges * (i + 1) / threads, m);
+    appendProvenance(d, into, segments, first, last, m);
   });
   for (const Mesh& part : parts) {
     const std::uint32_t sourceBase = static_cast<std::uint32_t>(m.sources.size());
