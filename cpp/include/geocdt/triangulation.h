@@ -76,8 +76,9 @@ struct Options {
   std::uint32_t valuesPerPoint = 1;
   // Threads for a large batch of points into an empty triangulation: the points are cut into
   // this many vertical strips, triangulated side by side and joined along their seams (the
-  // same triangles as one thread, README "How it works"). 1 runs everything on the calling
-  // thread; so does a batch too small to pay for the threads.
+  // same triangles as one thread, README "How it works"); the coordinate check and the
+  // export of a large mesh are shared out too. 1 runs everything on the calling thread; so
+  // does a batch too small to pay for the threads.
   std::uint32_t threads = 1;
 };
 
