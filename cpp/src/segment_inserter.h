@@ -98,6 +98,9 @@ class SegmentInserter {
   void bendThrough(std::uint32_t r, std::uint32_t l, std::uint32_t w);
   // The same through path[1 .. count - 2], from r = path[0] to l = path[count - 1].
   void bendAlong(const std::uint32_t* path, std::size_t count);
+  // Whether bending link u -> v through (wx, wy) passes over a vertex: one in the closed
+  // triangle u, w, v other than its corners (snap_rounding.cpp).
+  bool bendSweepsAVertex(std::uint32_t u, double wx, double wy, std::uint32_t v);
   // Link u -> v of segment g bent through w, with the vertices that would otherwise change
   // sides of it (those between g and u -> w or w -> v) on the way (snap_rounding.cpp).
   std::vector<std::uint32_t> bentLink(const InputSegment& g, std::uint32_t u, std::uint32_t w,

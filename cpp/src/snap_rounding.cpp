@@ -79,6 +79,18 @@ void searchTriangles(const Topology& topo, std::int32_t out, FirstVisit firstVis
     for (int i = 0; i < 3; ++i) consider(topo.adj[3 * found[k] + i] / 3);
 }
 
+// The same with a search of its own, for a few triangles: which were seen is kept in a map.
+template <class Meets>
+std::vector<std::int32_t> searchTrianglesFrom(const Topology& topo, std::int32_t out, Meets meets) {
+  EdgeMap<std::uint8_t> seen;
+  std::vector<std::int32_t> found;
+  searchTriangles(
+      topo, out,
+      [&](std::int32_t t) { return seen.insert(static_cast<std::uint32_t>(t), 1).second; }, meets,
+      found);
+  return found;
+}
+
 // The real triangles that may meet the points within `reach` of s, from the triangles around
 // s's first end.
 void trianglesNear(const Delaunay& d, std::int32_t out, const InputSegment& s, double reach,
@@ -187,24 +199,46 @@ std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, 
   const double* p = d_.xy.data();
   const InputSegment link{p[2 * piece.a], p[2 * piece.a + 1], p[2 * piece.b], p[2 * piece.b + 1]};
   const InputSegment edge{p[2 * r], p[2 * r + 1], p[2 * l], p[2 * l + 1]};
+  const InputSegment g = store.geometry(piece.src.segment, d_.xy);
+  const InputSegment t = store.geometry(crossedSegment, d_.xy);
+  // Whether both chains keep the guarantee through (x, y): within each bound, and at an end
+  // of each link or strictly between its ends along its segment.
+  const auto keeps = [&](double x, double y) {
+    const auto fits = [&](const InputSegment& s, std::uint32_t from, std::uint32_t to) {
+      if (!withinDistance(s, x, y, chainBoundExponent(s))) return false;
+      const auto at = [&](std::uint32_t v) { return p[2 * v] == x && p[2 * v + 1] == y; };
+      if (at(from) || at(to)) return true;
+      return signAlong(s, p[2 * from], p[2 * from + 1], x, y) *
+                 signAlong(s, x, y, p[2 * to], p[2 * to + 1]) >
+             0;
+    };
+    return fits(g, piece.a, piece.b) && fits(t, r, l);
+  };
+  // Whether bending both links through (x, y) sweeps over a vertex: one in the closed
+  // triangle between a link and its bent path, its corners aside.
+  const auto sweeps = [&](double x, double y) {
+    return bendSweepsAVertex(piece.a, x, y, piece.b) || bendSweepsAVertex(r, x, y, l);
+  };
+  // The rounded crossing, where it keeps the guarantee and passes no vertex over; else an
+  // end of either link that does (fuzz: in a tangle of sliver cells the rounded crossing lay
+  // beyond a vertex on which another chain's link ended, and the bent path went round that
+  // link); else the rounded crossing if it keeps the guarantee (its bend then takes the
+  // vertices between with it).
   double x, y;
   roundedCrossing(link, edge, x, y);
-  const std::uint32_t w = addCrossingVertex(x, y, failed);
-  if (failed) {
-    error_ = d_.lastError();
-    return kGhost;
+  std::uint32_t w = kGhost;
+  const bool roundedKeeps = keeps(x, y);
+  if (!roundedKeeps || sweeps(x, y))
+    for (const std::uint32_t v : {l, r, piece.b, piece.a})
+      if (w == kGhost && keeps(p[2 * v], p[2 * v + 1]) && !sweeps(p[2 * v], p[2 * v + 1])) w = v;
+  if (w == kGhost && roundedKeeps) {
+    w = addCrossingVertex(x, y, failed);
+    if (failed) {
+      error_ = d_.lastError();
+      return kGhost;
+    }
   }
-  p = d_.xy.data();
-  const double wx = p[2 * w], wy = p[2 * w + 1];
-  const auto keeps = [&](const InputSegment& g, std::uint32_t from, std::uint32_t to) {
-    if (!withinDistance(g, wx, wy, chainBoundExponent(g))) return false;
-    if (w == from || w == to) return true;
-    return signAlong(g, p[2 * from], p[2 * from + 1], wx, wy) *
-               signAlong(g, wx, wy, p[2 * to], p[2 * to + 1]) >
-           0;
-  };
-  if (!keeps(store.geometry(piece.src.segment, d_.xy), piece.a, piece.b) ||
-      !keeps(store.geometry(crossedSegment, d_.xy), r, l)) {
+  if (w == kGhost) {
     failed = true;
     error_ = {StatusCode::InternalError,
               "snap rounding found no vertex within the bound where two links cross"};
@@ -215,8 +249,7 @@ std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, 
   // replaced by its links, the first on top; the crossed link's go above it.
   const std::size_t at = pieces_.size() - 1;
   std::vector<std::uint32_t> path;
-  if (w != piece.a && w != piece.b)
-    path = bentLink(store.geometry(piece.src.segment, d_.xy), piece.a, w, piece.b);
+  if (w != piece.a && w != piece.b) path = bentLink(g, piece.a, w, piece.b);
   if (w != r && w != l) {  // (else w split it already: it lay on it)
     const std::vector<std::uint32_t> bent =
         bentLink(store.geometry(crossedSegment, d_.xy), r, w, l);
@@ -231,6 +264,41 @@ std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, 
   return kGhost;
 }
 
+bool SegmentInserter::bendSweepsAVertex(std::uint32_t u, double wx, double wy, std::uint32_t v) {
+  const double* p = d_.xy.data();
+  const double ux = p[2 * u], uy = p[2 * u + 1], vx = p[2 * v], vy = p[2 * v + 1];
+  if ((wx == ux && wy == uy) || (wx == vx && wy == vy)) return false;  // no bend
+  const int turn = int(orient2d(ux, uy, wx, wy, vx, vy));
+  const double minX = std::fmin(std::fmin(ux, vx), wx), maxX = std::fmax(std::fmax(ux, vx), wx);
+  const double minY = std::fmin(std::fmin(uy, vy), wy), maxY = std::fmax(std::fmax(uy, vy), wy);
+  const auto inside = [&](double x, double y) {
+    if ((x == ux && y == uy) || (x == vx && y == vy) || (x == wx && y == wy)) return false;
+    if (x < minX || x > maxX || y < minY || y > maxY) return false;
+    const int a = int(orient2d(ux, uy, wx, wy, x, y)), b = int(orient2d(wx, wy, vx, vy, x, y));
+    const int c = int(orient2d(vx, vy, ux, uy, x, y));
+    if (turn == 0) return a == 0 && b == 0 && c == 0;  // the bend runs along the link
+    return a * turn >= 0 && b * turn >= 0 && c * turn >= 0;
+  };
+  // The triangles that meet the triangle's box, from u's (a convex region: connected).
+  const std::int32_t out = edgeOutOf(u);
+  if (out < 0) return true;
+  const std::vector<std::int32_t> found =
+      searchTrianglesFrom(d_.topo, out, [&](const std::uint32_t* c) {
+        double lox = INFINITY, hix = -INFINITY, loy = INFINITY, hiy = -INFINITY;
+        for (int k = 0; k < 3; ++k) {
+          lox = std::fmin(lox, p[2 * c[k]]), hix = std::fmax(hix, p[2 * c[k]]);
+          loy = std::fmin(loy, p[2 * c[k] + 1]), hiy = std::fmax(hiy, p[2 * c[k] + 1]);
+        }
+        return lox <= maxX && hix >= minX && loy <= maxY && hiy >= minY;
+      });
+  for (const std::int32_t t : found)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t c = d_.topo.tri[3 * t + k];
+      if (inside(p[2 * c], p[2 * c + 1])) return true;
+    }
+  return false;
+}
+
 std::vector<std::uint32_t> SegmentInserter::bentLink(const InputSegment& g, std::uint32_t u,
                                                      std::uint32_t w, std::uint32_t v) {
   // Such vertices lie within g's bound of the new links (between g and a link whose ends are
@@ -243,16 +311,11 @@ std::vector<std::uint32_t> SegmentInserter::bentLink(const InputSegment& g, std:
   std::vector<std::uint32_t> path{u, w, v};
   const std::int32_t out = edgeOutOf(u);
   if (out < 0) return path;
-  EdgeMap<std::uint8_t> seen;
-  std::vector<std::int32_t> found;
-  searchTriangles(
-      d_.topo, out,
-      [&](std::int32_t t) { return seen.insert(static_cast<std::uint32_t>(t), 1).second; },
-      [&](const std::uint32_t* c) {
+  const std::vector<std::int32_t> found =
+      searchTrianglesFrom(d_.topo, out, [&](const std::uint32_t* c) {
         const double *c0 = p + 2 * c[0], *c1 = p + 2 * c[1], *c2 = p + 2 * c[2];
         return mayMeet(first, reach, c0, c1, c2) || mayMeet(second, reach, c0, c1, c2);
-      },
-      found);
+      });
   std::vector<std::uint32_t> others;
   for (const std::int32_t t : found)
     for (int k = 0; k < 3; ++k) {

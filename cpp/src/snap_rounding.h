@@ -13,8 +13,8 @@
 // Each vertex of a chain lies within sqrt(2)/2 spacings of its segment, each link between
 // two of them too, well inside the documented bound of two spacings. Where links still
 // cross (uneven spacing), both bend through the rounded crossing, taking with them every
-// vertex that lies between a bent link and its segment. Fuzzing still finds tangles that span
-// binades near zero where the bends leave two chains crossing (tests/fuzz/README.md).
+// vertex that lies between a bent link and its segment; where that bend would pass a vertex
+// over, through an end of one of the two links instead (tests/fuzz/findings/README.md).
 #include <cstdint>
 
 #include "delaunay.h"
