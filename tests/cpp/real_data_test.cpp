@@ -142,7 +142,7 @@ void addRing(const std::vector<double>& ring, double x, double y, RingTest& r) {
   }
 }
 
-void checkRegions(const std::string& name, std::size_t samples) {
+void checkRegions(const std::string& name, std::size_t samples, std::uint32_t threads = 1) {
   const Loaded l = load(name + ".gpl");
   std::vector<std::int32_t> polygonOf;
   ASSERT_EQ(
@@ -161,7 +161,9 @@ void checkRegions(const std::string& name, std::size_t samples) {
     }
   }
   const std::vector<PolylineView> views = l.set.views();
-  Triangulation t;
+  Options options;
+  options.threads = threads;
+  Triangulation t(options);
   ASSERT_TRUE(t.insertPolylines(views.data(), views.size()).ok());
   MeshOptions mo;
   mo.regions = true;
@@ -235,6 +237,13 @@ TEST(RealData, RegionsOfNaturalEarth110mCountries) { checkRegions("ne_110m_rings
 TEST(RealData, RegionsOfNaturalEarth50mCountries) { checkRegions("ne_50m_rings", 3000); }
 TEST(RealData, RegionsOfNaturalEarth10mCountries) { checkRegions("ne_10m_rings", 1000); }
 TEST(RealData, RegionsOfUsCounties) { checkRegions("us_counties_rings", 10000); }
+// The same on 2 and 4 threads: the strips, then the export's loops side by side.
+class RegionsOnThreads : public ::testing::TestWithParam<std::uint32_t> {};
+TEST_P(RegionsOnThreads, NaturalEarth10mCountries) {
+  checkRegions("ne_10m_rings", 1000, GetParam());
+}
+TEST_P(RegionsOnThreads, UsCounties) { checkRegions("us_counties_rings", 10000, GetParam()); }
+INSTANTIATE_TEST_SUITE_P(Threads, RegionsOnThreads, ::testing::Values(2u, 4u));
 
 TEST(RealData, CountriesAsPointsAndScaled) {
   // The same vertices as a point set, and the 50m rings scaled and moved far away.
