@@ -65,15 +65,15 @@ inline constexpr std::size_t kParallelLoop = std::size_t{1} << 16;
 // range on one thread where the loop is short). body must touch only what its indices own.
 template <typename Body>
 void forChunksOn(std::uint32_t threads, std::size_t first, std::size_t last, Body body) {
-#ifdef GEOCDT_THREADS
-  if (threads > 1 && last - first >= kParallelLoop) {
-    const std::size_t n = last - first;
-    inParallel(threads, [&](std::uint32_t i) {
-      forChunks(first + n * i / threads, first + n * (i + 1) / threads, body);
-    });
-    return;
+  if constexpr (kThreadsBuilt) {
+    if (threads > 1 && last - first >= kParallelLoop) {
+      const std::size_t n = last - first;
+      inParallel(threads, [&](std::uint32_t i) {
+        forChunks(first + n * i / threads, first + n * (i + 1) / threads, body);
+      });
+      return;
+    }
   }
-#endif
   (void)threads;
   forChunks(first, last, body);
 }

@@ -109,9 +109,17 @@ void compact(Mesh& m, std::vector<std::uint8_t>* flags, std::vector<std::int32_t
   if (labels) labels->resize(count);
 }
 
-// The provenance of the constrained half-edges in [first, last) (each edge listed from its
-// lower half-edge), appended to m's arrays; offsets continue from their last entries.
-void appendProvenance(const Delaunay& d, Mesh& m, bool segments, std::size_t first,
+// Whether half-edge e lists its edge's provenance: a constrained edge is listed once, from
+// the lower of its two half-edges.
+bool listsItsEdge(const Mesh& mesh, std::size_t e) {
+  const std::int32_t twin = mesh.halfedges[e];
+  return mesh.constrained[e] && (twin < 0 || static_cast<std::size_t>(twin) > e);
+}
+
+// The provenance of the edges listed from mesh's half-edges [first, last), appended to
+// into's arrays (mesh itself or arrays of their own); offsets continue from their last
+// entries.
+void appendProvenance(const Delaunay& d, Mesh& into, bool segments, std::size_t first,
                       std::size_t last, const Mesh& mesh) {
   // The store's table is far larger than the caches and its entries come in no useful order
   // here: the edges go in batches whose entries are touched first, so that their misses
@@ -126,20 +134,19 @@ void appendProvenance(const Delaunay& d, Mesh& m, bool segments, std::size_t fir
     for (std::size_t k = 0; k < n; ++k) {
       const EdgeSource* src = d.constraints.find(key[k]);
       if (!src) continue;
-      m.constraintEdges.push_back(edge[k]);
-      d.constraints.forEachPolyline(*src, [&m](std::uint32_t p) { m.sources.push_back(p); });
-      m.sourceOffsets.push_back(static_cast<std::uint32_t>(m.sources.size()));
+      into.constraintEdges.push_back(edge[k]);
+      d.constraints.forEachPolyline(*src, [&into](std::uint32_t p) { into.sources.push_back(p); });
+      into.sourceOffsets.push_back(static_cast<std::uint32_t>(into.sources.size()));
       if (!segments) continue;
-      d.constraints.forEachSegment(*src, [&m](std::uint32_t i) { m.segmentSources.push_back(i); });
-      m.segmentOffsets.push_back(static_cast<std::uint32_t>(m.segmentSources.size()));
+      d.constraints.forEachSegment(*src,
+                                   [&into](std::uint32_t i) { into.segmentSources.push_back(i); });
+      into.segmentOffsets.push_back(static_cast<std::uint32_t>(into.segmentSources.size()));
     }
     n = 0;
   };
   forChunks(first, last, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {
-      if (!mesh.constrained[e]) continue;
-      const std::int32_t twin = mesh.halfedges[e];
-      if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;  // listed from its twin
+      if (!listsItsEdge(mesh, e)) continue;
       const std::uint32_t u = mesh.triangles[e];
       const std::uint32_t v = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
       edge[n] = static_cast<std::uint32_t>(e);
@@ -174,8 +181,7 @@ void addProvenance(const Delaunay& d, Mesh& m, bool segments, std::uint32_t thre
     if (i > 0) {
       // Sized at once, as above: the edges listed from this range, counted.
       std::size_t listed = 0;
-      for (std::size_t e = first; e < last; ++e)
-        listed += m.constrained[e] && (m.halfedges[e] < 0 || std::size_t(m.halfedges[e]) > e);
+      for (std::size_t e = first; e < last; ++e) listed += listsItsEdge(m, e);
       into.constraintEdges.reserve(listed);
       into.sourceOffsets.reserve(listed + 1);
       into.sources.reserve(listed);

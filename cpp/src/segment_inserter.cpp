@@ -37,14 +37,14 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     const Walk w = walk(piece.a, piece.b);
     if (w.reached == kGhost && w.blocking < 0)
       return broken("lost the segment while walking along it");
+    if (w.blocking >= 0 && crossings_ == Crossings::Snapped) {
+      if (!snapCrossing(piece, w.blocking)) return Outcome::Broken;
+      continue;  // the piece and the crossed link re-routed
+    }
     if (w.blocking >= 0) {
       const std::size_t depth = pieces_.size();
       const std::uint32_t vertices = d_.vertexCount();
-      bool failed = false;
-      const std::uint32_t x = crossings_ == Crossings::Computed
-                                  ? resolveCrossing(piece, w.blocking)
-                                  : snapCrossing(piece, w.blocking, failed);
-      if (failed) return Outcome::Broken;
+      const std::uint32_t x = resolveCrossing(piece, w.blocking);
       if (d_.vertexCount() == vertices) ++reroutes;
       if (x == kGhost) continue;  // the crossed constraint now bends through this piece's end
       // Split this piece at x: first a -> x, then x -> b, below any re-routed pieces.

@@ -89,9 +89,10 @@ class SegmentInserter {
   std::uint32_t resolveCrossing(const Piece& piece, std::int32_t h);
   std::uint32_t split(const Crossing& c, double x, double y);
   std::uint32_t meetAtAnEnd(const Crossing& c, double x, double y);
-  // The same in Crossings::Snapped mode (snap_rounding.cpp); kGhost with error_ set when no
-  // vertex keeps the guarantee (never seen).
-  std::uint32_t snapCrossing(const Piece& piece, std::int32_t h, bool& failed);
+  // The same in Crossings::Snapped mode (snap_rounding.cpp): the piece (on top of the stack)
+  // and the crossed link are replaced by their bent links. False with error_ set when no
+  // vertex keeps the guarantee (never seen) or the crossing could not be inserted.
+  bool snapCrossing(const Piece& piece, std::int32_t h);
   // A vertex at (x, y): a new one, or the one already there; failed when location failed.
   std::uint32_t addCrossingVertex(double x, double y, bool& failed);
   // The constrained edge r-l, if it still is one, becomes the pieces r -> w -> l to insert.

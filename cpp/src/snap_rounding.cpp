@@ -183,17 +183,16 @@ struct Crossing {
 }  // namespace
 
 // Crossings::Snapped: links of snap-rounded chains never cross where the spacing of doubles
-// is even; where it is not, two links may. Then both pass through the vertex of the
-// rounding cell of their crossing (ISR's step), which must keep the guarantee for both input
-// segments, or this is a bug to report.
-std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, bool& failed) {
+// is even; where it is not, two links may. Then both pass through one vertex: that of the
+// rounding cell of their crossing (ISR's step) or an end of one of the links (below), which
+// must keep the guarantee for both input segments, or this is a bug to report.
+bool SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h) {
   const ConstraintStore& store = d_.constraints;
   const std::uint32_t r = d_.topo.tri[h], l = d_.topo.tri[nextEdge(h)];
   const EdgeSource* crossed = store.find(r, l);
   if (!crossed) {
-    failed = true;
     error_ = {StatusCode::InternalError, "a constrained edge without a source"};
-    return kGhost;
+    return false;
   }
   const std::uint32_t crossedSegment = crossed->segment;
   const double* p = d_.xy.data();
@@ -232,17 +231,17 @@ std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, 
     for (const std::uint32_t v : {l, r, piece.b, piece.a})
       if (w == kGhost && keeps(p[2 * v], p[2 * v + 1]) && !sweeps(p[2 * v], p[2 * v + 1])) w = v;
   if (w == kGhost && roundedKeeps) {
+    bool failed = false;
     w = addCrossingVertex(x, y, failed);
     if (failed) {
       error_ = d_.lastError();
-      return kGhost;
+      return false;
     }
   }
   if (w == kGhost) {
-    failed = true;
     error_ = {StatusCode::InternalError,
               "snap rounding found no vertex within the bound where two links cross"};
-    return kGhost;
+    return false;
   }
   // Both bend through w, and through any vertex the bend would otherwise pass over (fuzz: a
   // link bent past the end of another segment's chain, which then crossed it). The piece is
@@ -251,17 +250,16 @@ std::uint32_t SegmentInserter::snapCrossing(const Piece& piece, std::int32_t h, 
   std::vector<std::uint32_t> path;
   if (w != piece.a && w != piece.b) path = bentLink(g, piece.a, w, piece.b);
   if (w != r && w != l) {  // (else w split it already: it lay on it)
-    const std::vector<std::uint32_t> bent =
-        bentLink(store.geometry(crossedSegment, d_.xy), r, w, l);
+    const std::vector<std::uint32_t> bent = bentLink(t, r, w, l);
     bendAlong(bent.data(), bent.size());
   }
-  if (path.empty()) return kGhost;  // the piece stays as it is; the crossed link moved
+  if (path.empty()) return true;  // the piece stays as it is; the crossed link moved
   pieces_.erase(pieces_.begin() + static_cast<std::ptrdiff_t>(at));
   std::vector<Piece> links;
   for (std::size_t k = path.size() - 1; k > 0; --k)
     links.push_back({path[k - 1], path[k], piece.src});
   pieces_.insert(pieces_.begin() + static_cast<std::ptrdiff_t>(at), links.begin(), links.end());
-  return kGhost;
+  return true;
 }
 
 bool SegmentInserter::bendSweepsAVertex(std::uint32_t u, double wx, double wy, std::uint32_t v) {
