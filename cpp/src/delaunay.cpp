@@ -172,7 +172,7 @@ std::int32_t Delaunay::addSlots(std::int32_t n) {
     return first;
   }
   const std::int32_t first = topo.slotCount();
-  topo.resizeSlots(static_cast<std::size_t>(first) + static_cast<std::size_t>(n));
+  topo.appendSlots(static_cast<std::size_t>(n));
   return first;
 }
 

@@ -183,8 +183,13 @@ class Refiner {
   void record(std::uint32_t v, std::uint32_t a, std::uint32_t b, std::uint32_t c, double wa,
               double wb, double wc) {
     d_.steiner.push_back({v, {a, b, c}, {wa, wb, wc}});
-    steinerFlag_.resize(d_.vertexCount(), 0);
-    steinerFlag_[v] = 1;
+    // v is usually the newest vertex: one push_back, not resize's general path.
+    if (v < steinerFlag_.size()) {
+      steinerFlag_[v] = 1;
+    } else {
+      steinerFlag_.resize(v, 0);
+      steinerFlag_.push_back(1);
+    }
     ++added_;
   }
   bool onSubsegment(std::uint32_t v) const { return v < onSubsegment_.size() && onSubsegment_[v]; }

@@ -62,7 +62,13 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     if (w.reached != piece.b && chainBendsAt(w.reached))
       d_.constraints.forEachSegment(piece.src,
                                     [&](std::uint32_t i) { touchedSegments_.push_back(i); });
-    pieces_.back().a = w.reached;
+    // Done with the piece when it reached its end (most do): popped at once, where writing
+    // its new start and reading the piece back in the next round stalled on the store.
+    if (w.reached == piece.b) {
+      pieces_.pop_back();
+    } else {
+      pieces_.back().a = w.reached;
+    }
     ++d_.stats.segments;
   }
   return Outcome::Inserted;

@@ -39,6 +39,16 @@ struct Topology {
     fixed.clear();
   }
 
+  // n more slots, zeroed. An insertion adds two at a time: element by element, cheaper than
+  // resize's general path for so few (bench/EXPERIMENTS.md, Refinement 8).
+  void appendSlots(std::size_t n) {
+    for (std::size_t k = 0; k < 3 * n; ++k) {
+      tri.push_back(0);
+      adj.push_back(0);
+      fixed.push_back(0);
+    }
+  }
+
   // Exactly `slots` slots: new ones zeroed, removed ones' memory kept for later growth.
   void resizeSlots(std::size_t slots) {
     tri.resize(3 * slots);
