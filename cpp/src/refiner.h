@@ -192,6 +192,16 @@ class Refiner {
     }
     ++added_;
   }
+  // The input segment a vertex made by splitting a subsegment lies on (the first segment of
+  // the edge it split, which both its subsegments keep), or kNoSegment: smallInputAngle then
+  // needs no turn round it and no store lookups.
+  std::uint32_t segmentAt(std::uint32_t v) const {
+    return v < segmentAt_.size() ? segmentAt_[v] : kNoSegment;
+  }
+  void noteSegment(std::uint32_t v, std::uint32_t segment) {
+    if (segmentAt_.size() <= v) segmentAt_.resize(v + 1, kNoSegment);
+    segmentAt_[v] = segment;
+  }
   bool onSubsegment(std::uint32_t v) const { return v < onSubsegment_.size() && onSubsegment_[v]; }
   void markOnSubsegment(std::uint32_t v) {
     onSubsegment_.resize(d_.vertexCount(), 0);
@@ -212,6 +222,7 @@ class Refiner {
   // Per vertex: 1 for an end of a subsegment. Most vertices are on none, and smallInputAngle
   // learns that here instead of turning round them.
   std::vector<std::uint8_t> onSubsegment_;
+  std::vector<std::uint32_t> segmentAt_;  // per vertex (see segmentAt)
   std::vector<std::uint32_t> stamp_;  // per slot: the large cavity search (or count) that saw it
   std::uint32_t epoch_ = 0;
   std::vector<Subsegment> subsegments_;

@@ -68,6 +68,10 @@ bool Refiner::smallInputAngle(std::uint32_t p, std::uint32_t q) const {
     std::uint64_t id;
   };
   const auto segmentsAt = [&](std::uint32_t u, Through* out) {
+    if (const std::uint32_t segment = segmentAt(u); segment != kNoSegment) {
+      out[0] = {d_.constraints.geometry(segment, d_.xy), segment};
+      return 1;
+    }
     int n = 0;
     const std::int32_t start = vertexEdge_[u];
     std::int32_t e = start;
@@ -177,6 +181,7 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   }
   const std::uint32_t p = newVertex(px, py);
   markOnSubsegment(p);
+  if (input) noteSegment(p, static_cast<std::uint32_t>(id));
   if (topo_.fixed[e]) d_.constraints.split(a, b, p);
   const auto hullEdge = hullOf_.find(ConstraintStore::key(a, b));
   if (hullEdge != hullOf_.end()) {
