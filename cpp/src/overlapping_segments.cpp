@@ -10,7 +10,7 @@ namespace geocdt {
 
 bool runsAlongAnotherSegment(const Delaunay& d, const std::vector<std::int32_t>& vertexEdge,
                              std::uint32_t a, std::uint32_t b, std::uint64_t segment,
-                             const InputSegment& s) {
+                             const InputSegment& s, unsigned splitEnds) {
   const Topology& topo = d.topo;
   const ConstraintStore& store = d.constraints;
   const double* p = d.xy.data();
@@ -40,7 +40,10 @@ bool runsAlongAnotherSegment(const Delaunay& d, const std::vector<std::int32_t>&
     along = withinDistance(t, p[2 * a], p[2 * a + 1], bound) &&
             withinDistance(t, p[2 * b], p[2 * b + 1], bound);
   };
+  if (splitEnds != 0)
+    if (const EdgeSource* src = store.find(a, b)) store.forEachSegment(*src, check);
   for (const std::uint32_t u : {a, b}) {
+    if (splitEnds & (u == a ? 1u : 2u)) continue;
     const std::int32_t start = vertexEdge[u];
     std::int32_t h = start;
     do {

@@ -12,8 +12,11 @@ namespace geocdt {
 // Whether the constrained edge a-b, which stands for input segment `segment` (geometry s),
 // lies within the bound of another input segment not on s's line. The segments looked at are
 // those of the constrained edges at a and b; vertexEdge gives a half-edge out of each vertex.
+// An end flagged in `splitEnds` (bit 0: a, bit 1: b) was made by splitting a constrained edge
+// of this chain, so its two constrained edges carry what a-b carries: a-b's are looked at
+// for it, with no turn round it.
 bool runsAlongAnotherSegment(const Delaunay& d, const std::vector<std::int32_t>& vertexEdge,
                              std::uint32_t a, std::uint32_t b, std::uint64_t segment,
-                             const InputSegment& s);
+                             const InputSegment& s, unsigned splitEnds = 0);
 
 }  // namespace geocdt

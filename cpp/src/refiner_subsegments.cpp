@@ -153,7 +153,10 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   };
   bool fits = fitsAt(px, py, bounded);
   // Left whole where another input segment runs along it ulps away (overlapping_segments.h).
-  if (fits && input && runsAlongAnotherSegment(d_, vertexEdge_, a, b, id, s)) fits = false;
+  const unsigned splitEnds =
+      (segmentAt(a) != kNoSegment ? 1u : 0u) | (segmentAt(b) != kNoSegment ? 2u : 0u);
+  if (fits && input && runsAlongAnotherSegment(d_, vertexEdge_, a, b, id, s, splitEnds))
+    fits = false;
   if (hull) {
     // On the hull the point must neither fall inside (the hull would turn reflex) nor
     // beyond the hull's next edges (the hull would wrap round it, and the vertices it wraps
