@@ -184,6 +184,7 @@ class ConstraintStore {
   }
 
   std::size_t edgeCount() const { return edges_.size(); }
+  void scatter() { edges_.scatter(); }
   // Room for edges in all, between vertex ids mostly below idBound (see EdgeSlot).
   void reserve(std::size_t edges, std::uint64_t idBound) {
     edges_.orderIds(idBound);

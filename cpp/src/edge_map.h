@@ -34,7 +34,10 @@ struct HashedSlot {
 // on almost every edge (bench/EXPERIMENTS.md, 26). Ids crowding some slots (one vertex with
 // thousands of edges, ids far past the bound) make long probe runs: when the inserts into a
 // table have probed more than kMeanRun slots each on average, it turns to hashed slots for
-// good, so a table never costs more than a few times what a hashed one would.
+// good, so a table never costs more than a few times what a hashed one would. Refinement,
+// whose new vertices take ids far past the bound, turns it at its start (scatter()): those
+// ids wrapped onto the full low slots (US counties: 22 probes an insert once hashed by
+// blocks of ids, 3.7 with the whole key hashed; bench/EXPERIMENTS.md, Refinement 11).
 struct EdgeSlot {
   static constexpr bool kAdaptive = true;
   std::uint64_t scale = 1 << 16;  // slots per vertex id, 16.16 fixed point
@@ -53,12 +56,8 @@ struct EdgeSlot {
     return !was;
   }
   std::size_t operator()(std::uint64_t key, std::size_t capacity) const {
-    const std::uint64_t u = key >> 32, v = key & 0xFFFFFFFFu;
-    if (hashed) {  // blocks of 8 ids, u picking a pair of slots within 16
-      const std::uint64_t block =
-          ((u >> 3) * 0x9E3779B97F4A7C15ull) ^ ((v >> 3) * 0xC2B2AE3D27D4EB4Full);
-      return scaled(block >> 32, capacity >> 4) << 4 | static_cast<std::size_t>(u & 7) << 1;
-    }
+    if (hashed) return HashedSlot()(key, capacity);
+    const std::uint64_t u = key >> 32;
     const std::size_t s = static_cast<std::size_t>((u * scale) >> 16);
     return s < capacity ? s : s % capacity;
   }
@@ -139,6 +138,11 @@ class EdgeMap {
   // The key order for slots that keep one (EdgeSlot): ids up to about idBound, from the
   // next time the table is sized.
   void orderIds(std::uint64_t idBound) { idBound_ = idBound; }
+  // Turns the slots to hashed ones for good (EdgeSlot), laying the table out again.
+  void scatter() {
+    if constexpr (Slot::kAdaptive)
+      if (slot_.scatter()) grow(entries_.size());
+  }
   // Whether long probe runs turned the slots to hashed ones (EdgeSlot).
   bool scattered() const {
     if constexpr (Slot::kAdaptive) return slot_.hashed;

@@ -358,6 +358,8 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
 
 Status Refiner::run() {
   if (!d_.built()) return Status::success();
+  // Steiner vertices take ids past the constraint store's id-ordered slots (EdgeSlot).
+  d_.constraints.scatter();
   rebuild();
   steinerFlag_.assign(d_.vertexCount(), 0);
   for (const SteinerVertex& s : d_.steiner) steinerFlag_[s.vertex] = 1;
