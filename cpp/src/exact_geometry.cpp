@@ -409,26 +409,6 @@ bool withinDistance(const InputSegment& s, double x, double y, int e) {
   return compare(product(cross, cross), product(r2, length2)) <= 0;
 }
 
-bool pointOnSegment(const InputSegment& s, double t, double& x, double& y) {
-  const double magnitude = std::fmax(std::fmax(std::fabs(s.ax), std::fabs(s.ay)),
-                                     std::fmax(std::fabs(s.bx), std::fabs(s.by)));
-  // Above 2^-900 the parts lost to underflow are far below a spacing; below 2^1000 the
-  // differences stay finite.
-  if (!(t >= 0 && t <= 1) || !(magnitude > 0x1p-900 && magnitude < 0x1p1000)) return false;
-  // a + t (b - a): b - a and t times its high part exactly, the low parts summed apart (their
-  // errors are a few units of 2^-106 of the magnitude), then one rounding.
-  const auto along = [t](double a, double b) {
-    const DoubleDouble d = exactDifference(b, a);
-    double product, error;
-    detail::two_product(t, d.hi, product, error);
-    const DoubleDouble sum = exactSum(a, product);
-    return sum.hi + (sum.lo + (error + t * d.lo));
-  };
-  x = along(s.ax, s.bx);
-  y = along(s.ay, s.by);
-  return true;
-}
-
 int signAlong(const InputSegment& s, double px, double py, double qx, double qy) {
   const double ux = qx - px, uy = qy - py, dx = s.bx - s.ax, dy = s.by - s.ay;
   const double v = ux * dx + uy * dy;

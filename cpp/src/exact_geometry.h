@@ -45,14 +45,6 @@ bool segmentMeetsCell(const InputSegment& s, double x, double y);
 // Whether (x, y) lies within 2^e of the closed segment s (Euclidean distance).
 bool withinDistance(const InputSegment& s, double x, double y, int e);
 
-// The point a + t (b - a) of s for t in [0, 1], each coordinate rounded once from that exact
-// point of s (to within half a spacing, and a few units of 2^-106 of the magnitude), so that
-// it lies within the chains' bound of s, 2^chainBoundExponent(s), by construction: at most
-// sqrt(2) / 2 spacings of s's largest coordinate away, where the bound is two. False, with x
-// and y unset, where that is not certain: t outside [0, 1], coordinates near underflow or
-// overflow.
-bool pointOnSegment(const InputSegment& s, double t, double& x, double& y);
-
 // Whether s and t cross in one point inside both (exactly).
 bool crossProperly(const InputSegment& s, const InputSegment& t);
 

@@ -132,12 +132,7 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
     f = acuteA ? n / length : 1 - n / length;
   }
   const double t = ta + (tb - ta) * f;
-  // Built so that it lies within the chains' bound of the segment: then the exact check of
-  // that (most of a split's cost on country borders, its filter undecided for a point ulps
-  // from the segment) is not needed.
-  double px, py;
-  const bool bounded = input && pointOnSegment(s, t, px, py);
-  if (!bounded) px = (1 - t) * s.ax + t * s.bx, py = (1 - t) * s.ay + t * s.by;
+  double px = (1 - t) * s.ax + t * s.bx, py = (1 - t) * s.ay + t * s.by;
   const bool hull = topo_.isGhost(topo_.adj[e] / 3);
   const auto strictlyBetween = [&](double qx, double qy) {
     const int along = signAlong(s, x(a), y(a), x(b), y(b));
@@ -146,12 +141,12 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   };
   // The four triangles around the point must be counter-clockwise, and a constrained
   // edge's point within the bound of its segment, strictly between the ends along it.
-  const auto fitsAt = [&](double qx, double qy, bool withinBound) {
+  const auto fitsAt = [&](double qx, double qy) {
     if (!ccw(c, a, qx, qy) || !ccw(b, c, qx, qy) || !strictlyBetween(qx, qy)) return false;
     if (!hull && !(ccw(a, dv, qx, qy) && ccw(dv, b, qx, qy))) return false;
-    return !input || withinBound || withinDistance(s, qx, qy, chainBoundExponent(s));
+    return !input || withinDistance(s, qx, qy, chainBoundExponent(s));
   };
-  bool fits = fitsAt(px, py, bounded);
+  bool fits = fitsAt(px, py);
   // Left whole where another input segment runs along it ulps away (overlapping_segments.h).
   const unsigned splitEnds =
       (segmentAt(a) != kNoSegment ? 1u : 0u) | (segmentAt(b) != kNoSegment ? 2u : 0u);
@@ -170,8 +165,8 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
     for (int k = 0; k < 9 && !fits; ++k) {
       px = k % 3 == 0 ? x0 : std::nextafter(x0, k % 3 == 1 ? -INFINITY : INFINITY);
       py = k / 3 == 0 ? y0 : std::nextafter(y0, k / 3 == 1 ? -INFINITY : INFINITY);
-      fits = !ccw(a, b, px, py) && !ccw(a, before, px, py) && !ccw(after, b, px, py) &&
-             fitsAt(px, py, bounded && k == 0);
+      fits =
+          !ccw(a, b, px, py) && !ccw(a, before, px, py) && !ccw(after, b, px, py) && fitsAt(px, py);
     }
   }
   if (!fits) {

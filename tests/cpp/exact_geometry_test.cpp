@@ -254,45 +254,5 @@ TEST(ExactGeometry, DistanceAndOrderAgreeWithRationals) {
   }
 }
 
-// Refinement splits input segments at points built by pointOnSegment and skips the exact
-// check of the chains' bound for them: each coordinate must be within half a spacing (and a
-// hair) of the exact point a + t (b - a), hence within the bound, checked here in rationals.
-TEST(ExactGeometry, PointsBuiltOnASegmentStayWithinTheChainBound) {
-  Coordinates c(6);
-  testing::Random r(7);
-  int built = 0, plainFurther = 0;
-  for (int i = 0; i < 20000; ++i) {
-    const InputSegment s = c.segment();
-    const double t = r.next() % 8 == 0 ? double(r.next() % 2) : r.uniform();
-    double x, y;
-    if (!pointOnSegment(s, t, x, y)) continue;
-    ++built;
-    const double magnitude =
-        std::max({std::fabs(s.ax), std::fabs(s.ay), std::fabs(s.bx), std::fabs(s.by)});
-    const int e = chainBoundExponent(s);
-    const mpq_class bound2 =
-        e >= 0 ? mpq_class(mpz_class(1) << (2 * e)) : mpq_class(1, mpz_class(1) << (-2 * e));
-    const mpq_class exactX = q(s.ax) + q(t) * (q(s.bx) - q(s.ax));
-    const mpq_class exactY = q(s.ay) + q(t) * (q(s.by) - q(s.ay));
-    // Half a spacing of the largest coordinate, and 2^-100 of it for the low parts.
-    const mpq_class half = q(std::ldexp(1.0, spacingExponent(magnitude) - 1));
-    const mpq_class slack = half + q(std::ldexp(magnitude, -100));
-    ASSERT_LE(abs(q(x) - exactX), slack) << i;
-    ASSERT_LE(abs(q(y) - exactY), slack) << i;
-    const mpq_class dx = q(x) - exactX, dy = q(y) - exactY;
-    ASSERT_LE(dx * dx + dy * dy, bound2) << i;  // the exact point is on s
-    // The plain formula strays further than one rounding (so these inputs tell them apart).
-    const double nx = (1 - t) * s.ax + t * s.bx, ny = (1 - t) * s.ay + t * s.by;
-    plainFurther += abs(q(nx) - exactX) > slack || abs(q(ny) - exactY) > slack;
-  }
-  EXPECT_GT(built, 10000);
-  EXPECT_GT(plainFurther, 0);
-  double x = 0, y = 0;
-  EXPECT_FALSE(pointOnSegment({0, 0, 1, 1}, 1.5, x, y));
-  EXPECT_FALSE(pointOnSegment({0, 0, 1, 1}, -0x1p-60, x, y));
-  EXPECT_FALSE(pointOnSegment({0, 0, 1e-300, 0}, 0.5, x, y));      // near underflow
-  EXPECT_FALSE(pointOnSegment({-1e303, 0, 1e303, 1}, 0.5, x, y));  // b - a would overflow
-}
-
 }  // namespace
 }  // namespace geocdt
