@@ -1,17 +1,24 @@
 // Delaunay refinement against CGAL's Delaunay_mesher_2 (Mesh_2), on the rings of a dataset,
 // inside only: the same input and minimum angle, time, Steiner points and the worst angle
 // inside. Runs alternate (geocdt, CGAL, geocdt, ...); the medians are printed as a markdown
-// row. Usage: bench_refine file.gpl minAngle [runs]
+// row. Usage: bench_refine [--exact] file.gpl minAngle [runs]
+//
+// CGAL's default kernel is Epick with Exact_predicates_tag: fast, but its constructed crossing
+// points are rounded, and on rings that cross and overlap (the country rings) the mesher then
+// crashes. --exact runs it with Epeck and Exact_intersections_tag instead, exact constructions
+// throughout, to see whether CGAL gets through those inputs at all and at what cost.
 //
 // CGAL's domain: its constrained edges, each counted as often as input segments lie on it
 // (shared borders twice), decide inside by parity in a flood from the infinite face; edges
 // that CGAL split at crossings count once. geocdt decides by its own exact windings. The
 // inside triangle counts before refinement say how far the two domains agree.
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -21,6 +28,7 @@
 #include <cstdlib>
 #include <map>
 #include <queue>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -29,13 +37,21 @@
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Delaunay_mesh_vertex_base_2<K>;
-using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
-using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
-using Mesher = CGAL::Delaunay_mesher_2<Cdt, Criteria>;
+template <class K, class Itag>
+using MeshCdt = CGAL::Constrained_Delaunay_triangulation_2<
+    K,
+    CGAL::Triangulation_data_structure_2<CGAL::Delaunay_mesh_vertex_base_2<K>,
+                                         CGAL::Delaunay_mesh_face_base_2<K>>,
+    Itag>;
+// The default: what CGAL's Mesh_2 examples use.
+using InexactCdt =
+    MeshCdt<CGAL::Exact_predicates_inexact_constructions_kernel, CGAL::Exact_predicates_tag>;
+// --exact: crossing points constructed exactly, so crossing and overlapping rings stay
+// consistent. Constrained_triangulation_plus_2 computes each crossing from the input segments;
+// the bare CDT would compute it from pieces whose ends are earlier crossings, numbers that grow
+// with every crossing along a segment (CGAL warns so in debug builds).
+using ExactCdt = CGAL::Constrained_triangulation_plus_2<
+    MeshCdt<CGAL::Exact_predicates_exact_constructions_kernel, CGAL::Exact_intersections_tag>>;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -55,7 +71,7 @@ double smallestAngle(const double (&x)[3], const double (&y)[3]) {
 }
 
 struct Run {
-  double seconds = 0;
+  double seconds = 0, buildSeconds = 0;
   std::size_t steiner = 0, inside = 0, insideBefore = 0, bad = 0;
   double worst = 180;
 };
@@ -73,7 +89,7 @@ Run runGeocdt(const geocdt::testing::PolylineSet& set, double minAngle) {
   t.refine(ro);
   const auto refined = std::chrono::steady_clock::now();
   r.seconds = seconds(built, refined);
-  (void)start;
+  r.buildSeconds = seconds(start, built);
   r.steiner = t.stats().steinerPoints;
   geocdt::MeshOptions mo;
   mo.keep = geocdt::Keep::Inside;
@@ -93,21 +109,20 @@ Run runGeocdt(const geocdt::testing::PolylineSet& set, double minAngle) {
 }
 
 // Parity of input segments on each constrained edge, flooded from the infinite face.
-void markDomain(
-    Cdt& cdt,
-    const std::map<std::pair<Cdt::Vertex_handle, Cdt::Vertex_handle>, int>& multiplicity) {
+template <class Cdt, class Vertex = typename Cdt::Vertex_handle>
+void markDomain(Cdt& cdt, const std::map<std::pair<Vertex, Vertex>, int>& multiplicity) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(false);
-  std::map<Cdt::Face_handle, int> level;
-  std::queue<Cdt::Face_handle> queue;
+  std::map<typename Cdt::Face_handle, int> level;
+  std::queue<typename Cdt::Face_handle> queue;
   level[cdt.infinite_face()] = 0;
   queue.push(cdt.infinite_face());
   while (!queue.empty()) {
-    const Cdt::Face_handle f = queue.front();
+    const typename Cdt::Face_handle f = queue.front();
     queue.pop();
     const int l = level[f];
     if (!cdt.is_infinite(f)) f->set_in_domain(l % 2 == 1);
     for (int i = 0; i < 3; ++i) {
-      const Cdt::Face_handle n = f->neighbor(i);
+      const typename Cdt::Face_handle n = f->neighbor(i);
       if (level.count(n)) continue;
       int crossing = 0;
       if (cdt.is_constrained({f, i})) {
@@ -122,42 +137,59 @@ void markDomain(
   }
 }
 
+template <class Cdt>
 Run runCgal(const geocdt::testing::PolylineSet& set, double minAngle) {
+  using Vertex = typename Cdt::Vertex_handle;
   Run r;
   Cdt cdt;
-  std::vector<std::pair<Cdt::Vertex_handle, Cdt::Vertex_handle>> segments;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::pair<Vertex, Vertex>> segments;
   for (std::size_t i = 0; i < set.polylineCount(); ++i) {
-    Cdt::Vertex_handle previous;
+    Vertex previous;
     for (std::uint32_t k = set.offsets[i]; k < set.offsets[i + 1]; ++k) {
-      const Cdt::Vertex_handle v = cdt.insert(K::Point_2(set.xy[2 * k], set.xy[2 * k + 1]));
+      const Vertex v = cdt.insert(typename Cdt::Point(set.xy[2 * k], set.xy[2 * k + 1]));
       if (k > set.offsets[i] && v != previous) segments.push_back({previous, v});
       previous = v;
     }
   }
-  std::map<std::pair<Cdt::Vertex_handle, Cdt::Vertex_handle>, int> multiplicity;
+  std::map<std::pair<Vertex, Vertex>, int> multiplicity;
   for (auto [a, b] : segments) {
     cdt.insert_constraint(a, b);
     if (b < a) std::swap(a, b);
     ++multiplicity[{a, b}];
   }
+  r.buildSeconds = seconds(start, std::chrono::steady_clock::now());
+  // Said at once: where a run that never ends spends its time.
+  std::fprintf(stderr, "CGAL: inserted in %.3f s, %zu vertices; refining\n", r.buildSeconds,
+               cdt.number_of_vertices());
   markDomain(cdt, multiplicity);
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     r.insideBefore += f->is_in_domain();
   const std::size_t before = cdt.number_of_vertices();
   const double s = std::sin(minAngle * kPi / 180);
-  Mesher mesher(cdt, Criteria(s * s, 0));
-  const auto start = std::chrono::steady_clock::now();
+  using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
+  CGAL::Delaunay_mesher_2<Cdt, Criteria> mesher(cdt, Criteria(s * s, 0));
+  const auto refining = std::chrono::steady_clock::now();
   mesher.init(true);
-  mesher.refine_mesh();
-  r.seconds = seconds(start, std::chrono::steady_clock::now());
+  // Point by point, which is what refine_mesh() does (encroached edges first, then bad faces),
+  // so that a run that takes minutes says how far it got, once a minute.
+  double said = 0;
+  for (std::size_t points = 1; mesher.step_by_step_refine_mesh(); ++points) {
+    if (points % 64) continue;
+    const double now = seconds(refining, std::chrono::steady_clock::now());
+    if (now < said + 60) continue;
+    said = now;
+    std::fprintf(stderr, "CGAL: %zu Steiner points after %.0f s\n", points, now);
+  }
+  r.seconds = seconds(refining, std::chrono::steady_clock::now());
   r.steiner = cdt.number_of_vertices() - before;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->is_in_domain()) continue;
     ++r.inside;
     double x[3], y[3];
     for (int k = 0; k < 3; ++k) {
-      x[k] = f->vertex(k)->point().x();
-      y[k] = f->vertex(k)->point().y();
+      x[k] = CGAL::to_double(f->vertex(k)->point().x());
+      y[k] = CGAL::to_double(f->vertex(k)->point().y());
     }
     const double a = smallestAngle(x, y);
     r.worst = std::min(r.worst, a);
@@ -171,11 +203,25 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// One line a run on stderr as soon as it ends, so that a CGAL run that crashes or is stopped
+// still leaves the figures of those before it.
+void report(const char* engine, int run, const Run& r) {
+  std::fprintf(stderr,
+               "run %d, %s: insertion %.3f s, refinement %.3f s, %zu Steiner points, %zu inside "
+               "triangles, worst %.2f, %zu below\n",
+               run + 1, engine, r.buildSeconds, r.seconds, r.steiner, r.inside, r.worst, r.bad);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  const bool exact = argc > 1 && std::string(argv[1]) == "--exact";
+  if (exact) {
+    --argc;
+    ++argv;
+  }
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_refine file.gpl minAngle [runs]\n");
+    std::fprintf(stderr, "usage: bench_refine [--exact] file.gpl minAngle [runs]\n");
     return 2;
   }
   geocdt::testing::PolylineSet set;
@@ -186,12 +232,16 @@ int main(int argc, char** argv) {
   }
   const double angle = std::atof(argv[2]);
   const int runs = argc > 3 ? std::atoi(argv[3]) : 3;
+  const char* cgal =
+      exact ? "CGAL Delaunay_mesher_2 (Epeck, Exact_intersections_tag)" : "CGAL Delaunay_mesher_2";
   std::vector<double> ours, theirs;
   Run g, c;
   for (int i = 0; i < runs; ++i) {
     g = runGeocdt(set, angle);
+    report("geocdt", i, g);
     ours.push_back(g.seconds);
-    c = runCgal(set, angle);
+    c = exact ? runCgal<ExactCdt>(set, angle) : runCgal<InexactCdt>(set, angle);
+    report(cgal, i, c);
     theirs.push_back(c.seconds);
   }
   std::printf(
@@ -200,8 +250,8 @@ int main(int argc, char** argv) {
       runs);
   std::printf("| geocdt | %g | %.3f | %zu | %zu | %.2f | %zu |\n", angle, median(ours), g.steiner,
               g.inside, g.worst, g.bad);
-  std::printf("| CGAL Delaunay_mesher_2 | %g | %.3f | %zu | %zu | %.2f | %zu |\n", angle,
-              median(theirs), c.steiner, c.inside, c.worst, c.bad);
+  std::printf("| %s | %g | %.3f | %zu | %zu | %.2f | %zu |\n", cgal, angle, median(theirs),
+              c.steiner, c.inside, c.worst, c.bad);
   std::printf("CGAL inside triangles before refinement: %zu\n", c.insideBefore);
   return 0;
 }

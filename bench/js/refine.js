@@ -6,13 +6,18 @@
 // With --uniform N: N uniform points in a square ring instead, where both domains are the
 // square. With --baseline DIR, another build of the package (a folder holding its web/) runs
 // in the same rounds, and the median of this build's time over the baseline's, round by
-// round, is printed: a before/after in one process.
-//   node bench/js/refine.js [--scale 110m | --uniform 20000] [--angle 30] [--rounds 3]
-//     [--baseline DIR]
+// round, is printed: a before/after in one process. With --rings FILE, the rings of a .gpl
+// file (inside, even-odd, as bench_refine gives them to geocdt and CGAL's native mesher), and
+// no Triangle (it fails on country rings): geocdt's whole call, and its refine() alone on a
+// Triangulation whose rings were inserted beforehand, outside the timing.
+//   node bench/js/refine.js [--scale 110m | --uniform 20000 | --rings FILE] [--angle 30]
+//     [--rounds 3] [--baseline DIR]
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { init, triangulate } from 'geocdt';
-import { countryRings, indexedGraph, pointCount, uniform } from './datasets.js';
+import { init, triangulate, Triangulation } from 'geocdt';
+import {
+  asArrays, countryRings, indexedGraph, pointCount, readGpl, uniform,
+} from './datasets.js';
 import * as peers from './peers.js';
 import { alternate, median } from './timing.js';
 
@@ -25,6 +30,7 @@ const scale = option('scale', '110m');
 const angle = Number(option('angle', '30'));
 const rounds = Number(option('rounds', '3'));
 const uniformCount = Number(option('uniform', '0'));
+const ringsFile = option('rings', null);
 
 // N uniform points in [0, 1000)^2 inside a square ring around them.
 function pointsInSquare(n) {
@@ -39,36 +45,64 @@ function pointsInSquare(n) {
   };
 }
 
+// The polylines of a .gpl file, as one array each (the form Triangulation.insertPolyline
+// takes, and triangulate too).
+function ringsOf(file) {
+  const polylines = asArrays(readGpl(file));
+  return { name: file, input: { polylines }, graph: indexedGraph(polylines) };
+}
+
 await init();
-const { name, input, graph } = uniformCount > 0 ? pointsInSquare(uniformCount) : (() => {
-  const rings = countryRings(scale);
-  return { name: rings.name, input: { polylines: rings.polylines },
-    graph: indexedGraph(rings.polylines) };
-})();
+const { name, input, graph } = uniformCount > 0 ? pointsInSquare(uniformCount)
+  : ringsFile ? ringsOf(ringsFile) : (() => {
+    const rings = countryRings(scale);
+    return { name: rings.name, input: { polylines: rings.polylines },
+      graph: indexedGraph(rings.polylines) };
+  })();
 const vertices = graph.xy.length / 2;
+const describeRefined = (r) => `${r.steiner.length} Steiner points, `
+  + `${r.triangles.length / 3} triangles, `
+  + `worst ${peers.worstAngle(r.points, r.triangles).toFixed(2)} deg, `
+  + `${r.stats.refineSkipped} left (capped: ${r.stats.refineCapped})`;
 const refineWith = (run) => ({
   run: () => run(input, { keep: 'inside', refine: { minAngle: angle } }),
-  describe: (r) => `${r.steiner.length} Steiner points, ${r.triangles.length / 3} triangles, `
-    + `worst ${peers.worstAngle(r.points, r.triangles).toFixed(2)} deg, `
-    + `${r.stats.refineSkipped} left (capped: ${r.stats.refineCapped})`,
+  describe: describeRefined,
 });
+// refine() alone: the insertion before it and the copy of the mesh after it stay out of the
+// time, which run() takes itself (alternate() accepts a promise of { output, ms }).
+const refineAlone = {
+  name: 'geocdt refine() alone',
+  run: () => {
+    const t = new Triangulation();
+    try {
+      for (const ring of input.polylines) t.insertPolyline(ring);
+      const started = performance.now();
+      t.refine({ keep: 'inside', minAngle: angle });
+      const ms = performance.now() - started;
+      return Promise.resolve({ output: t.results({ keep: 'inside' }), ms });
+    } finally {
+      t.dispose();
+    }
+  },
+  describe: describeRefined,
+};
 const baselineDir = option('baseline', null);
 let baseline = null;
 if (baselineDir) {
   baseline = await import(pathToFileURL(join(resolve(baselineDir), 'web/index.node.js')).href);
   await baseline.init({ warmUp: false });
 }
-const triangle = peers.triangleInWorker(600_000);
+const triangle = ringsFile ? null : peers.triangleInWorker(600_000);
 const results = await alternate([
   { name: 'geocdt', ...refineWith(triangulate) },
   ...(baseline ? [{ name: 'baseline', ...refineWith(baseline.triangulate) }] : []),
-  {
+  ...(triangle ? [{
     name: 'triangle-wasm',
     run: () => triangle.run({ ...graph, switches: { quality: angle } }),
     describe: (s) => s,
-  },
+  }] : [refineAlone]),
 ], rounds);
-triangle.close();
+triangle?.close();
 const points = (input.points?.length ?? 0) / 2 + pointCount(input.polylines);
 console.log(`${name}: ${points} points (${vertices} distinct), ${angle} degrees`);
 for (const [engine, r] of Object.entries(results)) {
