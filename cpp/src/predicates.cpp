@@ -166,6 +166,11 @@ Sign incircle_expansion(const double* v) {
 }  // namespace
 
 Sign orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy) {
+  // Points on a common parallel or meridian (borders, graticules, grids) reach here with both
+  // products exactly zero. A difference of doubles is zero exactly when they are equal
+  // (subnormals included), so a zero factor on each side makes the determinant zero: no
+  // expansion needed. (NaN compares unequal and goes on to the range check.)
+  if ((ax == cx || by == cy) && (ay == cy || bx == cx)) return Sign::Zero;
   double v[6] = {ax, ay, bx, by, cx, cy};
   const RangeCheck range = check_range<kOrient2dLsbFloor, kOrient2dExponentCeiling>(v, 6);
   switch (range.range) {

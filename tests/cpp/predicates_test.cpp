@@ -507,6 +507,32 @@ TEST(Predicates, SubnormalsAndZeros) {
   EXPECT_EQ(incircle(tiny, 0, 0, tiny, -tiny, 0, 0, -tiny), Sign::Zero);
 }
 
+TEST(Predicates, SharedCoordinates) {
+  // Points on a common parallel or meridian, and points sharing one coordinate with another:
+  // both products are then exactly zero, or only one is, with differences that round.
+  auto share = [](Rng& r, double* v, const std::function<double(Rng&)>& coordinate) {
+    fill(r, v, 6, coordinate);
+    const int left = pick(r, 3), right = pick(r, 3);  // which factor of each product is 0
+    if (left == 0) v[0] = v[4];                       // ax == cx
+    if (left == 1) v[3] = v[5];                       // by == cy
+    if (right == 0) v[1] = v[5];                      // ay == cy
+    if (right == 1) v[2] = v[4];                      // bx == cx
+  };
+  auto t = check_orient2d(20000, 29, [&](Rng& r, double* v) { share(r, v, any_finite); });
+  EXPECT_GT(t.zero, 5000);
+  EXPECT_GT(t.positive + t.negative, 5000);
+  t = check_orient2d(20000, 30, [&](Rng& r, double* v) { share(r, v, subnormal); });
+  EXPECT_GT(t.zero, 5000);
+  EXPECT_GT(t.positive + t.negative, 5000);
+  // Near-collinear triples with one coordinate shared: the other product decides alone.
+  t = check_orient2d(20000, 31, [&](Rng& r, double* v) {
+    near_line(r, v, 1e6, 12.5, -7.25);
+    v[pick(r, 2) ? 3 : 0] = pick(r, 2) ? v[5] : v[4];
+  });
+  EXPECT_GT(t.positive, 3000);
+  EXPECT_GT(t.negative, 3000);
+}
+
 TEST(Predicates, AnyFiniteDouble) {
   // Beyond kMaxCoordinate too: every exponent from subnormal to 1.8e308.
   auto t = check_orient2d(20000, 21, [](Rng& r, double* v) { fill(r, v, 6, any_finite); });
