@@ -91,13 +91,15 @@ void negate(BigInt<C>& a) {
   if (a.size > 0) a.negative = !a.negative;
 }
 
-// The value of a times 2^unit, to about 64 bits: its top three limbs (in long double for its
-// exponent range; only an estimate).
+// The value of a, about: its top three limbs (96 bits, held to about 106) times
+// 2^exponent, apart so that neither overflows. Only an estimate.
 template <int C>
-long double approximate(const BigInt<C>& a, int unit) {
-  long double v = 0;
-  for (int i = std::max(0, a.size - 3); i < a.size; ++i)
-    v += std::ldexp(static_cast<long double>(a.limb[i]), 32 * i + unit);
+DoubleDouble approximate(const BigInt<C>& a, int& exponent) {
+  const int low = std::max(0, a.size - 3);
+  DoubleDouble v;
+  for (int i = a.size - 1; i >= low; --i)
+    v = DoubleDouble{v.hi * 0x1p32, v.lo * 0x1p32} + DoubleDouble{static_cast<double>(a.limb[i])};
+  exponent = 32 * low;
   return a.negative ? -v : v;
 }
 
@@ -256,12 +258,13 @@ bool estimateCrossing(const InputSegment& s, const InputSegment& t, double& x, d
   const Number num = sum(product(ox, fy), product(oy, fx), true);
   const Number nx = sum(product(fixed(s.ax, base), den), product(dx, num));
   const Number ny = sum(product(fixed(s.ay, base), den), product(dy, num));
-  // Units: den counts 2^(2 base), nx and ny 2^(3 base); scaled apart by 2^base so that
-  // neither quotient part overflows long double. Only a guess: what it rounds to on each
-  // platform does not matter, the rounding that follows is exact.
-  const long double d = approximate(den, 0);
-  x = static_cast<double>(std::ldexp(approximate(nx, 0) / d, base));
-  y = static_cast<double>(std::ldexp(approximate(ny, 0) / d, base));
+  // Units: den counts 2^(2 base), nx and ny 2^(3 base). Only a guess, rounded to double
+  // from about 100 bits: roundCoordinate's steps from it find the one double whose interval
+  // holds the crossing, whatever the guess.
+  int de = 0, xe = 0, ye = 0;
+  const DoubleDouble d = approximate(den, de), ax = approximate(nx, xe), ay = approximate(ny, ye);
+  x = std::ldexp((ax / d).hi, xe - de + base);
+  y = std::ldexp((ay / d).hi, ye - de + base);
   return true;
 }
 

@@ -7,6 +7,7 @@
 
 #include "chain_check.h"
 #include "geocdt/triangulation.h"
+#include "invalid_coordinate.h"
 #include "segment_inserter.h"
 #include "snap_rounding.h"
 #include "triangulation_state.h"
@@ -25,10 +26,7 @@ Status checkPolyline(const PolylineView& line, std::size_t index) {
     if (std::isfinite(v) && std::fabs(v) <= kMaxCoordinate) continue;
     Status s{StatusCode::InvalidCoordinate,
              "polyline " + std::to_string(index) + " point " + std::to_string(i / 2) + " has " +
-                 (i % 2 ? "y" : "x") + " = " +
-                 (std::isnan(v) ? std::string("NaN") : std::to_string(v)) +
-                 (std::isfinite(v) ? ": coordinates must lie within +-1e150"
-                                   : ": coordinates must be finite numbers"),
+                 describeInvalidCoordinate(v, i % 2 == 1),
              index};
     s.segment = i / 2;
     return s;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "in_parallel.h"
+#include "invalid_coordinate.h"
 #include "refinement.h"
 #include "triangulation_state.h"
 
@@ -41,12 +42,10 @@ Status checkCoordinates(const double* xy, std::size_t count, const char* what,
   if (i == n) return Status::success();
   const double v = xy[i];
   const std::size_t point = i / 2;
-  std::string message = std::string(what) + " " + std::to_string(point) + " has " +
-                        (i % 2 ? "y" : "x") + " = " +
-                        (std::isnan(v) ? std::string("NaN") : std::to_string(v)) + ": ";
-  message += std::isfinite(v) ? "coordinates must lie within +-1e150"
-                              : "coordinates must be finite numbers";
-  return {StatusCode::InvalidCoordinate, message, point};
+  return {StatusCode::InvalidCoordinate,
+          std::string(what) + " " + std::to_string(point) + " has " +
+              describeInvalidCoordinate(v, i % 2 == 1),
+          point};
 }
 
 Status outOfMemory() {
