@@ -8,6 +8,7 @@
 #include "chain_check.h"
 #include "geocdt/triangulation.h"
 #include "invalid_coordinate.h"
+#include "present_segments.h"
 #include "segment_inserter.h"
 #include "snap_rounding.h"
 #include "triangulation_state.h"
@@ -124,6 +125,7 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
       scratch.resize(total);
       ids = scratch.data();
     }
+    const std::uint32_t firstNew = d.vertexCount();
     // All points first, in one spatially sorted batch.
     Status s;
     if (adopt) {
@@ -156,6 +158,23 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
     const std::uint32_t keep = d.vertexCount();  // crossings come after
     // Whether snap rounding takes over the segments.
     bool snap = state_->options.snapRounding == SnapRounding::Always && d.built();
+    // A large batch marks the segments that are edges already (found in one pass) in a first
+    // round, and inserts the others in a second: those may cross the first ones, which are
+    // then all in the store, as a crossed constraint must be.
+    const bool twoRounds = ends.built() && !snap;
+    PresentSegments present(firstNew, twoRounds ? keep : firstNew);
+    if (twoRounds) {
+      std::size_t at = 0;
+      for (std::size_t i = 0; i < count; ++i) {
+        for (std::size_t k = 0; k + 1 < polylines[i].count; ++k)
+          present.expect(ids[at + k], ids[at + k + 1]);
+        at += polylines[i].count;
+      }
+      present.fixPresent(d.topo);
+    }
+    const std::size_t span = twoRounds ? 2 * total : total;  // progress: the rounds in turn
+    const std::uint32_t firstPolyline = store.polylineCount;
+    const std::size_t firstSegment = store.segments.size();
     std::size_t offset = 0;
     for (std::size_t i = 0; i < count; ++i) {
       const PolylineView& line = polylines[i];  // its count only: the points are in
@@ -168,7 +187,7 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
       ++d.stats.polylines;
       for (std::size_t k = 0; k + 1 < line.count; ++k) {
         if ((++segmentsTried & 255) == 0)
-          progress(Phase::Constraints, offset - line.count + k, total);
+          progress(Phase::Constraints, offset - line.count + k, span);
         const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
         if (u == v) continue;  // a repeated point: nothing to constrain
         EdgeSource src;
@@ -184,9 +203,40 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
           continue;
         }
         if (snap) continue;  // stored: snap rounding inserts it with all the others
+        if (twoRounds) {
+          if (present.present(u, v)) {
+            store.mark(u, v, src);
+            ++d.stats.segments;
+          }
+          continue;
+        }
         const Outcome outcome = inserter.insert(u, v, src);
         if (outcome == Outcome::Broken) return located(inserter.error(), i, k);
         snap = outcome == Outcome::GaveUp;
+      }
+    }
+    if (twoRounds) {  // the second round: the same segments, numbered as in the first
+      std::size_t segment = firstSegment;
+      offset = 0;
+      for (std::size_t i = 0; i < count && !snap; ++i) {
+        const std::uint32_t* lineIds = ids + offset;
+        const std::size_t points = polylines[i].count;
+        offset += points;
+        const bool ring = points >= 3 && lineIds[0] == lineIds[points - 1];
+        for (std::size_t k = 0; k + 1 < points && !snap; ++k) {
+          if ((++segmentsTried & 255) == 0)
+            progress(Phase::Constraints, total + offset - points + k, span);
+          const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
+          if (u == v) continue;
+          EdgeSource src;
+          src.segment = static_cast<std::uint32_t>(segment++);
+          src.winding = ring ? 1 : 0;
+          src.polyline = firstPolyline + static_cast<std::uint32_t>(i);
+          if (present.present(u, v)) continue;
+          const Outcome outcome = inserter.insert(u, v, src);
+          if (outcome == Outcome::Broken) return located(inserter.error(), i, k);
+          snap = outcome == Outcome::GaveUp;
+        }
       }
     }
     // Computed crossings stay where every chain that met one keeps the guarantee.

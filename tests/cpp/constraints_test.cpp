@@ -12,6 +12,7 @@
 #include "geocdt/triangulation.h"
 #include "invariants.h"
 #include "point_generators.h"
+#include "present_segments.h"
 
 namespace geocdt {
 namespace {
@@ -607,13 +608,16 @@ TEST(Constraints, TangleWhereComputedCrossingsWouldCrossChains) {
 
 TEST(Constraints, TangleWhereComputedCrossingsWouldGoBack) {
   // Within 2 ulps of (1e100, -12345.678): a computed crossing routed a chain back along its
-  // segment.
+  // segment. Inserted a line a call, as when found; in one call the segments that are edges
+  // already go in first (PresentSegments), which here leaves no tangle to snap.
   const Polylines lines = {
       {1.0000000000000002e+100, -12345.678000000002, 1e+100, -12345.677999999996},
       {9.999999999999998e+99, -12345.678, 1.0000000000000004e+100, -12345.678},
       {1.0000000000000002e+100, -12345.678, 1e+100, -12345.678000000004}};
   std::string broken;
-  EXPECT_EQ(snapRoundings(lines, {}, true, broken), 1);
+  EXPECT_EQ(snapRoundings(lines, {}, false, broken), 1);
+  EXPECT_EQ(broken, "");
+  EXPECT_GE(snapRoundings(lines, {}, true, broken), 0);
   EXPECT_EQ(broken, "");
 }
 
@@ -1157,6 +1161,34 @@ TEST(Constraints, ConstraintsBeforeAnyTriangle) {
   EXPECT_EQ(constrained, 2);  // the segment 0-1 crossing the diagonal 2-3
 }
 
+TEST(Constraints, PresentSegmentsAreTheExpectedEdges) {
+  // New vertices 10..14: triangles 10-11-13 and 11-12-13, the hull edge 11->10 in a ghost
+  // triangle, 14 in no triangle. Expected: 10-11, 12-11 (given backwards), 13-14 (no edge),
+  // 9-10 (9 is older than the batch), 11-13 (an edge, but not consecutive ids); not expected:
+  // 12-13, an edge between consecutive ids.
+  Topology topo;
+  topo.appendSlots(3);
+  topo.setTriangle(0, 10, 11, 13);
+  topo.setTriangle(1, 11, 12, 13);
+  topo.setTriangle(2, 11, 10, kGhost);
+  PresentSegments present(10, 15);
+  for (const auto& [u, v] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
+           {10, 11}, {12, 11}, {13, 14}, {9, 10}, {11, 13}})
+    present.expect(u, v);
+  present.fixPresent(topo);
+  // Fixed: 10->11 (slot 0), 11->12 (slot 1), 11->10 (the ghost slot's real edge).
+  const std::vector<std::uint8_t> fixed = {1, 0, 0, 1, 0, 0, 1, 0, 0};
+  EXPECT_EQ(topo.fixed, fixed);
+  EXPECT_TRUE(present.present(10, 11));
+  EXPECT_TRUE(present.present(11, 10));
+  EXPECT_TRUE(present.present(11, 12));
+  EXPECT_FALSE(present.present(13, 12));
+  EXPECT_FALSE(present.present(13, 14));
+  EXPECT_FALSE(present.present(9, 10));
+  EXPECT_FALSE(present.present(11, 13));
+  EXPECT_FALSE(present.present(14, 15));  // past the batch
+}
+
 TEST(Constraints, SegmentEndsAreNotLocated) {
   // 400 disjoint jittered rings, each visited far from the one before: a segment starts from
   // its first vertex's half-edges, found without a walk, so the constrained call locates
@@ -1198,7 +1230,11 @@ TEST(Constraints, SegmentEndsAreNotLocated) {
   ASSERT_TRUE(constrained.insertPolylines(views.data(), views.size(), ids.data()).ok());
   EXPECT_EQ(constrained.stats().crossings, 0u);
   EXPECT_GT(constrained.stats().flips, points.stats().flips);  // segments were flipped in
-  EXPECT_EQ(constrained.stats().locates, points.stats().locates);
+  // The segments that are edges already are marked first (PresentSegments) and no longer
+  // refresh their vertices' entries as they go: a flip of a later segment can move an entry's
+  // half-edge, found again by a walk from where it was. A few, not one a ring.
+  EXPECT_GE(constrained.stats().locates, points.stats().locates);
+  EXPECT_LE(constrained.stats().locates, points.stats().locates + rings.size() / 100);
   const Mesh m = constrained.mesh();
   EXPECT_EQ(testing::checkTriangulation(m), "");
   EXPECT_EQ(testing::checkConstraints(m, rings, ids), "");
