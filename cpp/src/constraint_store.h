@@ -138,6 +138,18 @@ class ConstraintStore {
   std::uint64_t touch(const std::uint64_t* keys, std::size_t n) const {
     return edges_.touch(keys, n);
   }
+  // Brings the extra members of n found edges (or null) into the cache: a list is two
+  // dependent misses, its header and its members, that overlap across the edges this way.
+  std::uint64_t touchExtras(const EdgeSource* const* found, std::size_t n) const {
+    if (extras_.empty()) return 0;
+    std::uint64_t any = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      // No branch on whether an edge has extras: the others read list 0 (never empty).
+      const std::int32_t extra = found[k] ? found[k]->extra : -1;
+      any |= extras_[static_cast<std::size_t>(std::max(extra, 0))].front().polyline;
+    }
+    return any;
+  }
 
   // Winding change met when crossing from the left of u->v to its right.
   std::int32_t windingAcross(std::uint32_t u, std::uint32_t v) const {

@@ -129,6 +129,7 @@ void appendProvenance(const Delaunay& d, Mesh& into, bool segments, std::size_t 
   constexpr std::size_t kBatch = 64;
   std::uint32_t edge[kBatch];
   std::uint64_t key[kBatch];
+  const EdgeSource* found[kBatch];
   std::size_t n = 0;
   volatile std::uint64_t touched = 0;  // (one per thread: touch's loads are kept through it)
   const auto flush = [&] {
@@ -138,8 +139,10 @@ void appendProvenance(const Delaunay& d, Mesh& into, bool segments, std::size_t 
       key[k] = ConstraintStore::key(mesh.triangles[e], mesh.triangles[next]);
     }
     touched = d.constraints.touch(key, n);
+    for (std::size_t k = 0; k < n; ++k) found[k] = d.constraints.find(key[k]);
+    touched = touched + d.constraints.touchExtras(found, n);
     for (std::size_t k = 0; k < n; ++k) {
-      const EdgeSource* src = d.constraints.find(key[k]);
+      const EdgeSource* src = found[k];
       if (!src) continue;
       into.constraintEdges.push_back(edge[k]);
       d.constraints.forEachPolyline(*src, [&into](std::uint32_t p) { into.sources.push_back(p); });
