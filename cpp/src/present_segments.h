@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "chunks.h"
 #include "topology.h"
 
 namespace geocdt {
@@ -16,48 +17,63 @@ namespace geocdt {
 class PresentSegments {
  public:
   // For the new vertices [base, end).
-  PresentSegments(std::uint32_t base, std::uint32_t end) : base_(base), state_(end - base, 0) {}
+  PresentSegments(std::uint32_t base, std::uint32_t end)
+      : base_(base), expected_(end - base + 1, 0) {}
 
   // Segment u-v of the batch: looked for if its ends are consecutive new ids.
   void expect(std::uint32_t u, std::uint32_t v) {
-    const std::uint32_t low = std::min(u, v) - base_;
-    if (std::max(u, v) - std::min(u, v) == 1 && low < state_.size()) state_[low] = kExpected;
+    const std::size_t low = std::min(u, v) - base_;  // (wraps far past the end if older)
+    if (std::max(u, v) - std::min(u, v) == 1 && low + 1 < expected_.size()) expected_[low] = 1;
   }
 
   // Fixes both half-edges of every expected segment that is an edge of topo.
   void fixPresent(Topology& topo) {
-    const std::uint32_t* tri = topo.tri.data();
-    std::uint8_t* fixed = topo.fixed.data();
-    std::uint8_t* state = state_.data();
-    const std::size_t size = state_.size();
+    const std::size_t size = expected_.size() - 1;
     if (size == 0) return;
-    for (std::size_t e = 0; e < topo.tri.size(); ++e) {
-      const std::uint32_t a = tri[e];
-      const std::uint32_t b = tri[static_cast<std::size_t>(nextEdge(static_cast<std::int32_t>(e)))];
-      const std::uint32_t low = std::min(a, b) - base_;
-      // (A ghost end never passes: kGhost is no vertex's successor.)
-      const bool consecutive = (std::max(a, b) - std::min(a, b) == 1) & (low < size);
-      // Branch-free: a third of the half-edges on country rings qualify, in no pattern. A
-      // half-edge that does not reads and writes back slot 0 unchanged.
-      const std::size_t at = consecutive ? low : 0;
-      const std::uint8_t s = state[at];
-      const bool found = consecutive & (s != 0);
-      fixed[e] = static_cast<std::uint8_t>(fixed[e] | found);
-      state[at] = static_cast<std::uint8_t>(s | (found ? kFound : 0));
-    }
+    found_.assign(size + 1, 0);  // the last byte takes the writes of half-edges that miss
+    const std::uint32_t* triangles = topo.tri.data();
+    std::uint8_t* fixedFlags = topo.fixed.data();
+    const std::uint8_t* expectedPairs = expected_.data();
+    std::uint8_t* foundPairs = found_.data();
+    const std::uint32_t base = base_;
+    forChunks(0, topo.tri.size() / 3, [=](std::size_t begin, std::size_t end) {
+      // Locals, not the closure's members: the byte stores below may alias any memory, so
+      // members would be loaded again after each of them.
+      const std::uint32_t* tri = triangles;
+      std::uint8_t* fixed = fixedFlags;
+      const std::uint8_t* expected = expectedPairs;
+      std::uint8_t* found = foundPairs;
+      const std::uint32_t first = base;
+      const std::size_t pairs = size;
+      // Branch-free: a third of the half-edges on country rings qualify, in no pattern. Reads
+      // and writes go to separate arrays, so that no load waits for the store before it.
+      const auto consider = [&](std::size_t e, std::uint32_t a, std::uint32_t b) {
+        // Past the batch, low reads the last entry, never expected. (A ghost end never
+        // passes: kGhost is no vertex's successor.)
+        const std::size_t low = std::min<std::size_t>(std::min(a, b) - first, pairs);
+        const bool hit = (std::max(a, b) - std::min(a, b) == 1) & (expected[low] != 0);
+        fixed[e] = static_cast<std::uint8_t>(fixed[e] | hit);
+        found[hit ? low : pairs] = 1;
+      };
+      for (std::size_t e = 3 * begin; e < 3 * end; e += 3) {
+        const std::uint32_t a = tri[e], b = tri[e + 1], c = tri[e + 2];
+        consider(e, a, b);
+        consider(e + 1, b, c);
+        consider(e + 2, c, a);
+      }
+    });
   }
 
   // Whether u-v was expected and is an edge, its half-edges fixed by fixPresent.
   bool present(std::uint32_t u, std::uint32_t v) const {
-    const std::uint32_t low = std::min(u, v) - base_;
-    return std::max(u, v) - std::min(u, v) == 1 && low < state_.size() &&
-           (state_[low] & kFound) != 0;
+    const std::size_t low = std::min(u, v) - base_;
+    return std::max(u, v) - std::min(u, v) == 1 && low + 1 < found_.size() && found_[low] != 0;
   }
 
  private:
-  static constexpr std::uint8_t kExpected = 1, kFound = 2;
   std::uint32_t base_;
-  std::vector<std::uint8_t> state_;  // of segment (base + i, base + i + 1)
+  std::vector<std::uint8_t> expected_;  // of segment (base + i, base + i + 1), and a last 0
+  std::vector<std::uint8_t> found_;     // the same, found as an edge (the last: misses)
 };
 
 }  // namespace geocdt
