@@ -62,6 +62,7 @@ class PresentSegments {
         consider(e + 2, c, a);
       }
     });
+    std::vector<std::uint8_t>().swap(expected_);  // (the segments go in next: memory peaks)
   }
 
   // Whether u-v was expected and is an edge, its half-edges fixed by fixPresent.
