@@ -286,6 +286,39 @@ double approximateDistance(const InputSegment& s, double x, double y, double& er
   return std::sqrt(ex * ex + ey * ey);
 }
 
+// Whether (x, y) lies within `bound` of the closed segment s, decided from the cross and dot
+// products of the differences, each known to within a few roundings of its own terms: 1
+// within, 0 beyond, -1 undecided. approximateDistance's error is relative to the
+// coordinates' magnitude, a few spacings there, as the chains' bound is: it cannot tell
+// whether a point computed on a segment lies within that bound. Here the error is relative
+// to the segment's length and the point's offset along it, far below the bound for a
+// segment short against its coordinates, and nothing where it runs along an axis.
+int withinDistanceFilter(const InputSegment& s, double x, double y, double bound) {
+  const double dx = s.bx - s.ax, dy = s.by - s.ay;
+  const double length2 = dx * dx + dy * dy, limit = bound * bound * length2;
+  // Away from underflow and overflow, so that the margins below can be relative.
+  if (!(length2 >= 0x1p-800 && limit >= 0x1p-900 && limit <= 0x1p900)) return -1;
+  // Each difference rounds once, each product and the sum once more: the result is within
+  // 2 eps of the terms' magnitudes (3 eps for room), plus what underflow may take.
+  const auto near = [](double p, double q, double& error) {
+    error = 3 * kEpsilon * (std::fabs(p) + std::fabs(q)) + kUnderflow;
+    return p + q;
+  };
+  const double wx = x - s.ax, wy = y - s.ay;
+  double crossError;
+  const double cross = std::fabs(near(dx * wy, -(dy * wx), crossError));
+  // The distance to the line is |cross| / length: beyond the bound there, beyond the
+  // segment too. length2 errs by 2 eps and each square by 1.5 more: 16 eps covers them.
+  const double low = cross - crossError, high = cross + crossError;
+  if (low > 0 && low * low > limit * (1 + 16 * kEpsilon)) return 0;
+  if (!(high * high < limit * (1 - 16 * kEpsilon))) return -1;
+  // Within it of the line: of the segment too where the point projects inside it.
+  double alongError, backError;
+  const double along = near(wx * dx, wy * dy, alongError);
+  const double back = near((x - s.bx) * dx, (y - s.by) * dy, backError);
+  return along > alongError && -back > backError ? 1 : -1;
+}
+
 // One end of the interval of t in [0, 1] along s where a coordinate lies in a box.
 struct Bound {
   Number numerator, denominator;  // denominator > 0
@@ -395,6 +428,8 @@ bool withinDistance(const InputSegment& s, double x, double y, int e) {
   const double d = approximateDistance(s, x, y, error), bound = std::ldexp(1.0, e);
   if (d + error < bound) return true;
   if (d - error > bound) return false;
+  const int filtered = withinDistanceFilter(s, x, y, bound);
+  if (filtered >= 0) return filtered == 1;
 
   const int base = std::min(baseOf({s.ax, s.ay, s.bx, s.by, x, y}), e);
   const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);

@@ -23,35 +23,39 @@ double projection(double ax, double ay, double bx, double by, double px, double 
   return std::clamp((qx * ex + qy * ey) / (ex * ex + ey * ey), 0.0, 1.0);
 }
 
-Shape Refiner::shape(std::int32_t t) const {
-  const std::uint32_t a = topo_.tri[3 * t], b = topo_.tri[3 * t + 1], c = topo_.tri[3 * t + 2];
-  double abx = x(b) - x(a), aby = y(b) - y(a), acx = x(c) - x(a), acy = y(c) - y(a);
+inline Shape Refiner::shape(std::int32_t t) const {
+  const std::uint32_t* corner = &topo_.tri[3 * t];
+  const double* xy = d_.xy.data();
+  const double* a = xy + 2 * corner[0];
+  const double* b = xy + 2 * corner[1];
+  const double* c = xy + 2 * corner[2];
+  double abx = b[0] - a[0], aby = b[1] - a[1], acx = c[0] - a[0], acy = c[1] - a[1];
+  double cross = abx * acy - aby * acx;
   Shape s;
   // The area from the differences as they are: coordinates within 1e150 keep the products
   // finite, where the scaled frame below flushes the smaller side to zero when the sides'
   // sizes differ by hundreds of orders of magnitude (fuzz: a subnormal across from 1e58).
-  s.area = 0.5 * std::fabs(abx * acy - aby * acx);
+  s.area = 0.5 * std::fabs(cross);
   // The angle in a frame scaled by a power of two (exactly) to the triangle's size, so that
   // squares and their products neither overflow nor underflow at any coordinate magnitude;
   // sizes from 2^-200 to 2^200 need no scaling (products of squares stay finite).
   const double size =
       std::max(std::max(std::fabs(abx), std::fabs(aby)), std::max(std::fabs(acx), std::fabs(acy)));
-  int e = 0;
+  s.scale = 0;
   if (!(size >= 0x1p-200 && size <= 0x1p200)) {
-    e = scaleExponent({abx, aby, acx, acy});
-    const double scale = powerOfTwo(-e);
+    s.scale = scaleExponent({abx, aby, acx, acy});
+    const double scale = powerOfTwo(-s.scale);
     abx *= scale, aby *= scale, acx *= scale, acy *= scale;
+    cross = abx * acy - aby * acx;
   }
   const double bcx = acx - abx, bcy = acy - aby;
   const double lab = abx * abx + aby * aby, lac = acx * acx + acy * acy;
   const double lbc = bcx * bcx + bcy * bcy;
-  const double cross = abx * acy - aby * acx;
   // The smallest angle faces the shortest edge; its sin is twice the area over the product of
   // the two longer edges, whose squares' product is the largest of the three pairs'.
   s.cross2 = cross * cross;
   s.product = std::max(std::max(lab * lac, lab * lbc), lac * lbc);
-  // The shortest side's squared length is 2^(2e) times the frame's.
-  s.lengthExponent = halfExponent(std::min(std::min(lab, lac), lbc)) + 4 * e;
+  s.shortest2 = std::min(std::min(lab, lac), lbc);
   return s;
 }
 
@@ -62,7 +66,7 @@ void Refiner::checkTriangle(std::int32_t t) {
   if (!skinny && !(s.area > maxArea_)) return;
   const std::uint32_t a = topo_.tri[3 * t], b = topo_.tri[3 * t + 1], c = topo_.tri[3 * t + 2];
   const bool boundary = onSubsegment(a) || onSubsegment(b) || onSubsegment(c);
-  bad_.push(BadQueue::bucket(boundary, skinny, skinny ? s.sin2() : 0, s.lengthExponent),
+  bad_.push(BadQueue::bucket(boundary, skinny, skinny ? s.sin2() : 0, s.lengthExponent()),
             {t, a, b, c, skinny});
 }
 
@@ -73,11 +77,16 @@ std::int32_t Refiner::findEdge(std::uint32_t u, std::uint32_t v) const {
 void Refiner::rebuild() {
   winding_ = slotWindings(d_);
   vertexEdge_.assign(d_.vertexCount(), -1);
-  for (std::int32_t e = 0; e < static_cast<std::int32_t>(topo_.tri.size()); ++e)
-    if (topo_.tri[e] != kGhost) vertexEdge_[topo_.tri[e]] = e;
   onSubsegment_.assign(d_.vertexCount(), 0);
-  for (std::int32_t e = 0; e < static_cast<std::int32_t>(topo_.tri.size()); ++e)
-    if (!topo_.isGhost(e / 3) && isSubsegment(e)) onSubsegment_[topo_.tri[e]] = 1;
+  // One pass: a half-edge out of each vertex (the last one), and the ends of subsegments
+  // (the flag first, the corners of the triangle only for the few that have it).
+  const std::uint32_t* tri = topo_.tri.data();
+  for (std::int32_t e = 0; e < static_cast<std::int32_t>(topo_.tri.size()); ++e) {
+    const std::uint32_t v = tri[e];
+    if (v == kGhost) continue;  // (then a ghost triangle's edge, on no subsegment)
+    vertexEdge_[v] = e;
+    if (isSubsegment(e) && !topo_.isGhost(e / 3)) onSubsegment_[v] = 1;
+  }
 }
 
 // After a vertex was inserted: the triangles around it take their windings from the caller,
@@ -85,19 +94,44 @@ void Refiner::rebuild() {
 // it as a corner), tell their corners where they are, and are checked. `from` is a half-edge
 // out of it.
 void Refiner::afterInsert(std::int32_t from, std::int32_t winding) {
-  winding_.resize(topo_.slotCount());
-  vertexEdge_.resize(d_.vertexCount(), -1);
+  // Grown by half again when short, not by each insertion's two slots and one vertex: in
+  // wasm every resize is a call. Entries past the slots and vertices are not read; run()
+  // trims the windings to the slots at its end.
+  const auto slots = static_cast<std::size_t>(topo_.slotCount());
+  const std::size_t vertices = d_.vertexCount();
+  if (winding_.size() < slots) winding_.resize(slots + slots / 2);
+  if (vertexEdge_.size() < vertices) vertexEdge_.resize(vertices + vertices / 2, -1);
+  if (winding != kUnknownWinding) {
+    // Joined to a cavity's border: every triangle takes the cavity's winding; the spokes are
+    // new and unconstrained, none on the hull (no ghost was in the cavity), so only the
+    // border edges can be subsegments. Nothing here changes the topology: one turn round the
+    // vertex does it all, each triangle checked once its winding and corners are set.
+    const std::uint32_t* tri = topo_.tri.data();
+    const std::int32_t* adj = topo_.adj.data();
+    std::int32_t* vertexEdge = vertexEdge_.data();
+    vertexEdge[tri[from]] = from;
+    std::int32_t h = from;
+    do {
+      const auto t = static_cast<std::int32_t>(static_cast<std::uint32_t>(h) / 3);
+      const std::int32_t k = h - 3 * t, outer = k == 2 ? h - 2 : h + 1;
+      winding_[t] = winding;
+      if (tri[outer] != kGhost) vertexEdge[tri[outer]] = outer;
+      checkTriangle(t);
+      if (isSubsegment(outer)) queueIfEncroached(outer);
+      h = adj[k == 0 ? h + 2 : h - 1];
+    } while (h != from);
+    return;
+  }
   around_.clear();
   std::int32_t e = from;
   do {
     around_.push_back(e);
     e = topo_.adj[prevEdge(e)];
   } while (e != from);
+  // The triangles take their windings from the unchanged triangles beyond them.
   for (const std::int32_t h : around_) {
     const std::int32_t t = h / 3, outer = nextEdge(h);
-    if (winding != kUnknownWinding) {
-      winding_[t] = winding;
-    } else if (topo_.isGhost(t)) {
+    if (topo_.isGhost(t)) {
       winding_[t] = 0;
     } else {
       const std::int32_t g = topo_.adj[outer];
@@ -110,17 +144,7 @@ void Refiner::afterInsert(std::int32_t from, std::int32_t winding) {
     if (topo_.tri[outer] != kGhost) vertexEdge_[topo_.tri[outer]] = outer;
   }
   vertexEdge_[topo_.tri[from]] = from;
-  if (winding == kUnknownWinding) {
-    for (const std::int32_t h : around_) checkAround(h / 3);
-    return;
-  }
-  // Joined to a cavity's border: the spokes are new and unconstrained, none on the hull (no
-  // ghost was in the cavity), so only the border edges can be subsegments.
-  for (const std::int32_t h : around_) {
-    checkTriangle(h / 3);
-    const std::int32_t outer = nextEdge(h);
-    if (isSubsegment(outer)) queueIfEncroached(outer);
-  }
+  for (const std::int32_t h : around_) checkAround(h / 3);
 }
 
 void Refiner::noteCorners(std::int32_t t) {
@@ -241,16 +265,21 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   // encroaches it (then the triangle is tried again), else the triangle is left.
   std::int32_t cur = t;
   bool onEdge = false;  // of cur, where the walk ends
-  for (int step = 0;; ++step) {
+  // Each step starts one edge further round (step % 3), so that the walk cannot cycle.
+  for (int step = 0, first = 0;; ++step, first = first == 2 ? 0 : first + 1) {
     if (step > 100000) return Outcome::Skipped;
     std::int32_t exit = -1;
     onEdge = false;
-    for (int k = 0; k < 3 && exit < 0; ++k) {
-      const std::int32_t e = 3 * cur + (k + step) % 3;
-      const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
-      const Sign side = orient2d(x(a), y(a), x(b), y(b), cx, cy);
-      if (side == Sign::Negative) exit = e;
+    const std::uint32_t* corners = &topo_.tri[3 * cur];
+    const double* xy = d_.xy.data();
+    for (int i = 0, k = first; i < 3 && exit < 0; ++i) {
+      const int next = k == 2 ? 0 : k + 1;
+      const double* a = xy + 2 * corners[k];
+      const double* b = xy + 2 * corners[next];
+      const Sign side = orient2d(a[0], a[1], b[0], b[1], cx, cy);
+      if (side == Sign::Negative) exit = 3 * cur + k;
       onEdge |= side == Sign::Zero;
+      k = next;
     }
     if (exit < 0) break;
     if (isSubsegment(exit)) {
@@ -271,29 +300,44 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   cavity_.assign(1, cur);
   boundary_.clear();
   bool stamping = false;
+  // A bit per slot number modulo 64 for the list: most neighbours looked up are not in it,
+  // and their bit, clear, says so without the search.
+  const auto bit = [](std::int32_t n) { return std::uint64_t{1} << (n & 63); };
+  std::uint64_t listed = bit(cur);
   const auto inCavity = [&](std::int32_t n) {
     if (stamping) return stamp_[n] == epoch_;
-    return std::find(cavity_.begin(), cavity_.end(), n) != cavity_.end();
+    return (listed & bit(n)) != 0 && std::find(cavity_.begin(), cavity_.end(), n) != cavity_.end();
   };
+  // The arrays read here do not change during the search: read through local pointers, not
+  // reloaded after every store to the lists.
+  const std::uint32_t* tri = topo_.tri.data();
+  const std::int32_t* adj = topo_.adj.data();
+  const std::uint8_t* fixed = topo_.fixed.data();
+  const double* xy = d_.xy.data();
+  const bool keepAll = keepAll_;
   const std::size_t before = subsegments_.size();
   for (std::size_t i = 0; i < cavity_.size(); ++i) {
+    const std::int32_t slot = 3 * cavity_[i];
     for (int k = 0; k < 3; ++k) {
-      const std::int32_t e = 3 * cavity_[i] + k;
-      const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
-      if (isSubsegment(e)) {
-        if (encroachedBy(x(a), y(a), x(b), y(b), cx, cy)) queueSubsegment(e, true);
+      const std::int32_t e = slot + k;
+      if (fixed[e] || (keepAll && isSubsegment(e))) {
+        const double* a = xy + 2 * tri[e];
+        const double* b = xy + 2 * tri[k == 2 ? slot : e + 1];
+        if (encroachedBy(a[0], a[1], b[0], b[1], cx, cy)) queueSubsegment(e, true);
         boundary_.push_back(e);
         continue;
       }
-      const std::int32_t n = topo_.adj[e] / 3;
+      const auto n = static_cast<std::int32_t>(static_cast<std::uint32_t>(adj[e]) / 3);
       if (inCavity(n)) continue;
-      const std::uint32_t u = topo_.tri[3 * n], v = topo_.tri[3 * n + 1], w = topo_.tri[3 * n + 2];
+      const std::uint32_t u = tri[3 * n], v = tri[3 * n + 1], w = tri[3 * n + 2];
       if (u == kGhost || v == kGhost || w == kGhost ||
-          incircle(x(u), y(u), x(v), y(v), x(w), y(w), cx, cy) != Sign::Positive) {
+          incircle(xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1], xy[2 * w], xy[2 * w + 1], cx,
+                   cy) != Sign::Positive) {
         boundary_.push_back(e);
         continue;
       }
       cavity_.push_back(n);
+      listed |= bit(n);
       if (stamping) {
         stamp_[n] = epoch_;
       } else if (cavity_.size() > kShortCavity) {
@@ -428,6 +472,7 @@ Status Refiner::run() {
     const Shape s = shape(b.slot);
     left += s.skinny(sin2_) || s.area > maxArea_;
   }
+  winding_.resize(topo_.slotCount());
   d_.stats.steinerPoints += added_;
   d_.stats.refineSkipped = left;
   d_.stats.refineCapped = capped_;

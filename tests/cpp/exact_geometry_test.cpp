@@ -254,5 +254,60 @@ TEST(ExactGeometry, DistanceAndOrderAgreeWithRationals) {
   }
 }
 
+// The squared distance from (x, y) to the closed segment s, exactly.
+mpq_class distance2(const InputSegment& s, double x, double y) {
+  const mpq_class dx = q(s.bx) - q(s.ax), dy = q(s.by) - q(s.ay), wx = q(x) - q(s.ax),
+                  wy = q(y) - q(s.ay);
+  const mpq_class along = wx * dx + wy * dy, length2 = dx * dx + dy * dy;
+  if (along <= 0) return wx * wx + wy * wy;
+  if (along >= length2) {
+    const mpq_class vx = q(x) - q(s.bx), vy = q(y) - q(s.by);
+    return vx * vx + vy * vy;
+  }
+  const mpq_class cross = dx * wy - dy * wx;
+  return cross * cross / length2;
+}
+
+TEST(ExactGeometry, DistanceToTheChainsBoundOfPointsComputedOnSegments) {
+  // What refinement asks: whether a point computed on a segment (one rounding per
+  // coordinate, then nudged a few doubles) lies within the chains' bound, two spacings at
+  // the segment's largest coordinate. The distances are a few spacings, like the bound:
+  // short segments far from the origin (borders in degrees), long ones (a box around the
+  // data), along an axis and not, and ends a spacing or two apart.
+  testing::Random r(6);
+  int within = 0, beyond = 0;
+  for (int i = 0; i < 40000; ++i) {
+    const double scale = std::ldexp(1.0, int(r.next() % 40) - 10);
+    const double cx = (r.uniform() - 0.5) * 360 * scale, cy = (r.uniform() - 0.5) * 180 * scale;
+    const double length = scale * std::ldexp(r.uniform(), -int(r.next() % 30));
+    const double angle = r.uniform() * 6.283185307179586;
+    InputSegment s{cx, cy, cx + length * std::cos(angle), cy + length * std::sin(angle)};
+    switch (r.next() % 4) {
+      case 0: s.by = s.ay; break;  // along an axis
+      case 1: s.bx = s.ax; break;
+      case 2:  // ends a few doubles apart
+        s.bx = std::nextafter(s.ax, r.next() % 2 ? 1e300 : -1e300);
+        if (r.next() % 2) s.by = std::nextafter(s.ay, r.next() % 2 ? 1e300 : -1e300);
+        break;
+      default: break;
+    }
+    const double t = r.next() % 8 == 0 ? 0.5 : r.uniform();
+    double x = (1 - t) * s.ax + t * s.bx, y = (1 - t) * s.ay + t * s.by;
+    for (int k = int(r.next() % 6); k > 0; --k) {
+      double& v = r.next() % 2 ? x : y;
+      v = std::nextafter(v, r.next() % 2 ? 1e300 : -1e300);
+    }
+    const int e = chainBoundExponent(s) + int(r.next() % 3) - 1;
+    const mpq_class bound =
+        e >= 0 ? mpq_class(mpz_class(1) << e) : mpq_class(1, mpz_class(1) << -e);
+    const bool exact = distance2(s, x, y) <= bound * bound;
+    ASSERT_EQ(withinDistance(s, x, y, e), exact)
+        << s.ax << " " << s.ay << " " << s.bx << " " << s.by << " " << x << " " << y << " e " << e;
+    ++(exact ? within : beyond);
+  }
+  EXPECT_GT(within, 10000);
+  EXPECT_GT(beyond, 2000);
+}
+
 }  // namespace
 }  // namespace geocdt
