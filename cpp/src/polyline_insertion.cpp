@@ -159,9 +159,10 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
     // Whether snap rounding takes over the segments.
     bool snap = state_->options.snapRounding == SnapRounding::Always && d.built();
     // A large batch marks the segments that are edges already (found in one pass) in a first
-    // round, and inserts the others in a second: those may cross the first ones, which are
-    // then all in the store, as a crossed constraint must be.
+    // round, and inserts the others (kept in `later`) in a second: those may cross the first
+    // ones, which are then all in the store, as a crossed constraint must be.
     const bool twoRounds = ends.built() && !snap;
+    std::vector<PendingSegment> later;
     PresentSegments present(firstNew, twoRounds ? keep : firstNew);
     if (twoRounds) {
       std::size_t at = 0;
@@ -173,8 +174,6 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
       present.fixPresent(d.topo);
     }
     const std::size_t span = twoRounds ? 2 * total : total;  // progress: the rounds in turn
-    const std::uint32_t firstPolyline = store.polylineCount;
-    const std::size_t firstSegment = store.segments.size();
     std::size_t offset = 0;
     for (std::size_t i = 0; i < count; ++i) {
       const PolylineView& line = polylines[i];  // its count only: the points are in
@@ -207,6 +206,9 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
           if (present.present(u, v)) {
             store.mark(u, v, src);
             ++d.stats.segments;
+          } else {
+            later.push_back(
+                {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
           }
           continue;
         }
@@ -215,30 +217,14 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
         snap = outcome == Outcome::GaveUp;
       }
     }
-    if (twoRounds) {  // the second round: the same segments, numbered as in the first
-      std::size_t segment = firstSegment;
-      offset = 0;
-      for (std::size_t i = 0; i < count && !snap; ++i) {
-        const std::uint32_t* lineIds = ids + offset;
-        const std::size_t points = polylines[i].count;
-        offset += points;
-        const bool ring = points >= 3 && lineIds[0] == lineIds[points - 1];
-        for (std::size_t k = 0; k + 1 < points && !snap; ++k) {
-          if ((++segmentsTried & 255) == 0)
-            progress(Phase::Constraints, total + offset - points + k, span);
-          const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
-          if (u == v) continue;
-          EdgeSource src;
-          src.segment = static_cast<std::uint32_t>(segment++);
-          src.winding = ring ? 1 : 0;
-          src.polyline = firstPolyline + static_cast<std::uint32_t>(i);
-          if (present.present(u, v)) continue;
-          const Outcome outcome = inserter.insert(u, v, src);
-          if (outcome == Outcome::Broken) return located(inserter.error(), i, k);
-          snap = outcome == Outcome::GaveUp;
-        }
-      }
+    for (std::size_t j = 0; j < later.size() && !snap; ++j) {  // the second round
+      if ((j & 255) == 255) progress(Phase::Constraints, total + j * total / later.size(), span);
+      const PendingSegment& p = later[j];
+      const Outcome outcome = inserter.insert(p.u, p.v, p.src);
+      if (outcome == Outcome::Broken) return located(inserter.error(), p.polyline, p.index);
+      snap = outcome == Outcome::GaveUp;
     }
+    std::vector<PendingSegment>().swap(later);
     // Computed crossings stay where every chain that met one keeps the guarantee.
     if (!snap && d.built()) snap = !chainsKeepTheGuarantee(d, inserter.touchedSegments(), ends);
     if (snap) {
