@@ -9,7 +9,7 @@
 namespace geocdt::wasm {
 
 namespace {
-constexpr double kIntervalMs = 100;  // at most about ten reports a second
+constexpr double kIntervalMs = 100;  // within a phase, at most ten reports a second
 }
 
 void ProgressRelay::start(emscripten::val callback, std::size_t points) {
@@ -20,7 +20,6 @@ void ProgressRelay::start(emscripten::val callback, std::size_t points) {
   phase_ = -1;
   fraction_ = 0;
   unsent_ = false;
-  sentAny_ = false;
 }
 
 void ProgressRelay::finish() {
@@ -43,14 +42,14 @@ void ProgressRelay::report(void* relay, Phase phase, std::size_t done, std::size
 void ProgressRelay::update(Phase phase, double fraction) {
   const int p = static_cast<int>(phase);
   if (p < phase_ || (p == phase_ && fraction <= fraction_)) return;
+  const bool begins = p != phase_;
   phase_ = p;
   fraction_ = fraction;
   unsent_ = true;
-  if (!sentAny_ || emscripten_get_now() - sentAt_ >= kIntervalMs) send();
+  if (begins || emscripten_get_now() - sentAt_ >= kIntervalMs) send();
 }
 
 void ProgressRelay::send() {
-  sentAny_ = true;
   unsent_ = false;
   callback_(phase_, fraction_);
   // Timed from the callback's return, so that two reports are 100 ms apart wherever inside the

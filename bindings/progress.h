@@ -1,8 +1,9 @@
 #pragma once
-// Passes the core's progress checkpoints on to a JS function as (phase, fraction), at most
-// about ten times a second: the first report of a call, then one per 100 ms, then the last
-// one. Phases only move forward and a phase's fraction never goes back, even when one call
-// runs several batches (the points, then the polylines' points).
+// Passes the core's progress checkpoints on to a JS function as (phase, fraction): each
+// phase's first report at once (a bar can name every phase that ran, however short), then at
+// most one per 100 ms, then the last one. Phases only move forward and a phase's fraction
+// never goes back, even when one call runs several batches (the points, then the polylines'
+// points).
 #include <emscripten/val.h>
 
 #include <cstddef>
@@ -39,7 +40,6 @@ class ProgressRelay {
   double fraction_ = 0;
   bool unsent_ = false;
   double sentAt_ = 0;
-  bool sentAny_ = false;
 };
 
 }  // namespace geocdt::wasm

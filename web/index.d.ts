@@ -59,8 +59,8 @@ export interface ProgressEvent {
 
 export interface ProgressOptions {
   /**
-   * Called at most about ten times a second while the call runs: the first report, then one
-   * per 100 ms, then the last. Costs nothing when absent. An exception it throws ends the
+   * Called as each phase begins, then at most once per 100 ms within a phase, then once at
+   * the end. Costs nothing when absent. An exception it throws ends the
    * reports and is thrown once the call has returned; it may not call geocdt meanwhile.
    */
   onProgress?: (event: ProgressEvent) => void;

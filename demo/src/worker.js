@@ -24,7 +24,8 @@ const refineOptions = () =>
 self.onmessage = async ({ data: request }) => {
   try {
     await loadWasm();
-    // geocdt reports at most about ten times a second: each report goes straight to the page.
+    // geocdt reports once a phase begins and at most ten times a second within it: each report
+    // goes straight to the page.
     const onProgress = (progress) => self.postMessage({ id: request.id, progress });
     const reply = await handle(request, onProgress);
     self.postMessage({ id: request.id, ok: true, ...reply },

@@ -1,10 +1,10 @@
-// onProgress: phases in order, fractions growing, at most about ten reports a second, nothing
+// onProgress: phases in order, each named, fractions growing, one report per 100 ms, nothing
 // when absent; in the main API, the incremental class and the worker (worker_threads).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { init, triangulate, Triangulation, GeocdtError } from 'geocdt';
 import { createWorker } from 'geocdt/worker';
-import { checkProgressEvents } from './support/progress.js';
+import { checkProgressEvents, PHASES } from './support/progress.js';
 import { random, uniform } from './support/inputs.js';
 
 before(() => init());
@@ -32,7 +32,7 @@ function recorder() {
   };
 }
 
-test('triangulate reports every phase in order, fractions growing, at most ten a second', () => {
+test('triangulate names every phase in order, fractions growing, one per 100 ms within one', () => {
   const input = { points: uniform(400_000, 41), polylines: segments(3_000, 42) };
   const r = recorder();
   const started = performance.now();
@@ -43,21 +43,27 @@ test('triangulate reports every phase in order, fractions growing, at most ten a
   assert.deepEqual(r.events.at(-1), { phase: 'export', fraction: 1 });
   assert.ok(r.events.some((e) => e.phase === 'points' && e.fraction > 0 && e.fraction < 1),
     JSON.stringify(r.events));
-  // The first report, then one per 100 ms at most, then the last.
-  assert.ok(r.events.length <= 2 + elapsed / 100, `${r.events.length} in ${elapsed} ms`);
+  // Every phase that ran is named, however short it was.
+  assert.deepEqual([...new Set(r.events.map((e) => e.phase))], PHASES, JSON.stringify(r.events));
+  // Each phase's first report, then one per 100 ms at most within it, then the last.
+  assert.ok(r.events.length <= 1 + PHASES.length + elapsed / 100,
+    `${r.events.length} in ${elapsed} ms`);
   for (let i = 1; i + 1 < r.times.length; i++) {
+    if (r.events[i].phase !== r.events[i - 1].phase) continue;
     assert.ok(r.times[i] - r.times[i - 1] >= 99, `reports ${i - 1} and ${i} too close`);
   }
   const quiet = triangulate(input);
   assert.deepEqual(quiet.triangles, mesh.triangles, 'the same result without onProgress');
 });
 
-test('a small call reports its first and last state only', () => {
+test('a small call reports each phase as it begins, then its last state', () => {
   const r = recorder();
   triangulate({ points: [0, 0, 1, 0, 0, 1], polylines: [[0, 0, 1, 1]] },
     { onProgress: r.onProgress });
   checkProgressEvents(r.events);
-  assert.ok(r.events.length <= 2, JSON.stringify(r.events));
+  const begun = r.events.filter((e, i) => i === 0 || e.phase !== r.events[i - 1].phase);
+  assert.deepEqual(begun.map((e) => e.phase), PHASES, JSON.stringify(r.events));
+  assert.ok(r.events.length <= PHASES.length + 1, JSON.stringify(r.events));
   assert.deepEqual(r.events.at(-1), { phase: 'export', fraction: 1 });
 });
 
