@@ -33,7 +33,9 @@ function recorder() {
 }
 
 test('triangulate names every phase in order, fractions growing, one per 100 ms within one', () => {
-  const input = { points: uniform(400_000, 41), polylines: segments(3_000, 42) };
+  // Enough points that inserting them takes well over 100 ms on a fast machine too, so that
+  // a report inside the phase is due.
+  const input = { points: uniform(1_500_000, 41), polylines: segments(3_000, 42) };
   const r = recorder();
   const started = performance.now();
   const mesh = triangulate(input, { onProgress: r.onProgress });
