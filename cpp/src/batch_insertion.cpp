@@ -137,7 +137,9 @@ Status Delaunay::insertStored(std::uint32_t count, std::uint32_t* ids,
     if (duplicates) {
       newId = compactLargeBatch(base, count, ids, std::move(order));
     } else {
-      for (std::uint32_t i = 0; i < count; ++i) ids[i] = base + i;
+      forChunks(0, count, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) ids[i] = base + static_cast<std::uint32_t>(i);
+      });
     }
     // The cells' hints would point at the batch's first triangles: the next locate() or
     // batch sizes and fills the grid anew, and a one-shot call that has none never pays.
@@ -175,21 +177,26 @@ Status Delaunay::insertRun(const std::uint32_t* order, std::uint32_t count,
   }
   const bool withFlags = constrained();
   Status s;
-  for (std::uint32_t k = 0; k < count && s.ok(); ++k) {
-    // Points in input order lie each in a cache line of its own: read the next block's
-    // coordinates ahead, so that their cache misses overlap one another instead of each
-    // stalling its own insertion (without it, 1.41x the time at 1M uniform points, 1.56x at
-    // 4M; with it 1.06-1.13x that of points stored in insertion order).
-    if ((k & 4095) == 0) options_.progress(Phase::Points, k, count);
-    if (!sorted && k % kRunBlock == 0 && k + kRunBlock < count)
-      touch_ +=
-          touchPoints(base, order + k + kRunBlock, std::min(kRunBlock, count - k - kRunBlock));
-    const std::uint32_t v = vertex(k);
-    if (v == skip[0] || v == skip[1] || v == skip[2]) continue;
-    const std::uint32_t r = withFlags ? insertRunVertex<true>(v) : insertRunVertex<false>(v);
-    if (r == kGhost) s = error_;
-    if (r != v) recordDuplicate(v, r);
-  }
+  // In chunks, so that this function, which runs once a batch, never spends the engine's
+  // budget for optimised code: in a first call its long compile only took a core from the
+  // call (bench/EXPERIMENTS.md, first call 21).
+  forChunks(0, count, [&](std::size_t begin, std::size_t end) {
+    for (std::uint32_t k = static_cast<std::uint32_t>(begin); k < end && s.ok(); ++k) {
+      // Points in input order lie each in a cache line of its own: read the next block's
+      // coordinates ahead, so that their cache misses overlap one another instead of each
+      // stalling its own insertion (without it, 1.41x the time at 1M uniform points, 1.56x
+      // at 4M; with it 1.06-1.13x that of points stored in insertion order).
+      if ((k & 4095) == 0) options_.progress(Phase::Points, k, count);
+      if (!sorted && k % kRunBlock == 0 && k + kRunBlock < count)
+        touch_ +=
+            touchPoints(base, order + k + kRunBlock, std::min(kRunBlock, count - k - kRunBlock));
+      const std::uint32_t v = vertex(k);
+      if (v == skip[0] || v == skip[1] || v == skip[2]) continue;
+      const std::uint32_t r = withFlags ? insertRunVertex<true>(v) : insertRunVertex<false>(v);
+      if (r == kGhost) s = error_;
+      if (r != v) recordDuplicate(v, r);
+    }
+  });
   if (!worker) {
     topo.resizeSlots(static_cast<std::size_t>(runSlots_));
     runSlots_ = -1;
@@ -255,26 +262,36 @@ std::vector<std::uint32_t> Delaunay::compactLargeBatch(std::uint32_t base, std::
                                                        std::vector<std::uint32_t>&& scratch) {
   // first[j]: the first input point equal to vertex base + j (kGhost: not a vertex).
   std::vector<std::uint32_t> first(std::move(scratch));
-  for (std::uint32_t j = 0; j < count; ++j) first[j] = ids[j] == kGhost ? j : kGhost;
-  for (std::uint32_t i = 0; i < count; ++i)
-    if (ids[i] != kGhost && ids[i] >= base)
-      first[ids[i] - base] = std::min(first[ids[i] - base], i);
+  std::uint32_t* f = first.data();
+  forChunks(0, count, [=](std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j)
+      f[j] = ids[j] == kGhost ? static_cast<std::uint32_t>(j) : kGhost;
+  });
+  forChunks(0, count, [=](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (ids[i] != kGhost && ids[i] >= base)
+        f[ids[i] - base] = std::min(f[ids[i] - base], static_cast<std::uint32_t>(i));
+  });
   // In input order, a vertex's first appearance gives it the next id, which replaces first[j]:
   // an id is never above the index that gave it, so it cannot pass for a later first one.
   std::uint32_t next = 0;
   double* p = xy.data() + 2 * static_cast<std::size_t>(base);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    if (ids[i] != kGhost && ids[i] < base) continue;  // equals an older vertex
-    const std::uint32_t j = ids[i] == kGhost ? i : ids[i] - base;
-    if (first[j] == i) {
-      p[2 * static_cast<std::size_t>(next)] = p[2 * static_cast<std::size_t>(i)];
-      p[2 * static_cast<std::size_t>(next) + 1] = p[2 * static_cast<std::size_t>(i) + 1];
-      first[j] = next++;
+  forChunks(0, count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (ids[i] != kGhost && ids[i] < base) continue;  // equals an older vertex
+      const std::size_t j = ids[i] == kGhost ? i : ids[i] - base;
+      if (f[j] == i) {
+        p[2 * static_cast<std::size_t>(next)] = p[2 * i];
+        p[2 * static_cast<std::size_t>(next) + 1] = p[2 * i + 1];
+        f[j] = next++;
+      }
+      ids[i] = base + f[j];
     }
-    ids[i] = base + first[j];
-  }
-  for (std::uint32_t& id : first)
-    if (id != kGhost) id += base;
+  });
+  forChunks(0, count, [=](std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j)
+      if (f[j] != kGhost) f[j] += base;
+  });
   std::uint32_t* tri = topo.tri.data();
   forChunks(0, topo.tri.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
@@ -357,15 +374,19 @@ Status Delaunay::insertPending(const std::vector<std::uint32_t>& order,
   }
   const std::uint32_t a = at(0), b = at(i1), c = at(i2);
   build(a, b, c);
-  double minX = p[2 * a], maxX = minX, minY = p[2 * a + 1], maxY = minY;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t v = at(i);
-    minX = std::min(minX, p[2 * v]);
-    maxX = std::max(maxX, p[2 * v]);
-    minY = std::min(minY, p[2 * v + 1]);
-    maxY = std::max(maxY, p[2 * v + 1]);
-  }
-  grid_.reset(minX, minY, maxX, maxY, options_.gridDensity);
+  Bounds box{p[2 * a], p[2 * a + 1], p[2 * a], p[2 * a + 1]};
+  forChunks(0, n, [&](std::size_t begin, std::size_t end) {
+    Bounds c = box;
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint32_t v = at(i);
+      c.minX = std::min(c.minX, p[2 * v]);
+      c.maxX = std::max(c.maxX, p[2 * v]);
+      c.minY = std::min(c.minY, p[2 * v + 1]);
+      c.maxY = std::max(c.maxY, p[2 * v + 1]);
+    }
+    box = c;
+  });
+  grid_.reset(box.minX, box.minY, box.maxX, box.maxY, options_.gridDensity);
   grid_.fill(last_);
   built = {a, b, c};
   // The vertices that waited; the batch's own follow in the caller's loop.

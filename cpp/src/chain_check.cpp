@@ -5,6 +5,7 @@
 #include <limits>
 #include <tuple>
 
+#include "chunks.h"
 #include "edge_map.h"
 #include "euclidean_norm.h"
 #include "exact_geometry.h"
@@ -83,7 +84,7 @@ class Chains {
   // The segment's chain: the edges that hold it, from its first vertex to its last, each
   // within the bound and further along (a search by the most any vertex so far strays, in
   // units of the spacing of doubles on each axis, which on one route finds that route).
-  void search(std::uint32_t i, std::vector<std::uint32_t>& chain) {
+  GEOCDT_NOINLINE void search(std::uint32_t i, std::vector<std::uint32_t>& chain) {
     const InputSegment s = d_.constraints.geometry(i, d_.xy);
     const int bound = chainBoundExponent(s);
     const std::uint32_t first = d_.constraints.segments[i].a, last = d_.constraints.segments[i].b;
@@ -154,8 +155,8 @@ bool inSector(const double* p, std::uint32_t a, std::uint32_t u, std::uint32_t v
 
 // How often chain Q crosses chain P over the stretches they share; `undefined` tells whether
 // a stretch holds an end of either (where crossing and touching are the same).
-int crossings(const double* p, const std::vector<std::uint32_t>& P,
-              const std::vector<std::uint32_t>& Q, bool& undefined) {
+GEOCDT_NOINLINE int crossings(const double* p, const std::vector<std::uint32_t>& P,
+                              const std::vector<std::uint32_t>& Q, bool& undefined) {
   const std::size_t m = P.size(), n = Q.size();
   const auto indexInQ = [&](std::uint32_t v) {
     return static_cast<std::size_t>(std::find(Q.begin(), Q.end(), v) - Q.begin());
@@ -193,7 +194,7 @@ int crossings(const double* p, const std::vector<std::uint32_t>& P,
 // vertex off its segment and later routed another way leaves its first route behind, named
 // and straying, where the chain search (which keeps to vertices within the bound) never looks
 // (fuzz: a lattice around (16000001, 16000001), a route 2.3 spacings off its segment).
-bool namedEdgesStayNear(Delaunay& d, VertexEdges& ends, std::uint32_t i) {
+GEOCDT_NOINLINE bool namedEdgesStayNear(Delaunay& d, VertexEdges& ends, std::uint32_t i) {
   const ConstraintStore& store = d.constraints;
   const InputSegment s = store.geometry(i, d.xy);
   const int bound = chainBoundExponent(s);
@@ -223,50 +224,66 @@ bool namedEdgesStayNear(Delaunay& d, VertexEdges& ends, std::uint32_t i) {
   return true;
 }
 
+// Whether segment i's chain keeps the guarantee with every chain it meets; others: scratch.
+// It and the searches it calls are kept apart (GEOCDT_NOINLINE): one function of them all
+// took V8 20-30 ms to optimise while a first call ran it in its baseline code.
+bool segmentKeepsTheGuarantee(Delaunay& d, VertexEdges& ends, Chains& chains, std::uint32_t i,
+                              std::vector<std::uint32_t>& others) {
+  const ConstraintStore& store = d.constraints;
+  const std::vector<std::uint32_t> P = chains.of(i);
+  if (P.empty() || !namedEdgesStayNear(d, ends, i)) return false;
+  // The segments whose constrained edges meet this chain's vertices.
+  others.clear();
+  for (const std::uint32_t v : P) {
+    const std::int32_t out = chains.edgeOutOf(v);
+    std::int32_t e = out;
+    do {
+      if (d.topo.fixed[e]) {
+        const EdgeSource* src = store.find(v, d.topo.tri[nextEdge(e)]);
+        if (src)
+          store.forEachSegment(*src, [&](std::uint32_t j) {
+            if (j != i) others.push_back(j);
+          });
+      }
+      e = d.topo.adj[prevEdge(e)];
+    } while (e != out);
+  }
+  std::sort(others.begin(), others.end());
+  others.erase(std::unique(others.begin(), others.end()), others.end());
+  const InputSegment s = store.geometry(i, d.xy);
+  for (const std::uint32_t j : others) {
+    const InputSegment t = store.geometry(j, d.xy);
+    const Meeting how = meeting(s, t);
+    if (how == Meeting::Touching || (how == Meeting::Crossing && crossingNearAnEnd(s, t))) continue;
+    const std::vector<std::uint32_t>& Q = chains.of(j);
+    if (Q.empty()) return false;
+    bool undefined = false;
+    const int count = crossings(d.xy.data(), P, Q, undefined);
+    if (how == Meeting::Apart ? count > 0 : count > 1 || (!undefined && count != 1)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments, VertexEdges& ends) {
   if (segments.empty()) return true;
   std::sort(segments.begin(), segments.end());
   segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
-  const ConstraintStore& store = d.constraints;
   Chains chains(d, ends);
   std::vector<std::uint32_t> others;
-  for (const std::uint32_t i : segments) {
-    const std::vector<std::uint32_t> P = chains.of(i);
-    if (P.empty() || !namedEdgesStayNear(d, ends, i)) return false;
-    // The segments whose constrained edges meet this chain's vertices.
-    others.clear();
-    for (const std::uint32_t v : P) {
-      const std::int32_t out = chains.edgeOutOf(v);
-      std::int32_t e = out;
-      do {
-        if (d.topo.fixed[e]) {
-          const EdgeSource* src = store.find(v, d.topo.tri[nextEdge(e)]);
-          if (src)
-            store.forEachSegment(*src, [&](std::uint32_t j) {
-              if (j != i) others.push_back(j);
-            });
-        }
-        e = d.topo.adj[prevEdge(e)];
-      } while (e != out);
-    }
-    std::sort(others.begin(), others.end());
-    others.erase(std::unique(others.begin(), others.end()), others.end());
-    const InputSegment s = store.geometry(i, d.xy);
-    for (const std::uint32_t j : others) {
-      const InputSegment t = store.geometry(j, d.xy);
-      const Meeting how = meeting(s, t);
-      if (how == Meeting::Touching || (how == Meeting::Crossing && crossingNearAnEnd(s, t)))
-        continue;
-      const std::vector<std::uint32_t>& Q = chains.of(j);
-      if (Q.empty()) return false;
-      bool undefined = false;
-      const int count = crossings(d.xy.data(), P, Q, undefined);
-      if (how == Meeting::Apart ? count > 0 : count > 1 || (!undefined && count != 1)) return false;
-    }
-  }
-  return true;
+  bool keeps = true;
+  // A call per segment (a chunk of 1), so that this function, which runs once a call, never
+  // spends the engine's budget for optimised code (chunks.h; bench/EXPERIMENTS.md, first
+  // call 21).
+  forChunks(
+      0, segments.size(),
+      [&](std::size_t first, std::size_t last) {
+        for (std::size_t at = first; at < last && keeps; ++at)
+          keeps = segmentKeepsTheGuarantee(d, ends, chains, segments[at], others);
+      },
+      1);
+  return keeps;
 }
 
 }  // namespace geocdt

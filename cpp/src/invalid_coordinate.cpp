@@ -4,7 +4,19 @@
 #include <cstdint>
 #include <vector>
 
+#include "chunks.h"
+#include "geocdt/status.h"
+
 namespace geocdt {
+
+std::size_t firstInvalidCoordinate(const double* xy, std::size_t first, std::size_t last) {
+  std::size_t found = last;
+  forChunks(first, last, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end && found == last; ++i)
+      if (!(std::isfinite(xy[i]) && std::fabs(xy[i]) <= kMaxCoordinate)) found = i;
+  });
+  return found;
+}
 
 std::string integerToString(double v) {
   if (std::isinf(v)) return v < 0 ? "-inf" : "inf";

@@ -1,8 +1,13 @@
 #pragma once
-// The text that names an invalid coordinate in a Status message.
+// Finding an invalid coordinate, and the text that names it in a Status message.
+#include <cstddef>
 #include <string>
 
 namespace geocdt {
+
+// The index of the first value in xy[first, last) that is NaN, infinite or beyond
+// kMaxCoordinate, or last. In chunks (chunks.h): a call checks every input value once.
+std::size_t firstInvalidCoordinate(const double* xy, std::size_t first, std::size_t last);
 
 // "x = <v>: coordinates must ..." (or "y = ..." when isY) for a coordinate that is NaN,
 // infinite or beyond kMaxCoordinate. The value reads as std::to_string prints it ("%f":

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "chain_check.h"
+#include "chunks.h"
 #include "geocdt/triangulation.h"
 #include "invalid_coordinate.h"
 #include "present_segments.h"
@@ -22,9 +23,10 @@ Status checkPolyline(const PolylineView& line, std::size_t index) {
   if (line.count > 0 && line.xy == nullptr)
     return {StatusCode::InvalidArgument,
             "polyline " + std::to_string(index) + ": null coordinates with a count", index};
-  for (std::size_t i = 0; i < 2 * line.count; ++i) {
+  const std::size_t n = 2 * line.count;
+  const std::size_t i = firstInvalidCoordinate(line.xy, 0, n);
+  if (i < n) {
     const double v = line.xy[i];
-    if (std::isfinite(v) && std::fabs(v) <= kMaxCoordinate) continue;
     Status s{StatusCode::InvalidCoordinate,
              "polyline " + std::to_string(index) + " point " + std::to_string(i / 2) + " has " +
                  describeInvalidCoordinate(v, i % 2 == 1),
@@ -98,12 +100,21 @@ Status Triangulation::insertPolylines(std::vector<double>&& xy, const std::uint3
     return {StatusCode::InvalidArgument,
             "polyline offsets must run from 0 to the number of points in the buffer"};
   std::vector<PolylineView> views(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    if (offsets[i + 1] < offsets[i])
-      return {StatusCode::InvalidArgument,
-              "polyline offsets must not decrease (offset " + std::to_string(i + 1) + ")", i};
-    views[i] = {xy.data() + 2 * static_cast<std::size_t>(offsets[i]), offsets[i + 1] - offsets[i]};
-  }
+  std::size_t decreasing = count;  // the first polyline that ends before it starts, if any
+  forChunks(0, count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end && decreasing == count; ++i) {
+      if (offsets[i + 1] < offsets[i]) {
+        decreasing = i;
+        break;
+      }
+      views[i] = {xy.data() + 2 * static_cast<std::size_t>(offsets[i]),
+                  offsets[i + 1] - offsets[i]};
+    }
+  });
+  if (decreasing < count)
+    return {StatusCode::InvalidArgument,
+            "polyline offsets must not decrease (offset " + std::to_string(decreasing + 1) + ")",
+            decreasing};
   return insertPolylineBatch(views.data(), count, vertexIds, values, &xy);
 }
 
@@ -111,11 +122,17 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
                                           std::uint32_t* vertexIds, const double* values,
                                           std::vector<double>* adopt) {
   std::size_t total = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Status s = checkPolyline(polylines[i], i);
-    if (!s.ok()) return s;
-    total += polylines[i].count;
-  }
+  Status checked;
+  // In a chunk, not a loop of this function: compiled to wasm, the rest of the function came
+  // to lie inside that loop, and V8 charges its budget for optimised code by the bytes from a
+  // loop's start to its back edge (bench/EXPERIMENTS.md, first call 21).
+  forChunks(0, count, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last && checked.ok(); ++i) {
+      checked = checkPolyline(polylines[i], i);
+      total += polylines[i].count;
+    }
+  });
+  if (!checked.ok()) return checked;
   Delaunay& d = state_->delaunay;
   ConstraintStore& store = d.constraints;
   try {
@@ -164,66 +181,88 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
     const bool twoRounds = ends.built() && !snap;
     std::vector<PendingSegment> later;
     PresentSegments present(firstNew, twoRounds ? keep : firstNew);
+    // The loops over polylines call a function per polyline (a chunk of 1), and the second
+    // round one per chunk of segments: this function runs once a call, and its own loops
+    // would spend the engine's budget for optimised code on it, whose long compile only took
+    // a core from a first call (chunks.h; bench/EXPERIMENTS.md, first call 21).
     if (twoRounds) {
       std::size_t at = 0;
-      for (std::size_t i = 0; i < count; ++i) {
-        for (std::size_t k = 0; k + 1 < polylines[i].count; ++k)
-          present.expect(ids[at + k], ids[at + k + 1]);
-        at += polylines[i].count;
-      }
+      forChunks(
+          0, count,
+          [&](std::size_t first, std::size_t last) {
+            for (std::size_t i = first; i < last; ++i) {
+              for (std::size_t k = 0; k + 1 < polylines[i].count; ++k)
+                present.expect(ids[at + k], ids[at + k + 1]);
+              at += polylines[i].count;
+            }
+          },
+          1);
       present.fixPresent(d.topo);
     }
     const std::size_t span = twoRounds ? 2 * total : total;  // progress: the rounds in turn
     std::size_t offset = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-      const PolylineView& line = polylines[i];  // its count only: the points are in
-      const std::uint32_t* lineIds = ids + offset;
-      offset += line.count;
-      const std::uint64_t firstPoint = store.polylinePoints;
-      store.polylinePoints += line.count;
-      const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
-      const std::uint32_t id = store.startPolyline(ring);
-      ++d.stats.polylines;
-      for (std::size_t k = 0; k + 1 < line.count; ++k) {
-        if ((++segmentsTried & 255) == 0)
-          progress(Phase::Constraints, offset - line.count + k, span);
-        const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
-        if (u == v) continue;  // a repeated point: nothing to constrain
-        EdgeSource src;
-        src.segment = static_cast<std::uint32_t>(store.segments.size());
-        src.winding = ring ? 1 : 0;
-        src.polyline = id;
-        store.segments.push_back({u, v});
-        store.segmentStarts.push_back(
-            static_cast<std::uint32_t>(std::min<std::uint64_t>(firstPoint + k, kNoSegment)));
-        if (!d.built()) {
-          store.pending.push_back(
-              {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
-          continue;
-        }
-        if (snap) continue;  // stored: snap rounding inserts it with all the others
-        if (twoRounds) {
-          if (present.present(u, v)) {
-            store.mark(u, v, src);
-            ++d.stats.segments;
-          } else {
-            later.push_back(
-                {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
+    Status broken;
+    forChunks(
+        0, count,
+        [&](std::size_t first, std::size_t last) {
+          for (std::size_t i = first; i < last && broken.ok(); ++i) {
+            const PolylineView& line = polylines[i];  // its count only: the points are in
+            const std::uint32_t* lineIds = ids + offset;
+            offset += line.count;
+            const std::uint64_t firstPoint = store.polylinePoints;
+            store.polylinePoints += line.count;
+            const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
+            const std::uint32_t id = store.startPolyline(ring);
+            ++d.stats.polylines;
+            for (std::size_t k = 0; k + 1 < line.count; ++k) {
+              if ((++segmentsTried & 255) == 0)
+                progress(Phase::Constraints, offset - line.count + k, span);
+              const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
+              if (u == v) continue;  // a repeated point: nothing to constrain
+              EdgeSource src;
+              src.segment = static_cast<std::uint32_t>(store.segments.size());
+              src.winding = ring ? 1 : 0;
+              src.polyline = id;
+              store.segments.push_back({u, v});
+              store.segmentStarts.push_back(
+                  static_cast<std::uint32_t>(std::min<std::uint64_t>(firstPoint + k, kNoSegment)));
+              if (!d.built()) {
+                store.pending.push_back(
+                    {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
+                continue;
+              }
+              if (snap) continue;  // stored: snap rounding inserts it with all the others
+              if (twoRounds) {
+                if (present.present(u, v)) {
+                  store.mark(u, v, src);
+                  ++d.stats.segments;
+                } else {
+                  later.push_back(
+                      {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
+                }
+                continue;
+              }
+              const Outcome outcome = inserter.insert(u, v, src);
+              if (outcome == Outcome::Broken) {
+                broken = located(inserter.error(), i, k);
+                return;
+              }
+              snap = outcome == Outcome::GaveUp;
+            }
           }
-          continue;
-        }
-        const Outcome outcome = inserter.insert(u, v, src);
-        if (outcome == Outcome::Broken) return located(inserter.error(), i, k);
+        },
+        1);
+    if (!broken.ok()) return broken;
+    forChunks(0, later.size(), [&](std::size_t first, std::size_t last) {  // the second round
+      for (std::size_t j = first; j < last && !snap && broken.ok(); ++j) {
+        if ((j & 255) == 255) progress(Phase::Constraints, total + j * total / later.size(), span);
+        const PendingSegment& p = later[j];
+        const Outcome outcome = inserter.insert(p.u, p.v, p.src);
+        if (outcome == Outcome::Broken) broken = located(inserter.error(), p.polyline, p.index);
         snap = outcome == Outcome::GaveUp;
       }
-    }
-    for (std::size_t j = 0; j < later.size() && !snap; ++j) {  // the second round
-      if ((j & 255) == 255) progress(Phase::Constraints, total + j * total / later.size(), span);
-      const PendingSegment& p = later[j];
-      const Outcome outcome = inserter.insert(p.u, p.v, p.src);
-      if (outcome == Outcome::Broken) return located(inserter.error(), p.polyline, p.index);
-      snap = outcome == Outcome::GaveUp;
-    }
+    });
+    if (!broken.ok()) return broken;
     std::vector<PendingSegment>().swap(later);
     // Computed crossings stay where every chain that met one keeps the guarantee.
     if (!snap && d.built()) snap = !chainsKeepTheGuarantee(d, inserter.touchedSegments(), ends);

@@ -8,6 +8,7 @@
 #include <deque>
 #include <vector>
 
+#include "chunks.h"
 #include "delaunay.h"
 #include "edge_map.h"
 #include "vertex_edges.h"
@@ -58,14 +59,17 @@ class SegmentInserter {
     std::int32_t blocking = -1;      // a constrained half-edge crossing the segment
   };
 
-  Walk walk(std::uint32_t a, std::uint32_t b);
+  // walk, chainBendsAt, flipIn and the crossings' functions below are functions of their own:
+  // inlined, insert() was 13 KB of wasm, which V8 took 35-44 ms to optimise while a first
+  // call ran it in its baseline code (bench/EXPERIMENTS.md, first call 21).
+  GEOCDT_NOINLINE Walk walk(std::uint32_t a, std::uint32_t b);
   std::int32_t edgeOutOf(std::uint32_t a);
   // Whether a constrained edge at v holds a segment that does not pass through v exactly
   // (ends included): a chain bent through v.
-  bool chainBendsAt(std::uint32_t v);
+  GEOCDT_NOINLINE bool chainBendsAt(std::uint32_t v);
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v);  // half-edge u -> v, or -1
   void markConstrained(std::int32_t e, const EdgeSource& src);
-  bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);
+  GEOCDT_NOINLINE bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);
   // A piece crossing constrained half-edge h = r -> l, whose triangles' apexes are c1 and c2,
   // and the input segments ab and cd of the two.
   struct Crossing {
@@ -86,13 +90,13 @@ class SegmentInserter {
   // vertex where the piece must now pass, or kGhost when the crossed constraint was
   // re-routed instead. Its steps: split the crossed edge at the rounded crossing, route
   // both through one vertex, or meet at an end (whose (x, y) is the crossing last tried).
-  std::uint32_t resolveCrossing(const Piece& piece, std::int32_t h);
+  GEOCDT_NOINLINE std::uint32_t resolveCrossing(const Piece& piece, std::int32_t h);
   std::uint32_t split(const Crossing& c, double x, double y);
   std::uint32_t meetAtAnEnd(const Crossing& c, double x, double y);
   // The same in Crossings::Snapped mode (snap_rounding.cpp): the piece (on top of the stack)
   // and the crossed link are replaced by their bent links. False with error_ set when no
   // vertex keeps the guarantee (never seen) or the crossing could not be inserted.
-  bool snapCrossing(const Piece& piece, std::int32_t h);
+  GEOCDT_NOINLINE bool snapCrossing(const Piece& piece, std::int32_t h);
   // A vertex at (x, y): a new one, or the one already there; failed when location failed.
   std::uint32_t addCrossingVertex(double x, double y, bool& failed);
   // The constrained edge r-l, if it still is one, becomes the pieces r -> w -> l to insert.

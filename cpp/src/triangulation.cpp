@@ -14,13 +14,6 @@ namespace geocdt {
 
 namespace {
 
-// The index of the first value in xy[first, last) that is not a valid coordinate, or last.
-std::size_t firstInvalid(const double* xy, std::size_t first, std::size_t last) {
-  for (std::size_t i = first; i < last; ++i)
-    if (!(std::isfinite(xy[i]) && std::fabs(xy[i]) <= kMaxCoordinate)) return i;
-  return last;
-}
-
 // Checked side by side on `threads` threads for large inputs: the least index found wins.
 Status checkCoordinates(const double* xy, std::size_t count, const char* what,
                         std::uint32_t threads) {
@@ -32,12 +25,12 @@ Status checkCoordinates(const double* xy, std::size_t count, const char* what,
     std::vector<std::size_t> found(threads);
     inParallel(threads, [&](std::uint32_t k) {
       const std::size_t last = n * (k + 1) / threads;
-      found[k] = firstInvalid(xy, n * k / threads, last);
+      found[k] = firstInvalidCoordinate(xy, n * k / threads, last);
       if (found[k] == last) found[k] = n;
     });
     i = *std::min_element(found.begin(), found.end());
   } else {
-    i = firstInvalid(xy, 0, n);
+    i = firstInvalidCoordinate(xy, 0, n);
   }
   if (i == n) return Status::success();
   const double v = xy[i];

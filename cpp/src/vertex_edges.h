@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "chunks.h"
 #include "delaunay.h"
 
 namespace geocdt {
@@ -22,8 +23,11 @@ class VertexEdges {
     // of them does not double the table.
     out_.reserve(d.vertexCount() + d.vertexCount() / 64 + 64);
     out_.assign(d.vertexCount(), -1);
-    for (std::size_t e = 0; e < tri.size(); ++e)
-      if (tri[e] != kGhost) out_[tri[e]] = static_cast<std::int32_t>(e);
+    std::int32_t* out = out_.data();
+    forChunks(0, tri.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t e = begin; e < end; ++e)
+        if (tri[e] != kGhost) out[tri[e]] = static_cast<std::int32_t>(e);
+    });
   }
 
   bool built() const { return !out_.empty(); }
