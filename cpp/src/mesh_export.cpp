@@ -19,7 +19,9 @@ std::vector<std::uint8_t> insideSlots(const Delaunay& d, FillRule fill,
   if (known.empty()) computed = slotWindings(d);
   const std::vector<std::int32_t>& winding = known.empty() ? computed : known;
   std::vector<std::uint8_t> inside(winding.size(), 0);
-  for (std::size_t t = 0; t < winding.size(); ++t) inside[t] = insideByRule(winding[t], fill);
+  forChunks(0, winding.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) inside[t] = insideByRule(winding[t], fill);
+  });
   return inside;
 }
 
@@ -47,8 +49,10 @@ GEOCDT_NOINLINE std::int32_t lastKept(const std::vector<std::uint8_t>& kept, std
 
 // The order in which compaction fills holes: the last kept slot moves into the first
 // dropped one, until they meet. Calls move(from, to) for each move; returns the count kept.
+// Not inlined: with keep inside there are as many moves as triangles outside, and this loop
+// had the whole export optimised during a first call (bench/EXPERIMENTS.md, first call 21).
 template <typename Move>
-std::int32_t planCompaction(std::vector<std::uint8_t>& kept, Move move) {
+GEOCDT_NOINLINE std::int32_t planCompaction(std::vector<std::uint8_t>& kept, Move move) {
   const std::int32_t slots = static_cast<std::int32_t>(kept.size());
   std::int32_t front = 0, back = slots - 1;
   for (;;) {
@@ -266,11 +270,14 @@ Mesh exportMesh(Delaunay& d, const MeshOptions& options, bool consume,
   if (options.regions) m.regions = std::move(regions);
   progress(Phase::Export, 2, 3);
   addProvenance(d, m, options.segmentSources, threads);
-  for (const SteinerVertex& s : d.steiner) {
-    m.steiner.push_back(s.vertex);
-    m.steinerParents.insert(m.steinerParents.end(), s.parents, s.parents + 3);
-    m.steinerWeights.insert(m.steinerWeights.end(), s.weights, s.weights + 3);
-  }
+  forChunks(0, d.steiner.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const SteinerVertex& s = d.steiner[i];
+      m.steiner.push_back(s.vertex);
+      m.steinerParents.insert(m.steinerParents.end(), s.parents, s.parents + 3);
+      m.steinerWeights.insert(m.steinerWeights.end(), s.weights, s.weights + 3);
+    }
+  });
   progress(Phase::Export, 3, 3);
   return m;
 }

@@ -81,12 +81,14 @@ void Refiner::rebuild() {
   // One pass: a half-edge out of each vertex (the last one), and the ends of subsegments
   // (the flag first, the corners of the triangle only for the few that have it).
   const std::uint32_t* tri = topo_.tri.data();
-  for (std::int32_t e = 0; e < static_cast<std::int32_t>(topo_.tri.size()); ++e) {
-    const std::uint32_t v = tri[e];
-    if (v == kGhost) continue;  // (then a ghost triangle's edge, on no subsegment)
-    vertexEdge_[v] = e;
-    if (isSubsegment(e) && !topo_.isGhost(e / 3)) onSubsegment_[v] = 1;
-  }
+  forChunks(0, topo_.tri.size(), [&](std::size_t begin, std::size_t end) {
+    for (auto e = static_cast<std::int32_t>(begin); e < static_cast<std::int32_t>(end); ++e) {
+      const std::uint32_t v = tri[e];
+      if (v == kGhost) continue;  // (then a ghost triangle's edge, on no subsegment)
+      vertexEdge_[v] = e;
+      if (isSubsegment(e) && !topo_.isGhost(e / 3)) onSubsegment_[v] = 1;
+    }
+  });
 }
 
 // After a vertex was inserted: the triangles around it take their windings from the caller,
@@ -400,6 +402,40 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   return Outcome::Done;
 }
 
+Refiner::Step Refiner::refineStep(std::vector<BadTriangle>& retry,
+                                  std::vector<BadTriangle>& unresolved) {
+  if (capped_) return Step::Stop;
+  if (!subsegments_.empty()) {
+    const Subsegment s = subsegments_.back();
+    subsegments_.pop_back();
+    const std::int32_t e = findEdge(s.u, s.v);
+    if (e < 0) return Step::Go;
+    return splitSubsegment(e, s.forced) == Outcome::Failed ? Step::Stop : Step::Go;
+  }
+  for (const BadTriangle& b : retry) checkTriangle(b.slot);
+  retry.clear();
+  if (bad_.empty()) return Step::Stop;
+  const BadTriangle b = bad_.pop();
+  if (!holds(b)) return Step::Go;
+  const Outcome o = splitTriangle(b);
+  if (o == Outcome::Failed) return Step::Failed;
+  if (o == Outcome::Retry) {
+    retry.push_back(b);
+  } else if (holds(b)) {
+    unresolved.push_back(b);  // skipped, or the cap stopped it
+  }
+  return Step::Go;
+}
+
+Refiner::Step Refiner::refineSteps(std::vector<BadTriangle>& retry,
+                                   std::vector<BadTriangle>& unresolved) {
+  for (std::size_t i = 0; i < kChunk; ++i) {
+    const Step step = refineStep(retry, unresolved);
+    if (step != Step::Go) return step;
+  }
+  return Step::Go;
+}
+
 Status Refiner::run() {
   if (!d_.built()) return Status::success();
   // Steiner vertices take ids past the constraint store's id-ordered slots (EdgeSlot).
@@ -426,38 +462,25 @@ Status Refiner::run() {
     hullOf_[ConstraintStore::key(a, b)] = static_cast<std::uint32_t>(hull_.size());
     hull_.push_back({x(a), y(a), x(b), y(b)});
   }
-  for (std::int32_t t = 0; t < topo_.slotCount(); ++t) {
-    checkTriangle(t);
-    if (topo_.isGhost(t)) continue;
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t e = 3 * t + k, twin = topo_.adj[e];
-      if (isSubsegment(e) && (topo_.isGhost(twin / 3) || e < twin)) queueIfEncroached(e);
-    }
-  }
+  // The scan and the loop's steps in chunks (chunks.h): run() is called once, and with both
+  // inlined it was 18 KB of wasm that a first call ran in its baseline code throughout
+  // (bench/EXPERIMENTS.md, first call 21).
+  forChunks(
+      0, static_cast<std::size_t>(topo_.slotCount()), [&](std::size_t begin, std::size_t end) {
+        for (auto t = static_cast<std::int32_t>(begin); t < static_cast<std::int32_t>(end); ++t) {
+          checkTriangle(t);
+          if (topo_.isGhost(t)) continue;
+          for (int k = 0; k < 3; ++k) {
+            const std::int32_t e = 3 * t + k, twin = topo_.adj[e];
+            if (isSubsegment(e) && (topo_.isGhost(twin / 3) || e < twin)) queueIfEncroached(e);
+          }
+        }
+      });
   std::vector<BadTriangle> retry;
   std::vector<BadTriangle> unresolved;  // taken from the queue and left as they were
-  while (!capped_) {
-    if (!subsegments_.empty()) {
-      const Subsegment s = subsegments_.back();
-      subsegments_.pop_back();
-      const std::int32_t e = findEdge(s.u, s.v);
-      if (e < 0) continue;
-      if (splitSubsegment(e, s.forced) == Outcome::Failed) break;
-      continue;
-    }
-    for (const BadTriangle& b : retry) checkTriangle(b.slot);
-    retry.clear();
-    if (bad_.empty()) break;
-    const BadTriangle b = bad_.pop();
-    if (!holds(b)) continue;
-    const Outcome o = splitTriangle(b);
-    if (o == Outcome::Failed) return d_.lastError();
-    if (o == Outcome::Retry) {
-      retry.push_back(b);
-    } else if (holds(b)) {
-      unresolved.push_back(b);  // skipped, or the cap stopped it
-    }
-  }
+  Step step = Step::Go;
+  while (step == Step::Go) step = refineSteps(retry, unresolved);
+  if (step == Step::Failed) return d_.lastError();
   // What is left bad: every triangle was checked when it was made, and a bad one queued; a
   // queued one was split (then it is gone, or it is among these), skipped, or is still
   // waiting. A pass over all the slots instead missed the cache for every one of them.
@@ -466,12 +489,15 @@ Status Refiner::run() {
   std::uint64_t left = 0;
   ++epoch_;
   stamp_.resize(topo_.slotCount(), 0);
-  for (const BadTriangle& b : unresolved) {
-    if (stamp_[b.slot] == epoch_ || !holds(b) || !inRegion(b.slot)) continue;
-    stamp_[b.slot] = epoch_;
-    const Shape s = shape(b.slot);
-    left += s.skinny(sin2_) || s.area > maxArea_;
-  }
+  forChunks(0, unresolved.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const BadTriangle& b = unresolved[i];
+      if (stamp_[b.slot] == epoch_ || !holds(b) || !inRegion(b.slot)) continue;
+      stamp_[b.slot] = epoch_;
+      const Shape s = shape(b.slot);
+      left += s.skinny(sin2_) || s.area > maxArea_;
+    }
+  });
   winding_.resize(topo_.slotCount());
   d_.stats.steinerPoints += added_;
   d_.stats.refineSkipped = left;

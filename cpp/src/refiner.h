@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "chunks.h"
 #include "delaunay.h"
 #include "exact_geometry.h"
 #include "geocdt/predicates.h"
@@ -207,8 +208,15 @@ class Refiner {
   void noteCorners(std::int32_t t);
   void checkAround(std::int32_t t);  // the triangle and its subsegments
   void restoreDelaunay(std::vector<std::int32_t>& stack);
+  // Not inlined into refineSteps, which would take V8 twice as long to optimise.
   Outcome splitSubsegment(std::int32_t e, bool forced);
   Outcome splitTriangle(const BadTriangle& bad);
+  // One step of run()'s loop: a subsegment or a bad triangle split (or found gone); and up
+  // to kChunk of them in a call of their own (chunks.h).
+  enum class Step { Go, Stop, Failed };
+  Step refineStep(std::vector<BadTriangle>& retry, std::vector<BadTriangle>& unresolved);
+  GEOCDT_NOINLINE Step refineSteps(std::vector<BadTriangle>& retry,
+                                   std::vector<BadTriangle>& unresolved);
   void weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], double cx, double cy) const;
   std::uint32_t newVertex(double px, double py) {
     d_.xy.push_back(px);
