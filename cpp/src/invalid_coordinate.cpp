@@ -12,8 +12,12 @@ namespace geocdt {
 std::size_t firstInvalidCoordinate(const double* xy, std::size_t first, std::size_t last) {
   std::size_t found = last;
   forChunks(first, last, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end && found == last; ++i)
-      if (!(std::isfinite(xy[i]) && std::fabs(xy[i]) <= kMaxCoordinate)) found = i;
+    if (found != last) return;
+    for (std::size_t i = begin; i < end; ++i)
+      if (!(std::isfinite(xy[i]) && std::fabs(xy[i]) <= kMaxCoordinate)) {
+        found = i;
+        return;
+      }
   });
   return found;
 }

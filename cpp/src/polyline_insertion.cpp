@@ -102,10 +102,11 @@ Status Triangulation::insertPolylines(std::vector<double>&& xy, const std::uint3
   std::vector<PolylineView> views(count);
   std::size_t decreasing = count;  // the first polyline that ends before it starts, if any
   forChunks(0, count, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end && decreasing == count; ++i) {
+    if (decreasing != count) return;
+    for (std::size_t i = begin; i < end; ++i) {
       if (offsets[i + 1] < offsets[i]) {
         decreasing = i;
-        break;
+        return;
       }
       views[i] = {xy.data() + 2 * static_cast<std::size_t>(offsets[i]),
                   offsets[i + 1] - offsets[i]};
