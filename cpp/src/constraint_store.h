@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "edge_map.h"
+#include "extra_members.h"
 
 namespace geocdt {
 
@@ -22,7 +23,7 @@ struct EdgeSource {
   std::uint32_t segment = 0;   // the first input segment: index into ConstraintStore::segments
   std::int32_t winding = 0;    // ring traversals along the edge's direction minus against it
   std::uint32_t polyline = 0;  // the first polyline
-  std::int32_t extra = -1;     // index of more polylines and segments in the store, or -1
+  std::int32_t extra = -1;     // the first of more polylines and segments in the store, or -1
 };
 
 // An input segment's geometry: what crossings are computed from and chains are checked
@@ -102,12 +103,13 @@ class ConstraintStore {
     EdgeSource& e = *entry;
     e.winding += src.winding;
     std::int32_t first = src.winding;  // src's first pair's share: what its extras leave
-    if (src.extra >= 0)
-      for (const Member& m : extras_[src.extra]) first -= sign * m.winding;
-    add(e, {src.polyline, src.segment, first});
-    if (src.extra >= 0) {
-      const std::vector<Member> more = extras_[src.extra];  // extras_ may grow
-      for (const Member& m : more) add(e, {m.polyline, m.segment, sign * m.winding});
+    for (std::int32_t k = src.extra; k >= 0; k = members_[k].next)
+      first -= sign * members_[k].winding;
+    add(e, src.polyline, src.segment, first);
+    // By index: adding to e appends to the pool, which never moves what it holds.
+    for (std::int32_t k = src.extra; k >= 0; k = members_[k].next) {
+      const ExtraMember m = members_[k];
+      add(e, m.polyline, m.segment, sign * m.winding);
     }
   }
 
@@ -118,8 +120,8 @@ class ConstraintStore {
     edges_.erase(key(u, v));
     if (u > v) {
       src.winding = -src.winding;
-      if (src.extra >= 0)
-        for (Member& m : extras_[src.extra]) m.winding = -m.winding;
+      for (std::int32_t k = src.extra; k >= 0; k = members_[k].next)
+        members_[k].winding = -members_[k].winding;
     }
     return src;
   }
@@ -138,15 +140,15 @@ class ConstraintStore {
   std::uint64_t touch(const std::uint64_t* keys, std::size_t n) const {
     return edges_.touch(keys, n);
   }
-  // Brings the extra members of n found edges (or null) into the cache: a list is two
-  // dependent misses, its header and its members, that overlap across the edges this way.
+  // Brings the first extra member of n found edges (or null) into the cache, so that the
+  // misses overlap across the edges.
   std::uint64_t touchExtras(const EdgeSource* const* found, std::size_t n) const {
-    if (extras_.empty()) return 0;
+    if (members_.empty()) return 0;
     std::uint64_t any = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      // No branch on whether an edge has extras: the others read list 0 (never empty).
+      // No branch on whether an edge has extras: the others read member 0.
       const std::int32_t extra = found[k] ? found[k]->extra : -1;
-      any |= extras_[static_cast<std::size_t>(std::max(extra, 0))].front().polyline;
+      any |= members_[std::max(extra, 0)].polyline;
     }
     return any;
   }
@@ -162,12 +164,11 @@ class ConstraintStore {
   template <typename F>
   void forEachPolyline(const EdgeSource& e, F&& f) const {
     f(e.polyline);
-    if (e.extra < 0) return;
-    const std::vector<Member>& more = extras_[e.extra];
-    for (std::size_t k = 0; k < more.size(); ++k) {
-      const std::uint32_t p = more[k].polyline;
+    for (std::int32_t k = e.extra; k >= 0; k = members_[k].next) {
+      const std::uint32_t p = members_[k].polyline;
       bool seen = p == e.polyline;
-      for (std::size_t j = 0; j < k && !seen; ++j) seen = more[j].polyline == p;
+      for (std::int32_t j = e.extra; j != k && !seen; j = members_[j].next)
+        seen = members_[j].polyline == p;
       if (!seen) f(p);
     }
   }
@@ -177,8 +178,7 @@ class ConstraintStore {
   template <typename F>
   void forEachSegment(const EdgeSource& e, F&& f) const {
     f(e.segment);
-    if (e.extra >= 0)
-      for (const Member& m : extras_[e.extra]) f(m.segment);
+    for (std::int32_t k = e.extra; k >= 0; k = members_[k].next) f(members_[k].segment);
   }
 
   // f(polyline, winding) for each (polyline, segment) pair of a stored edge, with its share
@@ -187,11 +187,10 @@ class ConstraintStore {
   template <typename F>
   void forEachPolylineWinding(const EdgeSource& e, F&& f) const {
     std::int32_t first = e.winding;
-    if (e.extra >= 0)
-      for (const Member& m : extras_[e.extra]) {
-        first -= m.winding;
-        f(m.polyline, m.winding);
-      }
+    for (std::int32_t k = e.extra; k >= 0; k = members_[k].next) {
+      first -= members_[k].winding;
+      f(members_[k].polyline, members_[k].winding);
+    }
     f(e.polyline, first);
   }
 
@@ -203,11 +202,9 @@ class ConstraintStore {
     edges_.reserve(edges);
   }
 
-  // The polylines of every edge beyond its first, counted with repeats: with edgeCount(), a
-  // bound on the provenance an export lists. Counted as lists grow, not summed at export: a
-  // loop over hundreds of thousands of lists got the whole export optimised during a first
-  // call (bench/EXPERIMENTS.md, first call 21).
-  std::size_t extraMembers() const { return extraMembers_; }
+  // The polylines of every edge beyond its first, counted with repeats (and those of lists
+  // no edge holds any more): with edgeCount(), a bound on the provenance an export lists.
+  std::size_t extraMembers() const { return members_.size(); }
   // Frees what only inserting segments needs (their ends and starts), keeping what an
   // export reads (each edge's polylines and windings): for an export that ends the
   // triangulation, where the heap peaks.
@@ -219,8 +216,7 @@ class ConstraintStore {
 
   void clear() {
     edges_.clear();
-    extras_.clear();
-    extraMembers_ = 0;
+    members_.clear();
     segments.clear();
     segmentStarts.clear();
     pending.clear();
@@ -231,42 +227,43 @@ class ConstraintStore {
   }
 
  private:
-  // What an edge carries beyond its first polyline and segment: more (polyline, segment)
-  // pairs, each with its share of the winding (the first pair's share is what they leave).
-  // One list, allocated when a second pair arrives (shared borders make hundreds of
-  // thousands of them), each pair once.
-  struct Member {
-    std::uint32_t polyline, segment;
-    std::int32_t winding;
-  };
-
-  // Adds pair m with its share to e, whose total already includes it.
-  void add(EdgeSource& e, Member m) {
-    if (m.polyline == e.polyline && m.segment == e.segment) return;
-    if (e.extra < 0) {
-      e.extra = static_cast<std::int32_t>(extras_.size());
-      extras_.emplace_back();
-    }
-    std::vector<Member>& list = extras_[e.extra];
-    for (Member& q : list)
-      if (q.polyline == m.polyline && q.segment == m.segment) {
-        q.winding += m.winding;
+  // Adds the pair (polyline, segment) with its share of the winding to e, whose total
+  // already includes it; each pair is listed once, in the order pairs first came.
+  void add(EdgeSource& e, std::uint32_t polyline, std::uint32_t segment, std::int32_t winding) {
+    if (polyline == e.polyline && segment == e.segment) return;
+    std::int32_t last = -1;
+    for (std::int32_t k = e.extra; k >= 0; k = members_[k].next) {
+      ExtraMember& q = members_[k];
+      if (q.polyline == polyline && q.segment == segment) {
+        q.winding += winding;
         return;
       }
-    list.push_back(m);
-    ++extraMembers_;
+      last = k;
+    }
+    const std::int32_t added = members_.append({polyline, segment, winding, -1});
+    (last < 0 ? e.extra : members_[last].next) = added;
   }
+  // A copy of the list from `from`, windings times sign; returns its first member.
   std::int32_t copyExtra(std::int32_t from, std::int32_t sign) {
-    std::vector<Member> copy = extras_[from];
-    for (Member& m : copy) m.winding *= sign;
-    extraMembers_ += copy.size();
-    extras_.push_back(std::move(copy));
-    return static_cast<std::int32_t>(extras_.size() - 1);
+    std::int32_t first = -1, last = -1;
+    for (std::int32_t k = from; k >= 0; k = members_[k].next) {
+      ExtraMember m = members_[k];
+      m.winding *= sign;
+      m.next = -1;
+      const std::int32_t added = members_.append(m);
+      (last < 0 ? first : members_[last].next) = added;
+      last = added;
+    }
+    return first;
   }
 
   EdgeMap<EdgeSource, EdgeSlot> edges_;
-  std::vector<std::vector<Member>> extras_;
-  std::size_t extraMembers_ = 0;  // the sizes of extras_' lists, summed
+  // What edges carry beyond their first polyline and segment: more (polyline, segment)
+  // pairs, each with its share of the winding (the first pair's share is what they leave),
+  // as lists linked through one pool. Shared borders make hundreds of thousands of short
+  // lists: a vector each cost an allocation each (which in wasm had malloc optimised during
+  // a first call) and more memory than its members (bench/EXPERIMENTS.md).
+  ExtraMembers members_;
 };
 
 }  // namespace geocdt
