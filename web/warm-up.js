@@ -39,7 +39,7 @@ function random(seed) {
   };
 }
 
-// Points, and rings that overlap and cross one another (as country rings and coasts do).
+// Points; rings that overlap and cross one another (as coasts do); rings that share borders.
 function warmUpInputs() {
   const next = random(12345);
   const points = new Float64Array(2 * 20000);
@@ -59,11 +59,42 @@ function warmUpInputs() {
     }
     offsets[r + 1] = (r + 1) * (sides + 1);
   }
+  const grid = { polylines: countryGrid(16, 6) };
   return [
     [{ points }, undefined],
     [{ polylines: { coords, offsets } }, undefined],
     [{ polylines: { coords, offsets } }, { keep: 'inside' }],
+    [grid, undefined],
   ];
+}
+
+// A k x k grid of cells whose rings share their borders, as neighbouring countries' do: the
+// points of a shared side are duplicates and its segments overlap; on the sides between
+// columns the cell on the left has twice the points of the one on the right, so that points
+// lie on the other ring's segments (T-junctions). Real borders take these paths, which the
+// random rings do not reach; left cold, they were compiled and run in baseline code during a
+// caller's first call on country rings (bench/EXPERIMENTS.md, the first call, 22).
+function countryGrid(k, m) {
+  const rings = [];
+  const side = (x0, y0, x1, y1, n) => {
+    const out = [];
+    for (let t = 0; t < n; t++) out.push(x0 + ((x1 - x0) * t) / n, y0 + ((y1 - y0) * t) / n);
+    return out;
+  };
+  for (let i = 0; i < k; i++) {
+    for (let j = 0; j < k; j++) {
+      const x0 = i / k, x1 = (i + 1) / k, y0 = j / k, y1 = (j + 1) / k;
+      rings.push([
+        ...side(x0, y0, x1, y0, m), ...side(x1, y0, x1, y1, 2 * m),
+        ...side(x1, y1, x0, y1, m), ...side(x0, y1, x0, y0, m), x0, y0,
+      ]);
+    }
+  }
+  // Lines a hair off the grid's diagonals, which cross its sides right next to its corners.
+  rings.push([0, 1e-13, 1, 1 + 1e-13], [1e-13, 1, 1 + 1e-13, 0]);
+  const offsets = new Uint32Array(rings.length + 1);
+  rings.forEach((r, n) => { offsets[n + 1] = offsets[n] + r.length / 2; });
+  return { coords: Float64Array.from(rings.flat()), offsets };
 }
 
 // Runs the warm-up with the worker's own triangulate(): first a call so small that its time is

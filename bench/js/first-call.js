@@ -3,13 +3,15 @@
 // triangulate() and then warm calls, and reports medians over the runs. delaunator runs the
 // same way, on the same points, for context.
 //   node bench/js/first-call.js [--runs N] [--node] [--chromium] [--quick] [--baseline DIR]
-//     [--delay MS] [--threads N]
+//     [--delay MS] [--threads N] [--running-browser]
 // --node or --chromium runs only that engine; --quick runs only the Natural Earth 50m rings;
 // --baseline DIR also runs another build of the package (a folder holding its web/) in the
 // same rounds, for a before/after; --delay MS waits that long between init() and the first
 // call, as a page or script that loads its data after init() does (default 0); --threads N
 // passes init({ threads: N }) (the threaded build; in Chromium the page is then served
-// cross-origin isolated).
+// cross-origin isolated); --running-browser starts Chromium once and opens each run's page in
+// a fresh context of that browser (a new renderer process), as a user's visit to a page
+// does, instead of starting a browser per run, whose own start-up competes with the page.
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { createServer } from 'node:http';
@@ -29,6 +31,7 @@ const runs = Number(option('--runs', 5));
 const warmCalls = 6;
 const delayMs = Number(option('--delay', 0));
 const threads = Number(option('--threads', 1));
+const runningBrowser = process.argv.includes('--running-browser');
 
 // Each dataset is { points } or { polylines: { coords, offsets } } (the flat form), made in
 // Node and handed to the browser as bytes; delaunator gets the same points, unconstrained.
@@ -162,15 +165,22 @@ function serve(data) {
   return new Promise((done) => server.listen(0, '127.0.0.1', () => done(server)));
 }
 
-async function inChromium(server, library, dataset) {
+async function launchChromium() {
   const { chromium } = await import('playwright-core');
-  const browser = await chromium.launch({
+  return chromium.launch({
     executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking',
       '--js-flags=--expose-gc'],
   });
+}
+
+// running: a browser started before, or null to start one for this run alone. In a running
+// browser each run gets a context of its own: a new renderer process, with empty caches.
+async function inChromium(server, library, dataset, running) {
+  const browser = running ?? await launchChromium();
+  const context = running ? await running.newContext() : null;
   try {
-    const page = await browser.newPage();
+    const page = await (context ?? browser).newPage();
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
     return await page.evaluate(async ([measureSource, loaderSource, lib, name, calls, delay,
       threadCount]) => {
@@ -183,7 +193,7 @@ async function inChromium(server, library, dataset) {
     }, [measureOnce.toString(), loader.toString(), library, dataset, warmCalls, delayMs,
       threads]);
   } finally {
-    await browser.close();
+    await (context ?? browser).close();
   }
 }
 
@@ -192,8 +202,10 @@ async function inChromium(server, library, dataset) {
 const fmt = (x) => (x < 10 ? x.toFixed(1) : x.toFixed(0));
 
 function report(engine, title, results) {
-  console.log(`### ${engine}: ${title} (${runs} fresh ${engine === 'Node' ? 'processes'
-    : 'browsers'}, medians${delayMs > 0 ? `, first call ${delayMs} ms after init` : ''})\n`);
+  const fresh = engine === 'Node' ? 'processes'
+    : runningBrowser ? 'pages, each in a context of its own in one running browser' : 'browsers';
+  const delay = delayMs > 0 ? `, first call ${delayMs} ms after init` : '';
+  console.log(`### ${engine}: ${title} (${runs} fresh ${fresh}, medians${delay})\n`);
   const cpu = Object.values(results)[0][0].firstCpuMs !== undefined;
   console.log(`| library | init ms | first call ms | second ms | warm ms | first / warm |${
     cpu ? ' first / warm, main thread CPU |' : ''}`);
@@ -218,6 +230,12 @@ async function main() {
   const libraries = ['geocdt', ...(baselineDir ? ['baseline'] : []), 'delaunator'];
   const data = new Map();
   const server = engines.includes('chromium') ? await serve(data) : null;
+  let running = null;
+  if (engines.includes('chromium') && runningBrowser) {
+    running = await launchChromium();
+    // Its start-up work done before the first run, as in a browser the user has open.
+    await new Promise((done) => setTimeout(done, 3000));
+  }
   try {
     for (const engine of engines) {
       for (const dataset of datasets) {
@@ -228,13 +246,14 @@ async function main() {
         for (let r = 0; r < runs; r++) {
           for (const library of libraries) {
             results[library].push(engine === 'node' ? inNode(library, dataset)
-              : await inChromium(server, library, dataset));
+              : await inChromium(server, library, dataset, running));
           }
         }
         report(engine === 'node' ? 'Node' : 'Chromium', DATASETS[dataset].title, results);
       }
     }
   } finally {
+    await running?.close();
     server?.close();
   }
 }
