@@ -9,7 +9,10 @@
 # GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines fuzz_refine fuzz_strips"),
 # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: a reproducible run,
 # as long as the seconds do not cut it short), GEOCDT_FUZZ_TIMEOUT (seconds one input may
-# take, default 20; fuzz_strips triangulates 33,000 points a few times: 60).
+# take, default 20; fuzz_strips triangulates 33,000 points a few times: 60), GEOCDT_FUZZ_STEP
+# (build: configure and build the targets, then stop; run: run targets built before, without
+# touching the build directory, so that runs of single targets can go side by side; unset:
+# both).
 # Replay one input:  build-fuzz/tests/fuzz/fuzz_polylines FILE   (GEOCDT_FUZZ_PRINT=1 prints it)
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -36,27 +39,37 @@ install_or_explain() {
   fi
 }
 
-command -v cmake >/dev/null 2>&1 || install_or_explain cmake
-command -v clang++ >/dev/null 2>&1 || install_or_explain clang
+step=${GEOCDT_FUZZ_STEP:-}
+case $step in
+  '' | build | run) ;;
+  *) echo "run-fuzz: GEOCDT_FUZZ_STEP must be build or run, got '$step'" >&2
+    exit 2 ;;
+esac
 
-# libFuzzer's runtime is not in every clang install: Debian ships it in libclang-rt-N-dev.
-probe=$(mktemp -d)
-trap 'rm -rf "$probe"' EXIT
-printf 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }\n' \
-  >"$probe/probe.cpp"
-if ! clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" \
-  2>"$probe/log"; then
-  major=$(clang++ -dumpversion | cut -d. -f1)
-  install_or_explain "libclang-rt-$major-dev"
-  clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" || {
-    echo "run-fuzz: clang++ still cannot link libFuzzer" >&2
-    exit 1
-  }
+if [ "$step" != run ]; then
+  command -v cmake >/dev/null 2>&1 || install_or_explain cmake
+  command -v clang++ >/dev/null 2>&1 || install_or_explain clang
+
+  # libFuzzer's runtime is not in every clang install: Debian ships it in libclang-rt-N-dev.
+  probe=$(mktemp -d)
+  trap 'rm -rf "$probe"' EXIT
+  printf '%s\n' 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) {' \
+    '  return 0;' '}' >"$probe/probe.cpp"
+  if ! clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" \
+    2>"$probe/log"; then
+    major=$(clang++ -dumpversion | cut -d. -f1)
+    install_or_explain "libclang-rt-$major-dev"
+    clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" || {
+      echo "run-fuzz: clang++ still cannot link libFuzzer" >&2
+      exit 1
+    }
+  fi
+
+  CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DGEOCDT_BUILD_FUZZ=ON -DGEOCDT_BUILD_TESTS=OFF -DGEOCDT_BUILD_BENCH=OFF >/dev/null
+  cmake --build "$build" -j2 --target $targets
 fi
-
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DGEOCDT_BUILD_FUZZ=ON -DGEOCDT_BUILD_TESTS=OFF -DGEOCDT_BUILD_BENCH=OFF >/dev/null
-cmake --build "$build" -j2 --target $targets
+[ "$step" = build ] && exit 0
 
 status=0
 for target in $targets; do
