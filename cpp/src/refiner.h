@@ -208,7 +208,6 @@ class Refiner {
   void noteCorners(std::int32_t t);
   void checkAround(std::int32_t t);  // the triangle and its subsegments
   void restoreDelaunay(std::vector<std::int32_t>& stack);
-  // Not inlined into refineSteps, which would take V8 twice as long to optimise.
   Outcome splitSubsegment(std::int32_t e, bool forced);
   Outcome splitTriangle(const BadTriangle& bad);
   // One step of run()'s loop: a subsegment or a bad triangle split (or found gone); and up
