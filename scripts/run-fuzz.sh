@@ -7,8 +7,9 @@
 #
 # Environment: GEOCDT_FUZZ_BUILD (build directory, default build-fuzz),
 # GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines fuzz_refine fuzz_strips"),
-# GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: a reproducible run,
-# as long as the seconds do not cut it short), GEOCDT_FUZZ_TIMEOUT (seconds one input may
+# GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: as much fuzzing on
+# any machine, as long as the seconds do not cut it short; not the very same inputs, see
+# tests/fuzz/README.md), GEOCDT_FUZZ_TIMEOUT (seconds one input may
 # take, default 20; fuzz_strips triangulates 33,000 points a few times: 60), GEOCDT_FUZZ_STEP
 # (build: configure and build the targets, then stop; run: run targets built before, without
 # touching the build directory, so that runs of single targets can go side by side; unset:
@@ -79,8 +80,7 @@ for target in $targets; do
   timeout=${GEOCDT_FUZZ_TIMEOUT:-20}
   [ "$target" = fuzz_strips ] && timeout=${GEOCDT_FUZZ_TIMEOUT:-60}
   echo "run-fuzz: $target for ${seconds}s" >&2
-  # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS make a run reproducible (CI uses them): the same
-  # seed and number of inputs give the same inputs, so a pass here is a pass there.
+  # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS fix how much a run fuzzes (CI uses them).
   if ! "$build/tests/fuzz/$target" "$corpus" "$root/tests/fuzz/corpus/$target" \
       -max_total_time="$seconds" ${GEOCDT_FUZZ_SEED:+-seed=$GEOCDT_FUZZ_SEED} \
       ${GEOCDT_FUZZ_RUNS:+-runs=$GEOCDT_FUZZ_RUNS} -max_len=4096 -timeout="$timeout" -rss_limit_mb=2048 \
