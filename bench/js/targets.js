@@ -121,5 +121,7 @@ if (europe && existsSync(large)) {
       + `${n(polylines.offsets.length - 1)} | ${n(crossings[k])} | `
       + `${median(perPoint[k]).toFixed(0)} | ${ratio.toFixed(2)}× | ${k ? '≤ 1.2×' : ''} |`);
   });
+  console.log('\nIn one process the region\'s output arrays, most under 32 MB, may reuse memory an '
+    + 'earlier call freed; bench/js/one-call.js times one call per fresh process.');
   console.log();
 }
