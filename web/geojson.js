@@ -27,8 +27,9 @@ class Growable {
     this.data[this.length++] = v;
   }
 
+  // The values, without a copy when they fill the array (its capacity was counted right).
   take() {
-    return this.data.slice(0, this.length);
+    return this.length === this.data.length ? this.data : this.data.slice(0, this.length);
   }
 }
 
@@ -52,8 +53,8 @@ function coordinate(v, path, i, axis) {
 // Positions: x, y pairs, and a height each once one of them has had one (NaN for the others):
 // inputs without heights never pay for them.
 class Positions {
-  constructor() {
-    this.xy = new Growable(Float64Array);
+  constructor(capacity) {
+    this.xy = new Growable(Float64Array, 2 * capacity);
     this.z = null;
   }
 
@@ -101,7 +102,7 @@ function line(positions, path, closeRing, lines) {
   const to = lines.positions;
   list(positions, path);
   const start = to.xy.length;
-  to.xy.reserve(2 * positions.length + 2);
+  to.xy.reserve(2 * positions.length);
   for (let i = 0; i < positions.length; i++) to.add(positions[i], path, i);
   const n = to.xy.length - start;
   const d = to.xy.data;
@@ -150,11 +151,61 @@ function geometry(g, path, reader) {
   }
 }
 
-const polylines = () => {
-  const offsets = new Growable(Uint32Array);
+// count: { lines, positions }, as counted by countGeometry().
+const polylines = (count) => {
+  const offsets = new Growable(Uint32Array, count.lines + 1);
   offsets.add(0);
-  return { positions: new Positions(), offsets };
+  return { positions: new Positions(count.positions), offsets };
 };
+
+// Whether a ring's last position differs from its first, so that line() closes it.
+function opens(ring) {
+  const a = ring[0], b = ring[ring.length - 1];
+  return ring.length >= 2 && Array.isArray(a) && Array.isArray(b)
+    && (a[0] !== b[0] || a[1] !== b[1]);
+}
+
+function countLine(positions, closeRing, into) {
+  if (!Array.isArray(positions)) return;
+  into.lines += 1;
+  into.positions += positions.length + (closeRing && opens(positions) ? 1 : 0);
+}
+
+// Counts the positions and polylines that geometry() will read, without checking anything
+// (geometry() does), so that their arrays are made once at their size. Grown by doubling, they
+// left behind typed arrays whose memory, outside V8's heap, had V8 collect the caller's whole
+// heap, the GeoJSON included, during the read (bench/EXPERIMENTS.md, GeoJSON 1).
+function countGeometry(g, counts) {
+  if (g === null || typeof g !== 'object') return;
+  const c = g.coordinates;
+  const each = (a, f) => {
+    if (Array.isArray(a)) for (const x of a) f(x);
+  };
+  switch (g.type) {
+    case 'Point':
+      counts.points += 1;
+      break;
+    case 'MultiPoint':
+      if (Array.isArray(c)) counts.points += c.length;
+      break;
+    case 'LineString':
+      countLine(c, false, counts.lines);
+      break;
+    case 'MultiLineString':
+      each(c, (l) => countLine(l, false, counts.lines));
+      break;
+    case 'Polygon':
+      each(c, (r) => countLine(r, true, counts.rings));
+      break;
+    case 'MultiPolygon':
+      each(c, (poly) => each(poly, (r) => countLine(r, true, counts.rings)));
+      break;
+    case 'GeometryCollection':
+      each(g.geometries, (child) => countGeometry(child, counts));
+      break;
+    default:
+  }
+}
 
 // Reads one feature's geometry (feature: null for a bare geometry); its rings make one
 // polygon, the region of that feature.
@@ -181,8 +232,19 @@ export function readGeoJSON(geojson) {
     const got = geojson === null ? 'null' : typeof geojson;
     throw new TypeError(`geocdt: expected a GeoJSON object, got ${got}`);
   }
+  const counts = {
+    points: 0, rings: { lines: 0, positions: 0 }, lines: { lines: 0, positions: 0 },
+  };
+  if (geojson.type === 'FeatureCollection') {
+    if (Array.isArray(geojson.features)) {
+      for (const f of geojson.features) countGeometry(f?.geometry, counts);
+    }
+  } else {
+    countGeometry(geojson.type === 'Feature' ? geojson.geometry : geojson, counts);
+  }
   const reader = {
-    points: new Positions(), rings: polylines(), lines: polylines(), polygons: [0], features: [],
+    points: new Positions(counts.points), rings: polylines(counts.rings),
+    lines: polylines(counts.lines), polygons: [0], features: [],
   };
   if (geojson.type === 'FeatureCollection') {
     list(geojson.features, 'features').forEach((f, i) => {
@@ -203,7 +265,10 @@ export function readGeoJSON(geojson) {
   for (let i = 1; i < lines.offsets.length; i++) {
     offsets[ringCount + i] = ringPoints + lines.offsets.data[i];
   }
+  // Country layers have rings only, road layers lines only: then one of them is the result.
   const concat = (a, b) => {
+    if (b.length === 0) return a.take();
+    if (a.length === 0) return b.take();
     const out = new Float64Array(a.length + b.length);
     out.set(a.data.subarray(0, a.length));
     out.set(b.data.subarray(0, b.length), a.length);
