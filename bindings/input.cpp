@@ -3,6 +3,8 @@
 #include <new>
 #include <stdexcept>
 
+#include "heap_reserve.h"
+
 namespace geocdt::wasm {
 
 bool Input::resize(double pointCount, double linePointCount, double lineCount, double polygonCount,
@@ -14,6 +16,8 @@ bool Input::resize(double pointCount, double linePointCount, double lineCount, d
   if (16 * (pointCount + linePointCount) + 4 * (lineCount + polygonCount) + 8 * valueCount >=
       kAddressSpace)
     return false;
+  reserveHeap(kReservePerPoint * pointCount + kReservePerLinePoint * linePointCount +
+              16 * valueCount);
   try {
     points.resize(2 * static_cast<std::size_t>(pointCount));
     lineCoords.resize(2 * static_cast<std::size_t>(linePointCount));
