@@ -1,7 +1,12 @@
 // npm run bench: geocdt against its JS/wasm peers, same process, alternating runs, medians.
 //   node --expose-gc bench/js/bench.js [--quick]
+//   node --expose-gc bench/js/bench.js --targets [--data DIR]
+// --targets prints every wasm target of the speed work instead, each benchmark in its own
+// processes: targets.js (warm, against delaunator), the heap peaks, one-call.js and
+// first-call.js (at once and 1 s after init(); Chromium rows where Chromium is installed).
+// DIR holds the GSHHG regions (default build/data, as scripts/datasets/all.sh writes them).
 import { execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { fileURLToPath } from 'node:url';
 import { init, triangulate } from 'geocdt';
@@ -118,6 +123,39 @@ async function constrained(dataset, { cdt2d, triangleWasm }) {
   table(['library', 'ms', 'vs geocdt', 'result'], resultRows(results, 'geocdt (keep all)'));
   const skipped = [!cdt2d && 'cdt2d', !triangleWasm && 'triangle-wasm'].filter(Boolean);
   if (skipped.length) console.log(`(${skipped.join(' and ')}: not run at this scale.)\n`);
+}
+
+// Runs a benchmark script in a fresh Node process, its output going straight to ours.
+function runScript(args) {
+  execFileSync(process.execPath, args, { stdio: 'inherit' });
+}
+
+function targets() {
+  const i = process.argv.indexOf('--data');
+  const data = i >= 0 ? process.argv[i + 1] : here('../../build/data');
+  console.log('## Warm, in one process (bench/js/targets.js)\n');
+  runScript(['--expose-gc', here('targets.js'), '--data', data]);
+  console.log('## wasm heap peak per input point (fresh process each)\n');
+  table(['input', 'allocator peak / point', 'target'], [
+    ['1M uniform points', '1000000', '≤ 80 B'],
+    ['Natural Earth 10m rings', 'rings', '≤ 140 B'],
+  ].map(([name, what, target]) => [name,
+    `${runJson(here('heap-peak.js'), what).peakBytesPerPoint.toFixed(1)} B`, target]));
+  runScript([here('one-call.js'), '--data', data, '--runs', '5']);
+  console.log();
+  const engines = existsSync(process.env.CHROMIUM_PATH ?? '/usr/bin/chromium') ? []
+    : ['--node'];
+  if (engines.length) console.log('(No Chromium found: the first call in Node only.)\n');
+  for (const delay of ['0', '1000']) {
+    console.log(`## The first call, ${delay === '0' ? 'at once after' : '1 s after'} init() `
+      + '(bench/js/first-call.js; target ≤ 1.3× a warm call, init() ≤ 50 ms in Chromium)\n');
+    runScript([here('first-call.js'), '--runs', '5', '--delay', delay, ...engines]);
+  }
+}
+
+if (process.argv.includes('--targets')) {
+  targets();
+  process.exit(0);
 }
 
 const triangle = peers.triangleInWorker();
