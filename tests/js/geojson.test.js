@@ -4,6 +4,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { geoJSONToInput, init, meshToGeoJSON, triangulate, triangulateGeoJSON } from 'geocdt';
 import { checkMesh } from './support/invariants.js';
+import { random } from './support/inputs.js';
 
 before(() => init());
 
@@ -89,11 +90,7 @@ function referenceInput(geojson) {
 
 // Random features of every geometry type: rings closed or not, some positions with heights.
 function randomFeatures(seed, count) {
-  let s = seed;
-  const next = () => {
-    s = (s * 16807) % 2147483647;
-    return s / 2147483647;
-  };
+  const next = random(seed);
   const position = (z) => (z && next() < 0.5 ? [next(), next(), next()] : [next(), next()]);
   const positions = (n, z) => Array.from({ length: n }, () => position(z));
   const ring = (z) => {

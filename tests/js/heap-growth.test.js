@@ -1,13 +1,11 @@
 // The wasm memory grows once a call, before the input is written (bindings/heap_reserve.h).
-// Engines collect the caller's whole JS heap when memory outside it has grown past a limit:
+// V8 collects the caller's whole JS heap when memory outside it has grown past a limit:
 // grown step by step, a first call with a large GeoJSON alive paid for several of those
 // collections. Its own file: node --test runs it in a process of its own, whose wasm memory
 // starts at its initial size.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
-import { feature } from 'topojson-client';
+import { countries, uniform } from './support/inputs.js';
 
 const grows = [];
 const grow = WebAssembly.Memory.prototype.grow;
@@ -18,27 +16,12 @@ WebAssembly.Memory.prototype.grow = function growAndCount(pages) {
 const { init, geoJSONToInput, memoryUsage, triangulate } = await import('geocdt');
 await init({ warmUp: false });
 
-function uniform(n) {
-  let s = 7;
-  const xy = new Float64Array(2 * n);
-  for (let i = 0; i < xy.length; i++) {
-    s = (s * 16807) % 2147483647;
-    xy[i] = s / 2147483647;
-  }
-  return xy;
-}
-
-function countries() {
-  const require = createRequire(import.meta.url);
-  const t = JSON.parse(readFileSync(require.resolve('world-atlas/countries-50m.json'), 'utf8'));
-  return geoJSONToInput(feature(t, t.objects.countries), { flat: true });
-}
-
 test('a call grows the wasm memory once, to about what it needs', () => {
   const mb = (bytes) => `${(bytes / 1048576).toFixed(1)} MB`;
   const initial = memoryUsage().heapBytes;
   // Each needs more than the one before, so that each must grow the memory.
-  for (const [name, input] of [['Natural Earth 50m countries', countries()],
+  for (const [name, input] of [
+    ['Natural Earth 50m countries', geoJSONToInput(countries('50m'), { flat: true })],
     ['400,000 points', { points: uniform(400_000) }],
     ['1,000,000 points', { points: uniform(1_000_000) }]]) {
     grows.length = 0;

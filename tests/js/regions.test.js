@@ -4,15 +4,13 @@
 // point-in-polygon tests (robust-predicates) of each triangle's centroid against the input.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
-import { createRequire } from 'node:module';
-import { readFileSync } from 'node:fs';
-import { feature } from 'topojson-client';
 import {
   geoJSONToInput, init, meshToGeoJSON, triangulate, triangulateGeoJSON, Triangulation,
 } from 'geocdt';
 import { orient } from './support/predicates.js';
 import { throwsWith } from './support/throws.js';
 import { checkMesh } from './support/invariants.js';
+import { countries } from './support/inputs.js';
 
 before(() => init());
 
@@ -305,15 +303,6 @@ test('triangulateGeoJSON keeps z: input positions and crossings', () => {
   }
   assert.ok(three > 0 && two > 0);
 });
-
-// Natural Earth countries (world-atlas through topojson-client): shared borders, touching
-// corners, enclaves, and rings across the antimeridian that overlap others in the plane.
-function countries(scale) {
-  const require = createRequire(import.meta.url);
-  const topology =
-    JSON.parse(readFileSync(require.resolve(`world-atlas/countries-${scale}.json`), 'utf8'));
-  return feature(topology, topology.objects.countries);
-}
 
 function ringsOf(f) {
   const g = f.geometry;

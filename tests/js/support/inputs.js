@@ -1,4 +1,7 @@
 // Deterministic test inputs.
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { feature } from 'topojson-client';
 
 export function random(seed = 1) {
   let s = seed >>> 0 || 1;
@@ -70,4 +73,14 @@ export function polylineArrays({ coords, offsets }) {
     lines.push(Float64Array.from(coords.slice(2 * offsets[i], 2 * offsets[i + 1])));
   }
   return lines;
+}
+
+// Natural Earth countries (world-atlas through topojson-client) as a GeoJSON
+// FeatureCollection: shared borders, touching corners, enclaves, and rings across the
+// antimeridian that overlap others in the plane. scale: '110m', '50m' or '10m'.
+export function countries(scale) {
+  const require = createRequire(import.meta.url);
+  const topology =
+    JSON.parse(readFileSync(require.resolve(`world-atlas/countries-${scale}.json`), 'utf8'));
+  return feature(topology, topology.objects.countries);
 }
