@@ -104,12 +104,8 @@ function line(positions, path, closeRing, lines) {
   const start = to.xy.length;
   to.xy.reserve(2 * positions.length);
   for (let i = 0; i < positions.length; i++) to.add(positions[i], path, i);
-  const n = to.xy.length - start;
-  const d = to.xy.data;
   // GeoJSON rings repeat their first position at the end; close the ones that forgot.
-  if (closeRing && n >= 4 && (d[start] !== d[start + n - 2] || d[start + 1] !== d[start + n - 1])) {
-    to.repeat(start / 2);
-  }
+  if (closeRing && opens(positions)) to.repeat(start / 2);
   lines.offsets.add(to.count);
 }
 
@@ -158,7 +154,8 @@ const polylines = (count) => {
   return { positions: new Positions(count.positions), offsets };
 };
 
-// Whether a ring's last position differs from its first, so that line() closes it.
+// Whether a ring's last position differs from its first, so that line() closes it (and the
+// count below counts one more position).
 function opens(ring) {
   const a = ring[0], b = ring[ring.length - 1];
   return ring.length >= 2 && Array.isArray(a) && Array.isArray(b)
