@@ -16,6 +16,7 @@ bool Input::resize(double pointCount, double linePointCount, double lineCount, d
   if (16 * (pointCount + linePointCount) + 4 * (lineCount + polygonCount) + 8 * valueCount >=
       kAddressSpace)
     return false;
+  // Values: the input's, and the vertices' copy in the core.
   reserveHeap(kReservePerPoint * pointCount + kReservePerLinePoint * linePointCount +
               16 * valueCount);
   try {

@@ -38,9 +38,9 @@ async function child(dataset, path) {
   }));
 }
 
-function inProcess(dataset, path) {
-  const args = ['--expose-gc', new URL(import.meta.url).pathname, '--child', dataset,
-    path ?? '-', '--delay', String(delayMs)];
+function inFreshProcess(dataset, path) {
+  const args = [new URL(import.meta.url).pathname, '--child', dataset, path ?? '-',
+    '--delay', String(delayMs)];
   return JSON.parse(execFileSync(process.execPath, args, { encoding: 'utf8' }));
 }
 
@@ -58,7 +58,7 @@ function main() {
     // Each run in another order, so that a slow phase of the machine falls on every row.
     rows.forEach((_, k) => {
       const i = (k + run) % rows.length;
-      results[i].push(inProcess(rows[i][1], rows[i][2]));
+      results[i].push(inFreshProcess(rows[i][1], rows[i][2]));
     });
   }
   console.log(`### One call in a fresh process, ${delayMs} ms after init() (${runs} runs, `
