@@ -7,8 +7,16 @@ export const MAX_COORDINATE = 1e150;
 export function describe(value) {
   if (value === null) return 'null';
   if (Array.isArray(value)) return 'an Array';
-  if (ArrayBuffer.isView(value)) return `a ${value.constructor.name}`;
-  return typeof value === 'object' ? `a ${value.constructor?.name ?? 'object'}` : typeof value;
+  if (typeof value !== 'object') return typeof value;
+  const name = value.constructor?.name || 'object';
+  return `${/^[AEIOUaeiou]/.test(name) ? 'an' : 'a'} ${name}`;
+}
+
+// [[x, y], ...] (GeoJSON's positions) where flat x, y numbers belong: the likeliest mistake
+// of a caller coming from GeoJSON, told as such rather than as an odd length or a bad number.
+function isPositionArray(value) {
+  return Array.isArray(value) && value.length > 0
+    && (Array.isArray(value[0]) || ArrayBuffer.isView(value[0]));
 }
 
 const isBigIntArray = (value) =>
@@ -25,6 +33,11 @@ export function checkCoordinates(value, name) {
   if (!Array.isArray(value) && !isNumericTypedArray(value)) {
     throw new TypeError(`geocdt: ${name} must be a Float64Array or an array of numbers `
       + `(x0, y0, x1, y1, ...), or another numeric typed array; got ${describe(value)}`);
+  }
+  if (isPositionArray(value)) {
+    throw new TypeError(`geocdt: ${name} holds ${describe(value[0])} at index 0: coordinates `
+      + `are flat (x0, y0, x1, y1, ...), not [x, y] positions; pass ${name}.flat() or a `
+      + 'Float64Array');
   }
   if (value.length % 2 !== 0) {
     throw new RangeError(
@@ -119,8 +132,10 @@ export function checkRaster(options, valuesPerPoint) {
 export function checkInput(input, valuesPerPoint = 1) {
   if (input === null || typeof input !== 'object' || Array.isArray(input)
     || ArrayBuffer.isView(input)) {
-    throw new TypeError(
-      `geocdt: triangulate() takes an object { points, polylines }, got ${describe(input)}`);
+    const hint = Array.isArray(input) || ArrayBuffer.isView(input)
+      ? ' (for points alone: triangulate({ points }))' : '';
+    throw new TypeError('geocdt: triangulate() takes an object { points, polylines }, got '
+      + `${describe(input)}${hint}`);
   }
   const points = input.points == null ? new Float64Array(0)
     : checkCoordinates(input.points, 'points');
@@ -133,6 +148,10 @@ export function checkInput(input, valuesPerPoint = 1) {
     if (!Array.isArray(polylines)) {
       throw new TypeError('geocdt: polylines must be an array of Float64Array or number[] (one '
         + `per polyline), or { coords, offsets }; got ${describe(polylines)}`);
+    }
+    if (typeof polylines[0] === 'number') {
+      throw new TypeError('geocdt: polylines must be an array of polylines (Float64Array or '
+        + `number[] each), got numbers: for one polyline, pass [line]`);
     }
     let total = 0;
     for (let i = 0; i < polylines.length; i++) {

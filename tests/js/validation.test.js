@@ -26,12 +26,31 @@ test('wrong types', () => {
     /points\[2\] must be a number, got string/);
   throwsWith(() => triangulate({ points: [0, 0, 1, null] }), TypeError,
     /points\[3\] must be a number, got null/);
-  throwsWith(() => triangulate({ polylines: [0, 1, 2, 3] }), TypeError,
-    /polylines\[0\] must be a Float64Array/);
   throwsWith(() => triangulate({ polylines: new Float64Array(4) }), TypeError,
     /polylines must be an array of Float64Array/);
   throwsWith(() => triangulate({ polylines: [[0, 0, 1, 1], [0, 0, 1, {}]] }), TypeError,
-    /polylines\[1\]\[3\] must be a number, got a Object/);
+    /polylines\[1\]\[3\] must be a number, got an Object/);
+  stillWorks();
+});
+
+test('GeoJSON-style [x, y] positions and a lone polyline are told as such', () => {
+  // Odd and even numbers of positions alike: the layout is named, not a length or a value.
+  for (const positions of [[[0, 0], [1, 0], [0, 1]], [[0, 0], [1, 0]]]) {
+    throwsWith(() => triangulate({ points: positions }), TypeError,
+      /points holds an Array at index 0: coordinates are flat .* pass points\.flat\(\)/);
+    throwsWith(() => triangulate({ polylines: [[0, 0, 1, 1], positions] }), TypeError,
+      /polylines\[1\] holds an Array at index 0: .*not \[x, y\] positions/);
+    throwsWith(() => triangulate({ polylines: { coords: positions, offsets: [0, 1] } }),
+      TypeError, /polylines\.coords holds an Array/);
+  }
+  throwsWith(() => triangulate({ points: [new Float64Array(2)] }), TypeError,
+    /points holds a Float64Array at index 0/);
+  throwsWith(() => triangulate({ polylines: [0, 0, 1, 1] }), TypeError,
+    /polylines must be an array of polylines .*got numbers: for one polyline, pass \[line\]/);
+  throwsWith(() => triangulate(new Float64Array([0, 0, 1, 0, 0, 1])), TypeError,
+    /got a Float64Array \(for points alone: triangulate\(\{ points \}\)\)/);
+  throwsWith(() => new Triangulation().insertPoints([[0, 0], [1, 1]]), TypeError,
+    /holds an Array at index 0/);
   stillWorks();
 });
 
