@@ -5,7 +5,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+
+// heap_grow.js: grows the memory to `bytes` exactly (1), or leaves it as it is (0).
+extern "C" int geocdt_grow_heap_to(std::size_t bytes);
 
 namespace geocdt::wasm {
 
@@ -19,8 +23,9 @@ void reserveHeap(double more) {
   const double used = static_cast<double>(reinterpret_cast<std::uintptr_t>(sbrk(0))) -
                       static_cast<unsigned>(m.fordblks);
   const double want = std::min(used + more, kLargest);
+  // Not emscripten_resize_heap(): it would double the memory for a call that needs less.
   if (want > static_cast<double>(emscripten_get_heap_size()))
-    emscripten_resize_heap(static_cast<std::size_t>(want));
+    geocdt_grow_heap_to(static_cast<std::size_t>(want));
 }
 
 }  // namespace geocdt::wasm

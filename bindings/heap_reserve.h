@@ -3,13 +3,14 @@
 
 namespace geocdt::wasm {
 
-// Grows the wasm memory, if it must, so that what is in use now and `more` bytes fit without
-// growing it again. Node's V8 counts each growth as memory outside its JS heap, and past a
-// limit it collects the caller's whole heap: grown step by step during a call (20% at a
-// time), the memory had it do that three times in one first call on the Natural Earth 10m
-// countries, 40-60 ms each with their GeoJSON alive (bench/EXPERIMENTS.md, GeoJSON 2;
-// Chromium showed no such cost). Best effort: where the memory cannot grow that far, the
-// call grows it as it goes, as before.
+// Grows the wasm memory, if it must, to exactly what is in use now plus `more` bytes, so that
+// the call does not grow it again. Node's V8 counts each growth as memory outside its JS heap,
+// and past a limit it collects the caller's whole heap: grown step by step during a call (20%
+// at a time, the glue's default then), the memory had it do that three times in one first
+// call on the Natural Earth 10m countries, 40-60 ms each with their GeoJSON alive
+// (bench/EXPERIMENTS.md, GeoJSON 2; Chromium showed no such cost). Best effort: where the
+// memory cannot grow that far, the call grows it as it goes. Growth nobody reserved for (the
+// Steiner points of refinement) doubles the memory each time (heap_grow.js, GeoJSON 4).
 void reserveHeap(double more);
 
 // What a call needs at its peak, by input. The allocator's peak is 78 bytes a point without
