@@ -134,17 +134,33 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   const double t = ta + (tb - ta) * f;
   double px = (1 - t) * s.ax + t * s.bx, py = (1 - t) * s.ay + t * s.by;
   const bool hull = topo_.isGhost(topo_.adj[e] / 3);
-  const auto strictlyBetween = [&](double qx, double qy) {
-    const int along = signAlong(s, x(a), y(a), x(b), y(b));
-    return along != 0 && signAlong(s, x(a), y(a), qx, qy) == along &&
-           signAlong(s, qx, qy, x(b), y(b)) == along;
+  const auto strictlyBetween = [&](const InputSegment& on, double qx, double qy) {
+    const int along = signAlong(on, x(a), y(a), x(b), y(b));
+    return along != 0 && signAlong(on, x(a), y(a), qx, qy) == along &&
+           signAlong(on, qx, qy, x(b), y(b)) == along;
+  };
+  // The other input segments whose chains hold the edge (segments that overlap, or pass
+  // within their bound of the same vertices): the point goes into their chains too. Placed
+  // from s's ends, it can fall behind an end along one of them where s and it part at an end
+  // ulps away (a subnormal y from a segment 1e67 long).
+  const EdgeSource* sources = topo_.fixed[e] ? d_.constraints.find(a, b) : nullptr;
+  const bool shared = input && sources && sources->extra >= 0;
+  const auto fitsOthers = [&](double qx, double qy) {
+    bool fit = true;
+    d_.constraints.forEachSegment(*sources, [&](std::uint32_t other) {
+      if (!fit || other == id) return;
+      const InputSegment o = d_.constraints.geometry(other, d_.xy);
+      fit = strictlyBetween(o, qx, qy) && withinDistance(o, qx, qy, chainBoundExponent(o));
+    });
+    return fit;
   };
   // The four triangles around the point must be counter-clockwise, and a constrained
-  // edge's point within the bound of its segment, strictly between the ends along it.
+  // edge's point within the bound of its segments, strictly between the ends along each.
   const auto fitsAt = [&](double qx, double qy) {
-    if (!ccw(c, a, qx, qy) || !ccw(b, c, qx, qy) || !strictlyBetween(qx, qy)) return false;
+    if (!ccw(c, a, qx, qy) || !ccw(b, c, qx, qy) || !strictlyBetween(s, qx, qy)) return false;
     if (!hull && !(ccw(a, dv, qx, qy) && ccw(dv, b, qx, qy))) return false;
-    return !input || withinDistance(s, qx, qy, chainBoundExponent(s));
+    if (!input) return true;
+    return withinDistance(s, qx, qy, chainBoundExponent(s)) && (!shared || fitsOthers(qx, qy));
   };
   bool fits = fitsAt(px, py);
   // Left whole where another input segment runs along it ulps away (overlapping_segments.h).

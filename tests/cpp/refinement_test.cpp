@@ -406,6 +406,35 @@ TEST(Refinement, AreaOfATriangleWithSidesHundredsOfOrdersApart) {
             "");
 }
 
+TEST(Refinement, ASplitStaysInOrderAlongEverySegmentOfItsEdge) {
+  // Fuzz (refine, in CI): segments 0 and 1 part at vertex 1 (x 3.3e-304, y subnormal) and
+  // both chains run through vertex 4, within their bounds of them, so edge 1-4 lies on
+  // both. Its split point, placed from segment 0's ends 1e67 apart, fell next to vertex 1
+  // with a subnormal y one ulp up: strictly between the ends along segment 0, behind vertex 1
+  // along segment 1, whose chain then went back and forth.
+  Polylines lines = {{-1.4262809271217239e+67, 3.4034399518420463e-304, 3.3042031719858117e-304,
+                      4.751695953872378e-312, -4.0917418857736508e+149, -601603585.85159075,
+                      -595821443.5137254, -595821443.5137254, -595821443.5137254,
+                      3.3042031719857939e-304, -1.3611369490239656e+67, 3.427629824588232e-319}};
+  for (int k = 0; k < 10; ++k) lines[0].insert(lines[0].end(), {0.0, 0.0});
+  lines[0].insert(lines[0].end(), {lines[0][0], lines[0][1]});
+  Options o;
+  o.order = InsertionOrder::Input;
+  o.start = LocateStart::LastTriangle;
+  o.gridDensity = 2;
+  for (const std::uint64_t cap : {1, 4, 64}) {
+    RefineOptions ro;
+    ro.minAngle = 0;
+    ro.maxSteinerPoints = cap;
+    const Refined r = refine({}, lines, ro, o);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_EQ(testing::checkRefined(r.mesh, {}, lines, r.ids, ro.minAngle, 0, false,
+                                    r.stats.refineSkipped),
+              "")
+        << "cap " << cap;
+  }
+}
+
 TEST(Refinement, OverlappingSegmentsUlpsApartKeepTheirChainsApart) {
   // Fuzz (refine, seed 1): a lattice around (16000000, 18006276) whose rounded points put two
   // overlapping segments ulps apart, not on one line; a subsegment split on one of them
