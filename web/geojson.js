@@ -351,13 +351,19 @@ export function triangleFields(mesh) {
       position,
     };
   }
-  const source = (t) => (regionOf(t) < 0 ? null : regionFeatures[regionOf(t)]);
+  // Each region's id and properties, read once rather than once a triangle.
+  const ids = regionFeatures.map((f) => f?.id ?? undefined);
+  const shared = regionFeatures.map((f) => f?.properties ?? null);
+  const own = (t) => {
+    const r = regionOf(t);
+    return r < 0 ? null : shared[r];
+  };
   return {
-    id: (t) => source(t)?.id ?? undefined,
-    properties(t) {
-      const p = source(t)?.properties ?? null;
-      return inside ? { ...p, inside: inside[t] === 1 } : p;
+    id(t) {
+      const r = regionOf(t);
+      return r < 0 ? undefined : ids[r];
     },
+    properties: inside ? (t) => ({ ...own(t), inside: inside[t] === 1 }) : own,
     key,
     position,
   };
@@ -368,20 +374,21 @@ export function triangleFields(mesh) {
 export function meshToGeoJSON(mesh) {
   const { triangles } = mesh;
   const n = triangles.length / 3;
-  const fields = triangleFields(mesh);
+  const { id, properties, position } = triangleFields(mesh);
   const features = new Array(n);
+  // Each object is made whole by one literal (two shapes of feature: with an id and
+  // without), not grown a property at a time.
   for (let t = 0; t < n; t++) {
-    const a = fields.position(triangles[3 * t]);
-    const feature = { type: 'Feature' };
-    const id = fields.id(t);
-    if (id !== undefined) feature.id = id;
-    feature.properties = fields.properties(t);
-    feature.geometry = {
+    const a = position(triangles[3 * t]);
+    const closing = a.length === 2 ? [a[0], a[1]] : [a[0], a[1], a[2]];
+    const geometry = {
       type: 'Polygon',
-      coordinates: [[a, fields.position(triangles[3 * t + 1]),
-        fields.position(triangles[3 * t + 2]), [...a]]],
+      coordinates: [[a, position(triangles[3 * t + 1]), position(triangles[3 * t + 2]), closing]],
     };
-    features[t] = feature;
+    const i = id(t);
+    features[t] = i === undefined
+      ? { type: 'Feature', properties: properties(t), geometry }
+      : { type: 'Feature', id: i, properties: properties(t), geometry };
   }
   return { type: 'FeatureCollection', features };
 }
