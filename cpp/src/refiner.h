@@ -178,8 +178,10 @@ class Refiner {
     return topo_.fixed[e] || (keepAll_ && topo_.isGhost(e / 3) != topo_.isGhost(topo_.adj[e] / 3));
   }
   // The segment a subsegment lies on, and a number naming it: an input segment's index, or
-  // past 2^32 the hull edge it comes from.
-  InputSegment segmentOf(std::int32_t e, std::uint64_t& id) const;
+  // past 2^32 the hull edge it comes from; *source, if asked, the constraint store's entry
+  // of an input subsegment (where the other segments on it are listed).
+  InputSegment segmentOf(std::int32_t e, std::uint64_t& id,
+                         const EdgeSource** source = nullptr) const;
   static bool encroachedBy(double ux, double uy, double vx, double vy, double px, double py) {
     return (ux - px) * (vx - px) + (uy - py) * (vy - py) < 0;
   }

@@ -28,12 +28,14 @@ void Refiner::queueSubsegment(std::int32_t e, bool forced) {
   subsegments_.push_back({u, v, forced});
 }
 
-InputSegment Refiner::segmentOf(std::int32_t e, std::uint64_t& id) const {
+InputSegment Refiner::segmentOf(std::int32_t e, std::uint64_t& id,
+                                const EdgeSource** source) const {
   const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
   if (topo_.fixed[e]) {
     const EdgeSource* src = d_.constraints.find(a, b);
     if (src) {
       id = src->segment;
+      if (source) *source = src;
       return d_.constraints.geometry(src->segment, d_.xy);
     }
   }
@@ -112,7 +114,8 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   // The point is placed on the segment, from the segment's own ends, so that it stays within
   // the chains' bound of it however often it is split.
   std::uint64_t id;
-  const InputSegment s = segmentOf(e, id);
+  const EdgeSource* sources = nullptr;
+  const InputSegment s = segmentOf(e, id, &sources);
   const bool input = id < (std::uint64_t{1} << 32);
   const double dx = s.bx - s.ax, dy = s.by - s.ay, length2 = dx * dx + dy * dy;
   const double ta = ((x(a) - s.ax) * dx + (y(a) - s.ay) * dy) / length2;
@@ -143,14 +146,17 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   // within their bound of the same vertices): the point goes into their chains too. Placed
   // from s's ends, it can fall behind an end along one of them where s and it part at an end
   // ulps away (a subnormal y from a segment 1e67 long).
-  const EdgeSource* sources = topo_.fixed[e] ? d_.constraints.find(a, b) : nullptr;
+  // A segment with s's ends (a border two rings share) answers as s does: skipped.
   const bool shared = input && sources && sources->extra >= 0;
   const auto fitsOthers = [&](double qx, double qy) {
     bool fit = true;
     d_.constraints.forEachSegment(*sources, [&](std::uint32_t other) {
       if (!fit || other == id) return;
       const InputSegment o = d_.constraints.geometry(other, d_.xy);
-      fit = strictlyBetween(o, qx, qy) && withinDistance(o, qx, qy, chainBoundExponent(o));
+      const bool same = (o.ax == s.ax && o.ay == s.ay && o.bx == s.bx && o.by == s.by) ||
+                        (o.ax == s.bx && o.ay == s.by && o.bx == s.ax && o.by == s.ay);
+      if (!same)
+        fit = strictlyBetween(o, qx, qy) && withinDistance(o, qx, qy, chainBoundExponent(o));
     });
     return fit;
   };
