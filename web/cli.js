@@ -4,7 +4,8 @@ import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
 import { geoJSONToInput, init, triangulate } from './index.node.js';
-import { geoJSONResult, triangleFields, vertexHeights } from './geojson.js';
+import { geoJSONResult } from './geojson.js';
+import { writeGeoJSON } from './geojson-writer.js';
 import { ProgressDisplay } from './progress-display.js';
 
 const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
@@ -91,46 +92,6 @@ async function readInput(path) {
 }
 
 const n = (x) => x.toLocaleString('en-US');
-
-// Writes the FeatureCollection feature by feature, as meshToGeoJSON() builds it: a big mesh
-// never becomes one string, and each region's properties are written to text once.
-async function writeGeoJSON(mesh, stream, progress) {
-  const { points, triangles } = mesh;
-  const count = triangles.length / 3;
-  const fields = triangleFields(mesh);
-  const z = vertexHeights(mesh);
-  // fields.position(v) as text, without an array per vertex.
-  const at = z === undefined ? (v) => `[${points[2 * v]},${points[2 * v + 1]}]`
-    : (v) => (Number.isNaN(z(v)) ? `[${points[2 * v]},${points[2 * v + 1]}]`
-      : `[${points[2 * v]},${points[2 * v + 1]},${z(v)}]`);
-  const texts = new Map();  // key -> the properties as text
-  const properties = (t) => {
-    const key = fields.key(t);
-    let text = texts.get(key);
-    if (text === undefined) texts.set(key, text = JSON.stringify(fields.properties(t)));
-    return text;
-  };
-  const write = async (text) => {
-    if (!stream.write(text)) await once(stream, 'drain');
-  };
-  await write('{"type":"FeatureCollection","features":[');
-  const batch = 20_000;
-  for (let start = 0; start < count; start += batch) {
-    const end = Math.min(count, start + batch);
-    const parts = [];
-    for (let t = start; t < end; t++) {
-      const a = at(triangles[3 * t]);
-      const id = fields.id(t);
-      const ring = `[[${a},${at(triangles[3 * t + 1])},${at(triangles[3 * t + 2])},${a}]]`;
-      parts.push(`{"type":"Feature",${id === undefined ? '' : `"id":${JSON.stringify(id)},`}`
-        + `"properties":${properties(t)},`
-        + `"geometry":{"type":"Polygon","coordinates":${ring}}}`);
-    }
-    await write((start === 0 ? '\n' : ',\n') + parts.join(',\n'));
-    progress(end, count);
-  }
-  await write('\n]}\n');
-}
 
 async function main(argv) {
   const args = parseArgs(argv);
