@@ -5,11 +5,15 @@
 // together byte by byte into chunks that go to the stream. Making strings instead (a template a
 // feature, joined by the thousands) spent half of the CLI's time collecting them.
 import { once } from 'node:events';
-import { triangleFields, vertexHeights } from './geojson.js';
+import { triangleFields } from './geojson.js';
 
 const kChunkBytes = 1 << 20;
 const ascii = (text) => Buffer.from(text, 'latin1');
+const kHeadStart = '{"type":"Feature",'.length;
 const kRingStart = ascii('"geometry":{"type":"Polygon","coordinates":[[');
+// Bytes a feature writes besides its head, ring and positions: ',\n' before it, three
+// commas between positions and, without regions, '"id":' with up to ten digits and a comma.
+const kFeatureExtra = 32;
 const kFeatureEnd = ascii(']]}}');
 
 // A native copy costs a view's allocation: past about 24 bytes (a position, a head) it pays
@@ -23,17 +27,15 @@ function copyBytes(into, at, from, start, end) {
   return at;
 }
 
-// Every vertex's position as text in one buffer: vertex v is bytes at[v] .. at[v + 1].
-function positionTexts(mesh) {
-  const { points } = mesh;
-  const z = vertexHeights(mesh);
-  const count = points.length / 2;
+// Every vertex's position as text in one buffer, as JSON.stringify() writes position(v) of
+// triangleFields(): vertex v is bytes at[v] .. at[v + 1].
+function positionTexts(mesh, position) {
+  const count = mesh.points.length / 2;
   const at = new Uint32Array(count + 1);
   let bytes = Buffer.allocUnsafe(Math.max(64, 48 * count));
   let used = 0;
   for (let v = 0; v < count; v++) {
-    const text = z === undefined || Number.isNaN(z(v)) ? `[${points[2 * v]},${points[2 * v + 1]}]`
-      : `[${points[2 * v]},${points[2 * v + 1]},${z(v)}]`;
+    const text = JSON.stringify(position(v));
     if (used + text.length > bytes.length) {
       const size = Math.max(used + text.length, Math.floor(1.5 * bytes.length));
       const bigger = Buffer.allocUnsafe(size);
@@ -52,7 +54,7 @@ export async function writeGeoJSON(mesh, stream, progress) {
   const { triangles, regionFeatures } = mesh;
   const count = triangles.length / 3;
   const fields = triangleFields(mesh);
-  const { bytes: positions, at } = positionTexts(mesh);
+  const { bytes: positions, at } = positionTexts(mesh, fields.position);
   // A feature's text up to its geometry, by key: with the regions' features its id and
   // properties are the region's. Without, the id is the triangle's index, written each time
   // between the head's two parts.
@@ -70,7 +72,6 @@ export async function writeGeoJSON(mesh, stream, progress) {
     }
     return head;
   };
-  const kHeadStart = '{"type":"Feature",'.length;
   const write = async (chunk) => {
     if (!stream.write(chunk)) await once(stream, 'drain');
   };
@@ -80,7 +81,7 @@ export async function writeGeoJSON(mesh, stream, progress) {
   for (let t = 0; t < count; t++) {
     const head = headOf(t);
     const a = triangles[3 * t], b = triangles[3 * t + 1], c = triangles[3 * t + 2];
-    const need = head.length + 32 + kRingStart.length + kFeatureEnd.length
+    const need = head.length + kFeatureExtra + kRingStart.length + kFeatureEnd.length
       + 2 * (at[a + 1] - at[a]) + (at[b + 1] - at[b]) + (at[c + 1] - at[c]);
     if (used + need > chunk.length) {
       await write(chunk.subarray(0, used));
