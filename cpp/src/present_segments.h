@@ -22,8 +22,8 @@ class PresentSegments {
 
   // Segment u-v of the batch: looked for if its ends are consecutive new ids.
   void expect(std::uint32_t u, std::uint32_t v) {
-    const std::size_t low = std::min(u, v) - base_;  // (wraps far past the end if older)
-    if (std::max(u, v) - std::min(u, v) == 1 && low + 1 < expected_.size()) expected_[low] = 1;
+    const std::size_t pair = pairOf(u, v);
+    if (pair + 1 < expected_.size()) expected_[pair] = 1;
   }
 
   // Fixes both half-edges of every expected segment that is an edge of topo.
@@ -67,11 +67,21 @@ class PresentSegments {
 
   // Whether u-v was expected and is an edge, its half-edges fixed by fixPresent.
   bool present(std::uint32_t u, std::uint32_t v) const {
-    const std::size_t low = std::min(u, v) - base_;
-    return std::max(u, v) - std::min(u, v) == 1 && low + 1 < found_.size() && found_[low] != 0;
+    const std::size_t pair = pairOf(u, v);
+    return pair + 1 < found_.size() && found_[pair] != 0;
   }
 
  private:
+  // The index of segment u-v among the batch's pairs (base + i, base + i + 1), or kNoPair.
+  // Tested before subtracting: a 32-bit difference that wrapped (u older than the batch)
+  // plus one would wrap again to 0 where size_t has 32 bits, as in wasm.
+  static constexpr std::size_t kNoPair = static_cast<std::size_t>(-2);
+  std::size_t pairOf(std::uint32_t u, std::uint32_t v) const {
+    const std::uint32_t low = std::min(u, v);
+    if (low < base_ || std::max(u, v) - low != 1) return kNoPair;
+    return std::size_t{low} - base_;
+  }
+
   std::uint32_t base_;
   std::vector<std::uint8_t> expected_;  // of segment (base + i, base + i + 1), and a last 0
   std::vector<std::uint8_t> found_;     // the same, found as an edge (the last: misses)

@@ -185,6 +185,38 @@ test('a tangle a few ulps wide: every chain within two ulps of its segment, in o
   t.dispose();
 });
 
+// A polyline whose first point repeats the vertex made last before it (id base - 1), going on
+// to a new vertex (id base): its first segment joins the two ids around the batch's start.
+// In wasm, where size_t has 32 bits, the index of that pair wrapped to -1 and a byte before
+// an array was written, which broke the allocator (a trap, or a corrupt heap).
+test('a segment from the vertex before a batch to the batch\'s first vertex', () => {
+  check({ points: [0, 0], polylines: [[0, 0, 1, 1], [0, 1, 1, 0]] });
+  check({ points: [0, 0, 0, 0, 0, 0], polylines: [[0, 0, 1, 1], [0, 1, 1, 0]] });
+  for (const n of [10, 200, 3_000]) {
+    const points = uniform(n, 5);
+    // Then across the cloud, x going up: no crossings of its own.
+    const line = [points[2 * n - 2], points[2 * n - 1]];
+    for (let i = 0; i < n; i++) line.push((1000 * (i + 0.5)) / n, 500 + 300 * Math.sin(i / 7));
+    const r = check({ points, polylines: [line] });
+    assert.equal(r.inputToVertex[n], n - 1, 'the polyline starts at the last point');
+    assert.equal(r.inputToVertex[n + 1], n, 'and goes on to the first new vertex');
+    const t = new Triangulation();
+    try {
+      const pointIds = t.insertPoints(points);
+      const ids = t.insertPolyline(line);
+      assert.deepEqual([ids[0], ids[1]], [n - 1, n]);
+      const m = t.results({ segmentSources: true });
+      m.inputToVertex = Uint32Array.from([...pointIds, ...ids]);
+      checkMesh(m, { points, polylines: [line] }, { keepAll: true });
+      checkConstraints(m, { points, polylines: [line] }, { keepAll: true });
+    } finally {
+      t.dispose();
+    }
+  }
+  assert.deepEqual(triangulate({ points: [0, 0, 4, 0, 0, 4] }).triangles.length, 3,
+    'the heap is whole: later calls work');
+});
+
 test('the checker refuses a chain beyond the bound', () => {
   // Segment (0, 0)-(4, 0) has the bound 2^-49 (two spacings at 4); its crossing with
   // x = 2 moved up by more than that no longer passes.
