@@ -9,7 +9,7 @@ export function describe(value) {
   if (Array.isArray(value)) return 'an Array';
   if (typeof value !== 'object') return typeof value;
   const name = value.constructor?.name || 'object';
-  return `${/^[AEIOUaeiou]/.test(name) ? 'an' : 'a'} ${name}`;
+  return `${/^(?!Uint)[AEIOUaeiou]/.test(name) ? 'an' : 'a'} ${name}`;  // a Uint32Array
 }
 
 // [[x, y], ...] (GeoJSON's positions) where flat x, y numbers belong: the likeliest mistake
@@ -28,12 +28,27 @@ export function isNumericTypedArray(value) {
   return ArrayBuffer.isView(value) && !(value instanceof DataView) && !isBigIntArray(value);
 }
 
+// A typed array whose buffer was transferred (to a worker, by postMessage or
+// structuredClone) reads as empty; said as such, not as an empty input or an engine error
+// from the copy. Only an empty view can be detached, and only a detached buffer refuses
+// slice().
+function checkAttached(value, name) {
+  if (!ArrayBuffer.isView(value) || value.byteLength !== 0) return;
+  try {
+    value.buffer.slice(0, 0);
+  } catch {
+    throw new TypeError(`geocdt: ${name} is ${describe(value)} whose ArrayBuffer was detached `
+      + '(transferred to a worker or by structuredClone): it no longer holds any data');
+  }
+}
+
 // x0, y0, x1, y1, ... in a plain array or any numeric typed array. Returns it unchanged.
 export function checkCoordinates(value, name) {
   if (!Array.isArray(value) && !isNumericTypedArray(value)) {
     throw new TypeError(`geocdt: ${name} must be a Float64Array or an array of numbers `
       + `(x0, y0, x1, y1, ...), or another numeric typed array; got ${describe(value)}`);
   }
+  checkAttached(value, name);
   if (isPositionArray(value)) {
     throw new TypeError(`geocdt: ${name} holds ${describe(value[0])} at index 0: coordinates `
       + `are flat (x0, y0, x1, y1, ...), not [x, y] positions; pass ${name}.flat() or a `
@@ -55,6 +70,7 @@ export function checkOffsets(offsets, name, things, parts) {
     throw new TypeError(`geocdt: ${name} must be a Uint32Array (or Int32Array, or an array of `
       + `integers) of n + 1 ${parts} offsets, got ${describe(offsets)}`);
   }
+  checkAttached(offsets, name);
   if (offsets.length === 0) {
     throw new RangeError(`geocdt: ${name} is empty: n ${things} take n + 1 offsets`);
   }
@@ -84,6 +100,7 @@ export function checkValues(values, points, valuesPerPoint, name = 'values') {
     throw new TypeError(`geocdt: ${name} must be a Float64Array or an array of numbers `
       + `(valuesPerPoint per point), or another numeric typed array; got ${describe(values)}`);
   }
+  checkAttached(values, name);
   if (values.length !== points * valuesPerPoint) {
     const per = valuesPerPoint === 1 ? '' : ` (${valuesPerPoint} per point)`;
     throw new RangeError(`geocdt: ${name} has ${values.length} numbers for ${points} points`

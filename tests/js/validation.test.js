@@ -54,6 +54,29 @@ test('GeoJSON-style [x, y] positions and a lone polyline are told as such', () =
   stillWorks();
 });
 
+test('arrays whose buffer was transferred away are told as such, not read as empty', () => {
+  const detached = (a) => {
+    structuredClone(a.buffer, { transfer: [a.buffer] });
+    return a;
+  };
+  throwsWith(() => triangulate({ points: detached(new Float64Array([0, 0, 1, 0, 0, 1])) }),
+    TypeError, /points is a Float64Array whose ArrayBuffer was detached/);
+  throwsWith(() => triangulate({ points: [0, 0, 1, 0, 0, 1],
+    polylines: [[0, 0, 1, 1], detached(new Float64Array(4))] }),
+  TypeError, /polylines\[1\] is a Float64Array whose ArrayBuffer was detached/);
+  throwsWith(() => triangulate({ polylines: { coords: new Float64Array([0, 0, 1, 1]),
+    offsets: detached(new Uint32Array([0, 2])) } }),
+  TypeError, /polylines\.offsets is a Uint32Array whose ArrayBuffer was detached/);
+  throwsWith(() => triangulate({ points: [0, 0, 1, 0, 0, 1],
+    values: detached(new Float64Array(3)) }), TypeError, /values is a Float64Array whose/);
+  const t = new Triangulation();
+  throwsWith(() => t.insertPoints(detached(new Float64Array(4))), TypeError, /detached/);
+  t.dispose();
+  // Empty arrays that own their (empty) buffer are still plain empty input.
+  assert.equal(triangulate({ points: new Float64Array(0) }).triangles.length, 0);
+  stillWorks();
+});
+
 test('odd lengths', () => {
   throwsWith(() => triangulate({ points: [0, 0, 1] }), RangeError,
     /points has an odd length \(3\)/);
