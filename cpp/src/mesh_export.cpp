@@ -173,7 +173,12 @@ void appendProvenance(const Delaunay& d, Mesh& into, bool segments, std::size_t 
 
 void addProvenance(const Delaunay& d, Mesh& m, bool segments, std::uint32_t threads) {
   const std::size_t edges = d.constraints.edgeCount();
-  if (edges == 0) return;
+  // n + 1 offsets for n edges, none too: a caller may read offsets[n].
+  if (edges == 0) {
+    m.sourceOffsets.assign(1, 0);
+    if (segments) m.segmentOffsets.assign(1, 0);
+    return;
+  }
   // Sized at once: the export is where the heap peaks, and doubling on the way would add
   // half again of each array.
   m.constraintEdges.reserve(edges);

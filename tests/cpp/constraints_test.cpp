@@ -216,6 +216,22 @@ void expectNonZeroAndEvenOdd(const Polylines& rings, const Options& options) {
   EXPECT_GT(differ, 0);
 }
 
+TEST(Constraints, ProvenanceOffsetsHaveOneEntryMoreThanTheEdgesEvenWithNone) {
+  // Points alone, and a polyline of one repeated point: no constrained edge, offsets {0}.
+  MeshOptions mo;
+  mo.segmentSources = true;
+  for (const Polylines& lines : {Polylines{}, Polylines{{0, 1, 0, 1, 0, 1}}}) {
+    Result r = run({0, 0, 1, 0, 0, 1}, lines, mo);
+    ASSERT_TRUE(r.status.ok());
+    EXPECT_TRUE(r.mesh.constraintEdges.empty());
+    EXPECT_EQ(r.mesh.sourceOffsets, std::vector<std::uint32_t>{0});
+    EXPECT_EQ(r.mesh.segmentOffsets, std::vector<std::uint32_t>{0});
+  }
+  Result r = run({0, 0, 1, 0, 0, 1}, {});
+  EXPECT_EQ(r.mesh.sourceOffsets, std::vector<std::uint32_t>{0});
+  EXPECT_TRUE(r.mesh.segmentOffsets.empty());  // not asked for
+}
+
 TEST(Constraints, ProvenanceListsEveryPolylineOfAnEdge) {
   // Polylines 0 and 1 overlap on 2..5; polyline 2 crosses them at (3, 0).
   const Polylines lines = {{0, 0, 5, 0}, {2, 0, 8, 0}, {3, -1, 3, 1}};

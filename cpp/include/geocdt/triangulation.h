@@ -143,7 +143,8 @@ struct Mesh {
   std::vector<std::int32_t> halfedges;    // 1 per half-edge
   std::vector<std::uint8_t> constrained;  // 1 per half-edge on an input constraint
   // Provenance: constraintEdges lists one half-edge per constrained edge; the polylines it
-  // came from are sources[sourceOffsets[i] .. sourceOffsets[i + 1]).
+  // came from are sources[sourceOffsets[i] .. sourceOffsets[i + 1]) (sourceOffsets has one
+  // entry more than constraintEdges, [0] when there are none; segmentOffsets alike).
   std::vector<std::uint32_t> constraintEdges;
   std::vector<std::uint32_t> sourceOffsets;
   std::vector<std::uint32_t> sources;
