@@ -16,6 +16,7 @@ Outcome SegmentInserter::broken(const char* what) {
 }
 
 Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src) {
+  if (followSameEnds(u, v, src)) return Outcome::Inserted;
   pieces_.clear();
   pieces_.push_back({u, v, src});
   // Each round either inserts a piece, adds a vertex or re-routes a crossed constraint.
@@ -32,6 +33,13 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     const Piece piece = pieces_.back();
     if (piece.a == piece.b) {
       pieces_.pop_back();
+      continue;
+    }
+    const std::int32_t back = edgeBackOntoSegment(piece);
+    if (back >= 0) {
+      markConstrained(back, piece.src);
+      pieces_.back().a = d_.topo.tri[nextEdge(back)];
+      ++d_.stats.segments;
       continue;
     }
     const Walk w = walk(piece.a, piece.b);
@@ -72,6 +80,70 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     ++d_.stats.segments;
   }
   return Outcome::Inserted;
+}
+
+bool SegmentInserter::followSameEnds(std::uint32_t u, std::uint32_t v, const EdgeSource& src) {
+  const ConstraintStore& store = d_.constraints;
+  const auto sameEnds = [&](std::uint32_t i) {
+    if (i >= store.segments.size()) return false;  // (a seam's borders: no input segments)
+    const SegmentEnds& s = store.segments[i];
+    return (s.a == u && s.b == v) || (s.a == v && s.b == u);
+  };
+  // From u, the constrained edge whose segments include one with these ends, not back the
+  // way the chain came; a chain is a simple path, so there is at most one.
+  sameEndsChain_.clear();
+  std::uint32_t at = u, from = kGhost;
+  const std::uint32_t limit = d_.vertexCount();
+  while (at != v) {
+    const std::int32_t start = edgeOutOf(at);
+    if (start < 0 || sameEndsChain_.size() >= limit) return false;
+    std::int32_t e = start, found = -1;
+    do {
+      const std::uint32_t w = d_.topo.tri[nextEdge(e)];
+      if (d_.topo.fixed[e] && w != from) {
+        const EdgeSource* s = store.find(at, w);
+        bool holds = false;
+        if (s) store.forEachSegment(*s, [&](std::uint32_t i) { holds = holds || sameEnds(i); });
+        if (holds) found = e;
+      }
+      e = d_.topo.adj[prevEdge(e)];
+    } while (e != start && found < 0);
+    if (found < 0) return false;
+    sameEndsChain_.push_back(found);
+    from = at;
+    at = d_.topo.tri[nextEdge(found)];
+  }
+  for (const std::int32_t e : sameEndsChain_) {
+    markConstrained(e, src);
+    ++d_.stats.segments;
+  }
+  return true;
+}
+
+std::int32_t SegmentInserter::edgeBackOntoSegment(const Piece& piece) {
+  const ConstraintStore& store = d_.constraints;
+  if (piece.src.segment >= store.segments.size()) return -1;
+  const InputSegment g = store.geometry(piece.src.segment, d_.xy);
+  const double* p = d_.xy.data();
+  const auto on = [&](std::uint32_t x) {
+    return orient2d(g.ax, g.ay, g.bx, g.by, p[2 * x], p[2 * x + 1]) == Sign::Zero;
+  };
+  // On the segment, the walk follows collinear edges by itself.
+  if (on(piece.a)) return -1;
+  const std::int32_t start = edgeOutOf(piece.a);
+  if (start < 0) return -1;
+  const double ax = p[2 * piece.a], ay = p[2 * piece.a + 1];
+  const double bx = p[2 * piece.b], by = p[2 * piece.b + 1];
+  std::int32_t e = start;
+  do {
+    const std::uint32_t w = d_.topo.tri[nextEdge(e)];
+    if (d_.topo.fixed[e] && w != kGhost && on(w) &&
+        signAlong(g, ax, ay, p[2 * w], p[2 * w + 1]) > 0 &&
+        signAlong(g, p[2 * w], p[2 * w + 1], bx, by) >= 0)
+      return e;
+    e = d_.topo.adj[prevEdge(e)];
+  } while (e != start);
+  return -1;
 }
 
 bool SegmentInserter::chainBendsAt(std::uint32_t v) {

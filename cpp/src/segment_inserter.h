@@ -67,6 +67,15 @@ class SegmentInserter {
   // Whether a constrained edge at v holds a segment that does not pass through v exactly
   // (ends included): a chain bent through v.
   GEOCDT_NOINLINE bool chainBendsAt(std::uint32_t v);
+  // Marks the chain of an input segment inserted before with the same ends as u-v, if there
+  // is one, for src too: a shared border then has one chain that names both, where a walk of
+  // its own could take the other side of a vertex a crossing put a few ulps off the line.
+  GEOCDT_NOINLINE bool followSameEnds(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
+  // A constrained half-edge out of piece.a, when piece.a lies off the piece's input segment
+  // (a crossing rounded it there), to a vertex exactly on that segment, ahead of piece.a
+  // and not past piece.b; else -1. Following it keeps this chain on a collinear chain
+  // inserted before, which then names both, instead of passing it on the other side.
+  GEOCDT_NOINLINE std::int32_t edgeBackOntoSegment(const Piece& piece);
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v);  // half-edge u -> v, or -1
   void markConstrained(std::int32_t e, const EdgeSource& src);
   GEOCDT_NOINLINE bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);
@@ -118,6 +127,7 @@ class SegmentInserter {
   Status error_;
   std::vector<std::uint32_t> touchedSegments_;
   std::vector<Piece> pieces_;
+  std::vector<std::int32_t> sameEndsChain_;  // followSameEnds's half-edges, u to v
   struct QueuedEdge {
     std::uint32_t u, v;
     std::int32_t hint;  // where u -> v was last seen; flips elsewhere may move it
