@@ -35,14 +35,25 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
       pieces_.pop_back();
       continue;
     }
-    const std::int32_t back = edgeBackOntoSegment(piece);
-    if (back >= 0) {
-      markConstrained(back, piece.src);
-      pieces_.back().a = d_.topo.tri[nextEdge(back)];
-      ++d_.stats.segments;
+    // Off its input segment (at a rounded crossing), the piece goes back onto it at the
+    // first vertex exactly on it: collinear chains inserted before then hold this one too.
+    InputSegment g{};
+    const bool off = crossings_ == Crossings::Computed && offSegment(piece, g);
+    if (off) {
+      const std::int32_t back = edgeBackOntoSegment(piece, g);
+      if (back >= 0) {
+        markConstrained(back, piece.src);
+        pieces_.back().a = d_.topo.tri[nextEdge(back)];
+        ++d_.stats.segments;
+        continue;
+      }
+    }
+    const Walk w = walk(piece.a, piece.b, off ? &g : nullptr);
+    if (w.via != kGhost) {  // split at it: first a -> via, then via -> b
+      pieces_.back() = {w.via, piece.b, piece.src};
+      pieces_.push_back({piece.a, w.via, piece.src});
       continue;
     }
-    const Walk w = walk(piece.a, piece.b);
     if (w.reached == kGhost && w.blocking < 0)
       return broken("lost the segment while walking along it");
     if (w.blocking >= 0 && crossings_ == Crossings::Snapped) {
@@ -120,30 +131,42 @@ bool SegmentInserter::followSameEnds(std::uint32_t u, std::uint32_t v, const Edg
   return true;
 }
 
-std::int32_t SegmentInserter::edgeBackOntoSegment(const Piece& piece) {
+bool SegmentInserter::offSegment(const Piece& piece, InputSegment& g) const {
   const ConstraintStore& store = d_.constraints;
-  if (piece.src.segment >= store.segments.size()) return -1;
-  const InputSegment g = store.geometry(piece.src.segment, d_.xy);
+  if (piece.src.segment >= store.segments.size()) return false;  // (a seam's borders)
+  g = store.geometry(piece.src.segment, d_.xy);
   const double* p = d_.xy.data();
-  const auto on = [&](std::uint32_t x) {
-    return orient2d(g.ax, g.ay, g.bx, g.by, p[2 * x], p[2 * x + 1]) == Sign::Zero;
-  };
-  // On the segment, the walk follows collinear edges by itself.
-  if (on(piece.a)) return -1;
+  return orient2d(g.ax, g.ay, g.bx, g.by, p[2 * piece.a], p[2 * piece.a + 1]) != Sign::Zero;
+}
+
+bool SegmentInserter::onAndBetween(const InputSegment& g, std::uint32_t v, double px, double py,
+                                   double qx, double qy) const {
+  if (v == kGhost) return false;
+  const double vx = d_.xy[2 * v], vy = d_.xy[2 * v + 1];
+  return orient2d(g.ax, g.ay, g.bx, g.by, vx, vy) == Sign::Zero &&
+         signAlong(g, px, py, vx, vy) > 0 && signAlong(g, vx, vy, qx, qy) >= 0;
+}
+
+std::int32_t SegmentInserter::edgeBackOntoSegment(const Piece& piece, const InputSegment& g) {
   const std::int32_t start = edgeOutOf(piece.a);
   if (start < 0) return -1;
+  const double* p = d_.xy.data();
   const double ax = p[2 * piece.a], ay = p[2 * piece.a + 1];
   const double bx = p[2 * piece.b], by = p[2 * piece.b + 1];
-  std::int32_t e = start;
+  std::int32_t e = start, best = -1;
+  double nx = bx, ny = by;  // the nearest found so far (b itself, at first)
   do {
     const std::uint32_t w = d_.topo.tri[nextEdge(e)];
-    if (d_.topo.fixed[e] && w != kGhost && on(w) &&
-        signAlong(g, ax, ay, p[2 * w], p[2 * w + 1]) > 0 &&
-        signAlong(g, p[2 * w], p[2 * w + 1], bx, by) >= 0)
-      return e;
+    // onAndBetween tests w against the nearest so far: not past it. Strictly nearer:
+    if (onAndBetween(g, w, ax, ay, nx, ny) &&
+        (best < 0 || signAlong(g, p[2 * w], p[2 * w + 1], nx, ny) > 0)) {
+      best = e;
+      nx = p[2 * w];
+      ny = p[2 * w + 1];
+    }
     e = d_.topo.adj[prevEdge(e)];
   } while (e != start);
-  return -1;
+  return best;
 }
 
 bool SegmentInserter::chainBendsAt(std::uint32_t v) {
@@ -185,7 +208,8 @@ void SegmentInserter::markConstrained(std::int32_t e, const EdgeSource& src) {
   d_.constraints.mark(t.tri[e], t.tri[nextEdge(e)], src);
 }
 
-SegmentInserter::Walk SegmentInserter::walk(std::uint32_t a, std::uint32_t b) {
+SegmentInserter::Walk SegmentInserter::walk(std::uint32_t a, std::uint32_t b,
+                                            const InputSegment* onto) {
   Walk result;
   const double* p = d_.xy.data();
   const Topology& topo = d_.topo;
@@ -251,6 +275,10 @@ SegmentInserter::Walk SegmentInserter::walk(std::uint32_t a, std::uint32_t b) {
     const Sign sc = side(c);
     if (sc == Sign::Zero) {
       result.reached = c;
+      return result;
+    }
+    if (onto && onAndBetween(*onto, c, ax, ay, bx, by)) {
+      result.via = c;
       return result;
     }
     h = sc == Sign::Negative ? prevEdge(f) : nextEdge(f);

@@ -57,12 +57,15 @@ class SegmentInserter {
     std::uint32_t reached = kGhost;  // the vertex where the walk stopped on the segment
     std::int32_t existing = -1;      // a half-edge a -> reached when it already exists
     std::int32_t blocking = -1;      // a constrained half-edge crossing the segment
+    std::uint32_t via = kGhost;      // a vertex exactly on `onto`, off the piece (below)
   };
 
   // walk, chainBendsAt, flipIn and the crossings' functions below are functions of their own:
   // inlined, insert() was 13 KB of wasm, which V8 took 35-44 ms to optimise while a first
   // call ran it in its baseline code (bench/EXPERIMENTS.md, first call 21).
-  GEOCDT_NOINLINE Walk walk(std::uint32_t a, std::uint32_t b);
+  // onto: the piece's input segment when a lies off it (a rounded crossing), else null; the
+  // walk then stops at a vertex exactly on it, ahead of a and not past b, if it meets one.
+  GEOCDT_NOINLINE Walk walk(std::uint32_t a, std::uint32_t b, const InputSegment* onto);
   std::int32_t edgeOutOf(std::uint32_t a);
   // Whether a constrained edge at v holds a segment that does not pass through v exactly
   // (ends included): a chain bent through v.
@@ -71,11 +74,16 @@ class SegmentInserter {
   // is one, for src too: a shared border then has one chain that names both, where a walk of
   // its own could take the other side of a vertex a crossing put a few ulps off the line.
   GEOCDT_NOINLINE bool followSameEnds(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
-  // A constrained half-edge out of piece.a, when piece.a lies off the piece's input segment
-  // (a crossing rounded it there), to a vertex exactly on that segment, ahead of piece.a
-  // and not past piece.b; else -1. Following it keeps this chain on a collinear chain
-  // inserted before, which then names both, instead of passing it on the other side.
-  GEOCDT_NOINLINE std::int32_t edgeBackOntoSegment(const Piece& piece);
+  // Whether piece.a lies off the piece's input segment, written to g (false without one).
+  bool offSegment(const Piece& piece, InputSegment& g) const;
+  // Whether vertex v lies exactly on g, ahead of (px, py) along it and not past (qx, qy).
+  bool onAndBetween(const InputSegment& g, std::uint32_t v, double px, double py, double qx,
+                    double qy) const;
+  // A half-edge out of piece.a, which lies off the input segment g (a crossing rounded it
+  // there), to the nearest vertex exactly on g ahead of it and not past piece.b; else -1.
+  // Going back onto the segment there keeps this chain on a collinear chain inserted
+  // before, which then names both, instead of passing it on the other side.
+  GEOCDT_NOINLINE std::int32_t edgeBackOntoSegment(const Piece& piece, const InputSegment& g);
   std::int32_t findEdge(std::uint32_t u, std::uint32_t v);  // half-edge u -> v, or -1
   void markConstrained(std::int32_t e, const EdgeSource& src);
   GEOCDT_NOINLINE bool flipIn(std::uint32_t a, std::uint32_t w, const EdgeSource& src);
