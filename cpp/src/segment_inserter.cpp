@@ -16,7 +16,6 @@ Outcome SegmentInserter::broken(const char* what) {
 }
 
 Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSource& src) {
-  if (followSameEnds(u, v, src)) return Outcome::Inserted;
   pieces_.clear();
   pieces_.push_back({u, v, src});
   // Each round either inserts a piece, adds a vertex or re-routes a crossed constraint.
@@ -91,44 +90,6 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
     ++d_.stats.segments;
   }
   return Outcome::Inserted;
-}
-
-bool SegmentInserter::followSameEnds(std::uint32_t u, std::uint32_t v, const EdgeSource& src) {
-  const ConstraintStore& store = d_.constraints;
-  const auto sameEnds = [&](std::uint32_t i) {
-    if (i >= store.segments.size()) return false;  // (a seam's borders: no input segments)
-    const SegmentEnds& s = store.segments[i];
-    return (s.a == u && s.b == v) || (s.a == v && s.b == u);
-  };
-  // From u, the constrained edge whose segments include one with these ends, not back the
-  // way the chain came; a chain is a simple path, so there is at most one.
-  sameEndsChain_.clear();
-  std::uint32_t at = u, from = kGhost;
-  const std::uint32_t limit = d_.vertexCount();
-  while (at != v) {
-    const std::int32_t start = edgeOutOf(at);
-    if (start < 0 || sameEndsChain_.size() >= limit) return false;
-    std::int32_t e = start, found = -1;
-    do {
-      const std::uint32_t w = d_.topo.tri[nextEdge(e)];
-      if (d_.topo.fixed[e] && w != from) {
-        const EdgeSource* s = store.find(at, w);
-        bool holds = false;
-        if (s) store.forEachSegment(*s, [&](std::uint32_t i) { holds = holds || sameEnds(i); });
-        if (holds) found = e;
-      }
-      e = d_.topo.adj[prevEdge(e)];
-    } while (e != start && found < 0);
-    if (found < 0) return false;
-    sameEndsChain_.push_back(found);
-    from = at;
-    at = d_.topo.tri[nextEdge(found)];
-  }
-  for (const std::int32_t e : sameEndsChain_) {
-    markConstrained(e, src);
-    ++d_.stats.segments;
-  }
-  return true;
 }
 
 bool SegmentInserter::offSegment(const Piece& piece, InputSegment& g) const {

@@ -70,10 +70,6 @@ class SegmentInserter {
   // Whether a constrained edge at v holds a segment that does not pass through v exactly
   // (ends included): a chain bent through v.
   GEOCDT_NOINLINE bool chainBendsAt(std::uint32_t v);
-  // Marks the chain of an input segment inserted before with the same ends as u-v, if there
-  // is one, for src too: a shared border then has one chain that names both, where a walk of
-  // its own could take the other side of a vertex a crossing put a few ulps off the line.
-  GEOCDT_NOINLINE bool followSameEnds(std::uint32_t u, std::uint32_t v, const EdgeSource& src);
   // Whether piece.a lies off the piece's input segment, written to g (false without one).
   bool offSegment(const Piece& piece, InputSegment& g) const;
   // Whether vertex v lies exactly on g, ahead of (px, py) along it and not past (qx, qy).
@@ -135,7 +131,6 @@ class SegmentInserter {
   Status error_;
   std::vector<std::uint32_t> touchedSegments_;
   std::vector<Piece> pieces_;
-  std::vector<std::int32_t> sameEndsChain_;  // followSameEnds's half-edges, u to v
   struct QueuedEdge {
     std::uint32_t u, v;
     std::int32_t hint;  // where u -> v was last seen; flips elsewhere may move it

@@ -1358,9 +1358,9 @@ TEST(Constraints, FuzzRouteLeftBehindOffItsSegmentIsFound) {
   // piece of polyline 7 was bent through a vertex 2.3 spacings of doubles off its segment,
   // and the chain later went another way, leaving that route named and straying; the check
   // looked only along the chain. Now every edge that names a checked segment is checked.
-  // (Since polyline 7's repeated segments follow the chain of their first insertion, the
-  // stray route no longer forms here, and no snap rounding is needed: the result must still
-  // hold.)
+  // (Since a piece that starts off its segment goes back onto it at the nearest vertex
+  // exactly on it, the stray route no longer forms here, and no snap rounding is needed:
+  // the result must still hold.)
   const double points[][2] = {
       {16000000.25, 16000000.25},        {16000002.25, 16000002.25},
       {16000000.25, 16000001.25},        {16000002.25, 16000001.35},
