@@ -4,7 +4,8 @@
 // pair index of -1 once wrote a byte before an array there). The JS checker also holds
 // each constrained edge to naming every polyline with a segment through it, which the C++
 // checker does not (overlapping segments once took chains of their own here, where a
-// crossing rounded off their line). Deterministic: fixed seeds; 20,000 of them passed.
+// crossing rounded off their line). Deterministic: fixed seeds. (20,000 seeds, 1000-10999
+// and 20000-29999, also passed the mesh and chain checks in one call each, keep all.)
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { init, triangulate, Triangulation, memoryUsage } from 'geocdt';
