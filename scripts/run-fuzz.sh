@@ -10,7 +10,8 @@
 # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: as much fuzzing on
 # any machine, as long as the seconds do not cut it short; not the very same inputs, see
 # tests/fuzz/README.md), GEOCDT_FUZZ_TIMEOUT (seconds one input may
-# take, default 20; fuzz_strips triangulates 33,000 points a few times: 60), GEOCDT_FUZZ_STEP
+# take, default 20; fuzz_strips triangulates 33,000 points a few times, and fuzz_refine's
+# refinements of points spanning the whole double range test in big integers: 60), GEOCDT_FUZZ_STEP
 # (build: configure and build the targets, then stop; run: run targets built before, without
 # touching the build directory, so that runs of single targets can go side by side; unset:
 # both).
@@ -78,7 +79,7 @@ for target in $targets; do
   corpus=$build/corpus/$target
   mkdir -p "$corpus" "$build/artifacts"
   timeout=${GEOCDT_FUZZ_TIMEOUT:-20}
-  [ "$target" = fuzz_strips ] && timeout=${GEOCDT_FUZZ_TIMEOUT:-60}
+  case $target in fuzz_strips | fuzz_refine) timeout=${GEOCDT_FUZZ_TIMEOUT:-60} ;; esac
   echo "run-fuzz: $target for ${seconds}s" >&2
   # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS fix how much a run fuzzes (CI uses them).
   if ! "$build/tests/fuzz/$target" "$corpus" "$root/tests/fuzz/corpus/$target" \
