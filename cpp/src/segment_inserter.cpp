@@ -95,6 +95,9 @@ Outcome SegmentInserter::insert(std::uint32_t u, std::uint32_t v, const EdgeSour
 bool SegmentInserter::offSegment(const Piece& piece, InputSegment& g) const {
   const ConstraintStore& store = d_.constraints;
   if (piece.src.segment >= store.segments.size()) return false;  // (a seam's borders)
+  // Most pieces start at their segment's first vertex: on it, without a test.
+  const SegmentEnds& ends = store.segments[piece.src.segment];
+  if (piece.a == ends.a || piece.a == ends.b) return false;
   g = store.geometry(piece.src.segment, d_.xy);
   const double* p = d_.xy.data();
   return orient2d(g.ax, g.ay, g.bx, g.by, p[2 * piece.a], p[2 * piece.a + 1]) != Sign::Zero;
