@@ -23,10 +23,7 @@ double chainBound(double ax, double ay, double bx, double by);
 //  - no new crossings: the chains of two input segments that do not meet never cross (they
 //    may touch), and the chains of two segments that cross properly cross once, where each
 //    shared stretch of the two chains lies away from their ends (at an end, touching and
-//    crossing are the same thing);
-//  - where the mesh names each edge's segments (MeshOptions::segmentSources): an edge routed
-//    for a segment it lies exactly on names every polyline with a segment it lies exactly
-//    on (overlapping segments share their edges).
+//    crossing are the same thing).
 // inputToVertex holds the polylines' vertex ids in order (all points of polyline 0, then
 // polyline 1, ...). Returns "" when everything holds, else the first failure.
 std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
