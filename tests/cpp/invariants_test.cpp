@@ -133,6 +133,24 @@ TEST(ConstraintInvariants, RejectsANewCrossing) {
   EXPECT_EQ(testing::checkConstraints(edgesOnly(below, edges), lines, {0, 1, 2, 3}), "");
 }
 
+TEST(ConstraintInvariants, RejectsAnOverlapNamingOnePolyline) {
+  // (0, 0)-(4, 0) and (2, 0)-(6, 0) share (2, 0)-(4, 0): that edge must name both polylines.
+  const testing::Polylines lines = {{0, 0, 4, 0}, {2, 0, 6, 0}};
+  Mesh m = edgesOnly({0, 0, 4, 0, 2, 0, 6, 0}, {{0, 2}, {2, 1}, {1, 3}});
+  m.constraintEdges = {0, 3, 6};
+  m.sourceOffsets = {0, 1, 3, 4};
+  m.sources = {0, 0, 1, 1};
+  m.segmentOffsets = m.sourceOffsets;
+  m.segmentSources = m.sources;  // segment i is polyline i's
+  EXPECT_EQ(testing::checkConstraints(m, lines, {0, 1, 2, 3}, true), "");
+  // Routed for the first segment only, naming the first polyline only.
+  m.sourceOffsets = m.segmentOffsets = {0, 1, 2, 3};
+  m.sources = m.segmentSources = {0, 0, 1};
+  EXPECT_NE(
+      testing::checkConstraints(m, lines, {0, 1, 2, 3}, true).find("does not name polyline 1"),
+      std::string::npos);
+}
+
 TEST(ConstraintInvariants, RejectsALostCrossing) {
   const testing::Polylines lines = {{0, 0, 4, 0}, {2, -1, 2, 1}};
   const Mesh m = edgesOnly({0, 0, 4, 0, 2, -1, 2, 1}, {{0, 1}, {2, 3}});

@@ -60,7 +60,7 @@ void checkDataset(const std::string& name, std::size_t minimumCrossings,
   c.inputXY = &l.set.xy;
   c.inputToVertex = &ids;
   EXPECT_EQ(testing::checkTriangulation(m, c), "");
-  EXPECT_EQ(testing::checkConstraints(m, l.lines, ids), "");
+  EXPECT_EQ(testing::checkConstraints(m, l.lines, ids, true), "");
 
   // Inside flags against ray casting over the input rings, on a sample of triangles away
   // from the rings (where rounding of crossing points cannot matter).

@@ -109,6 +109,14 @@ int alongSign(const Segment& s, double px, double py, double qx, double qy) {
   return sgn(exact);
 }
 
+// Whether (x, y) lies on the closed segment s, exactly.
+bool exactlyOn(const Segment& s, double x, double y) {
+  if (x < std::min(s.ax, s.bx) || x > std::max(s.ax, s.bx) || y < std::min(s.ay, s.by) ||
+      y > std::max(s.ay, s.by))
+    return false;
+  return orient2d(s.ax, s.ay, s.bx, s.by, x, y) == Sign::Zero;
+}
+
 // Segments bucketed on a uniform grid by their bounding boxes, widened by their bounds.
 class SegmentGrid {
  public:
@@ -144,6 +152,10 @@ class SegmentGrid {
       if (within(s, x0, y0, bounds_[i]) && within(s, x1, y1, bounds_[i])) return true;
     }
     return false;
+  }
+  // The segments whose widened boxes hold the cell of (x, y).
+  const std::vector<std::size_t>& near(double x, double y) const {
+    return cells_[row(y) * side_ + column(x)];
   }
 
  private:
@@ -250,7 +262,7 @@ double chainBound(double ax, double ay, double bx, double by) {
 }
 
 std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
-                             const std::vector<std::uint32_t>& inputToVertex) {
+                             const std::vector<std::uint32_t>& inputToVertex, bool overlaps) {
   const std::vector<double>& p = mesh.points;
   std::vector<Segment> segments;
   std::vector<double> bounds;
@@ -304,6 +316,33 @@ std::string checkConstraints(const Mesh& mesh, const Polylines& polylines,
       named[key].assign(mesh.sources.begin() + mesh.sourceOffsets[i],
                         mesh.sources.begin() + mesh.sourceOffsets[i + 1]);
   }
+  // Where segments overlap, the edges they share list each of them (API.md): an edge routed
+  // for a segment it lies exactly on names the polyline of every other segment it lies
+  // exactly on. (Not every edge exactly on a segment: in a snap-rounded tangle a segment's
+  // chain may pass through a vertex an ulp beside another segment's link along it.) Checked
+  // where asked and the mesh names each edge's segments.
+  for (std::size_t i = 0; i < mesh.constraintEdges.size() && overlaps && bySegment; ++i) {
+    const std::uint32_t e = mesh.constraintEdges[i];
+    const std::uint32_t u = mesh.triangles[e], v = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
+    const double ux = p[2 * u], uy = p[2 * u + 1], vx = p[2 * v], vy = p[2 * v + 1];
+    const auto onSegment = [&](std::size_t j) {
+      return exactlyOn(segments[j], ux, uy) && exactlyOn(segments[j], vx, vy);
+    };
+    const auto routed = mesh.segmentSources.begin() + mesh.segmentOffsets[i];
+    const auto routedEnd = mesh.segmentSources.begin() + mesh.segmentOffsets[i + 1];
+    const auto along = std::find_if(
+        routed, routedEnd, [&](std::uint32_t t) { return t < segments.size() && onSegment(t); });
+    if (along == routedEnd) continue;
+    const auto first = mesh.sources.begin() + mesh.sourceOffsets[i];
+    const auto last = mesh.sources.begin() + mesh.sourceOffsets[i + 1];
+    for (const std::size_t j : grid.near(0.5 * ux + 0.5 * vx, 0.5 * uy + 0.5 * vy)) {
+      if (std::find(first, last, polylineOf[j]) != last || !onSegment(j)) continue;
+      return describe("constrained edge ", u, "-", v, " (", ux, ", ", uy, ")-(", vx, ", ", vy,
+                      ") lies on input segments ", *along, " and ", j, " but does not name ",
+                      "polyline ", polylineOf[j]);
+    }
+  }
+
   // Whether edge u-v may be on segment i's chain.
   const auto names = [&](std::uint32_t u, std::uint32_t v, std::size_t i) {
     if (named.empty()) return true;
