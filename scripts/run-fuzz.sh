@@ -9,12 +9,11 @@
 # GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines fuzz_refine fuzz_strips"),
 # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: as much fuzzing on
 # any machine, as long as the seconds do not cut it short; not the very same inputs, see
-# tests/fuzz/README.md), GEOCDT_FUZZ_TIMEOUT (seconds one input may
-# take, default 20; fuzz_strips triangulates 33,000 points a few times, and fuzz_refine's
-# refinements of points spanning the whole double range test in big integers: 60), GEOCDT_FUZZ_STEP
-# (build: configure and build the targets, then stop; run: run targets built before, without
-# touching the build directory, so that runs of single targets can go side by side; unset:
-# both).
+# tests/fuzz/README.md), GEOCDT_FUZZ_TIMEOUT (seconds one input may take, default 20;
+# fuzz_strips triangulates 33,000 points a few times, and fuzz_refine's refinements of points
+# spanning the whole double range test in big integers: 60), GEOCDT_FUZZ_STEP (build:
+# configure and build the targets, then stop; run: run targets built before, without touching
+# the build directory, so that runs of single targets can go side by side; unset: both).
 # Replay one input:  build-fuzz/tests/fuzz/fuzz_polylines FILE   (GEOCDT_FUZZ_PRINT=1 prints it)
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
