@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "chunks.h"
+#include "base/chunks.h"
 #include "geocdt/status.h"
 
 namespace geocdt {

@@ -2,10 +2,10 @@
 // outside triangles too, with provenance, inside flags and region labels.
 #include <algorithm>
 
-#include "chunks.h"
-#include "in_parallel.h"
-#include "region_labels.h"
-#include "slot_windings.h"
+#include "base/chunks.h"
+#include "base/in_parallel.h"
+#include "labels/region_labels.h"
+#include "labels/slot_windings.h"
 #include "triangulation_state.h"
 
 namespace geocdt {

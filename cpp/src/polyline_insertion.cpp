@@ -5,15 +5,15 @@
 #include <new>
 #include <string>
 
-#include "chain_check.h"
-#include "chunks.h"
+#include "base/chunks.h"
+#include "constraints/chain_check.h"
+#include "constraints/present_segments.h"
+#include "constraints/segment_inserter.h"
+#include "constraints/snap_rounding.h"
+#include "delaunay/vertex_edges.h"
 #include "geocdt/triangulation.h"
 #include "invalid_coordinate.h"
-#include "present_segments.h"
-#include "segment_inserter.h"
-#include "snap_rounding.h"
 #include "triangulation_state.h"
-#include "vertex_edges.h"
 
 namespace geocdt {
 

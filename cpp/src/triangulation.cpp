@@ -5,9 +5,9 @@
 #include <new>
 #include <string>
 
-#include "in_parallel.h"
+#include "base/in_parallel.h"
 #include "invalid_coordinate.h"
-#include "refinement.h"
+#include "refine/refinement.h"
 #include "triangulation_state.h"
 
 namespace geocdt {

@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "delaunay.h"
+#include "delaunay/delaunay.h"
 #include "geocdt/triangulation.h"
-#include "vertex_values.h"
+#include "values/vertex_values.h"
 
 namespace geocdt {
 

@@ -2,7 +2,7 @@
 // to that pair's share of the winding, from the lower vertex id to the higher. Random marks,
 // takes (moved elsewhere, either way round, as bent pieces are) and splits must leave every
 // edge with the model's total winding, its polylines, its segments and each polyline's share.
-#include "constraint_store.h"
+#include "mesh/constraint_store.h"
 
 #include <gtest/gtest.h>
 

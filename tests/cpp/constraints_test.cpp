@@ -9,10 +9,10 @@
 #include <string>
 
 #include "constraint_invariants.h"
+#include "constraints/present_segments.h"
 #include "geocdt/triangulation.h"
 #include "invariants.h"
 #include "point_generators.h"
-#include "present_segments.h"
 
 namespace geocdt {
 namespace {

@@ -1,6 +1,6 @@
 // The exact decisions of snap rounding against GMP rationals, on coordinates from subnormal
 // to 1e150 and on the cases that sit exactly on a boundary.
-#include "exact_geometry.h"
+#include "exact/exact_geometry.h"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "euclidean_norm.h"
+#include "exact/euclidean_norm.h"
 #include "point_generators.h"
 
 namespace geocdt {

@@ -15,9 +15,9 @@
 #include <random>
 #include <string>
 
+#include "exact/predicates_bigint.h"
+#include "exact/predicates_range.h"
 #include "geocdt/predicates.h"
-#include "predicates_bigint.h"
-#include "predicates_range.h"
 
 namespace geocdt {
 namespace {

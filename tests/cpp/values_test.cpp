@@ -8,7 +8,7 @@
 
 #include "geocdt/triangulation.h"
 #include "point_generators.h"
-#include "vertex_values.h"
+#include "values/vertex_values.h"
 
 namespace geocdt {
 namespace {
