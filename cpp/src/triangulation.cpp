@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <string>
 
@@ -9,6 +10,8 @@
 #include "invalid_coordinate.h"
 #include "refine/refinement.h"
 #include "triangulation_state.h"
+#include "values/interpolation.h"
+#include "values/rasterize.h"
 
 namespace geocdt {
 
@@ -289,6 +292,34 @@ Status triangulate(std::vector<double>&& xy, const PolylineView* polylines,
         return t.insertPoints(std::move(xy), ids, values);
       },
       polylines, polylineCount, options, meshOptions, out, inputToVertex, values, refine);
+}
+
+Status Triangulation::rasterize(const RasterGrid& grid, Interpolation method, float* out) const {
+  if (!(grid.minX < grid.maxX) || !(grid.minY < grid.maxY) || !std::isfinite(grid.minX) ||
+      !std::isfinite(grid.maxX) || !std::isfinite(grid.minY) || !std::isfinite(grid.maxY))
+    return {StatusCode::InvalidArgument, "raster bounds must be finite with min < max"};
+  const std::uint32_t k = state_->values.perPoint();
+  const std::size_t width = grid.width, height = grid.height;
+  std::fill(out, out + width * height * k, std::numeric_limits<float>::quiet_NaN());
+  if (width == 0 || height == 0 || !hasValues()) return Status::success();
+  const double dx = (grid.maxX - grid.minX) / static_cast<double>(width);
+  const double dy = (grid.maxY - grid.minY) / static_cast<double>(height);
+  if (method == Interpolation::Natural) {
+    // One query per pixel, in row order: each walks a step or two from the previous one.
+    std::vector<double> row(2 * width), values(width * k);
+    for (std::size_t j = 0; j < height; ++j) {
+      for (std::size_t i = 0; i < width; ++i) {
+        row[2 * i] = grid.minX + (static_cast<double>(i) + 0.5) * dx;
+        row[2 * i + 1] = grid.maxY - (static_cast<double>(j) + 0.5) * dy;
+      }
+      interpolate(row.data(), width, method, values.data());
+      std::copy(values.begin(), values.end(), out + j * width * k);
+    }
+    return Status::success();
+  }
+  const std::vector<double>& values = state_->values.update(state_->delaunay, nullptr);
+  rasterizeLinear(state_->delaunay, values, k, grid, out);
+  return Status::success();
 }
 
 }  // namespace geocdt

@@ -36,8 +36,5 @@ Mesh exportMesh(Delaunay& delaunay, const MeshOptions& options, bool consume,
 Status insertPendingSegments(Delaunay& delaunay, const Options& options);
 // Index of each slot among the exported triangles, or -1 for ghost triangles.
 std::vector<std::int32_t> slotIndices(const Topology& topo);
-// Values at count points (see Triangulation::interpolate), from values (perPoint per vertex).
-void interpolateValues(Delaunay& d, const std::vector<double>& values, std::uint32_t perPoint,
-                       const double* xy, std::size_t count, Interpolation method, double* out);
 
 }  // namespace geocdt

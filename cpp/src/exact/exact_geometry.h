@@ -6,7 +6,7 @@
 // on the inputs' lowest common unit, so nothing rounds.
 #include <cmath>
 
-#include "mesh/constraint_store.h"
+#include "exact/input_segment.h"
 
 namespace geocdt {
 

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "exact/input_segment.h"
 #include "mesh/edge_map.h"
 #include "mesh/extra_members.h"
 
@@ -24,12 +25,6 @@ struct EdgeSource {
   std::int32_t winding = 0;    // ring traversals along the edge's direction minus against it
   std::uint32_t polyline = 0;  // the first polyline
   std::int32_t extra = -1;     // the first of more polylines and segments in the store, or -1
-};
-
-// An input segment's geometry: what crossings are computed from and chains are checked
-// against. Built when needed from its end vertices (ConstraintStore::geometry).
-struct InputSegment {
-  double ax, ay, bx, by;
 };
 
 // An input segment as the store keeps it: its end vertices. Input vertices keep their ids
