@@ -23,11 +23,12 @@ class ByteReader {
   ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
   std::size_t remaining() const { return size_ - pos_; }
   std::uint8_t byte() { return pos_ < size_ ? data_[pos_++] : 0; }
+  // Eight bytes, least significant first (as a little-endian machine stores a double).
   double rawDouble() {
-    std::uint8_t bytes[8];
-    for (std::uint8_t& b : bytes) b = byte();
+    std::uint64_t bits = 0;
+    for (int i = 0; i < 8; ++i) bits |= std::uint64_t{byte()} << (8 * i);
     double v;
-    std::memcpy(&v, bytes, sizeof v);
+    std::memcpy(&v, &bits, sizeof v);
     return v;
   }
 
@@ -188,6 +189,34 @@ class PointDecoder {
   int ulps_ = 1;
   std::vector<double> history_;
 };
+
+// Free points, then polylines until the bytes run out or a limit is reached: a length byte
+// (1 + low 4 bits points; bit 7 closes the polyline into a ring) followed by its points.
+// fuzz_polylines and fuzz_refine read their geometry this way.
+inline void decodePointsAndPolylines(ByteReader& in, PointDecoder& decoder, std::size_t freePoints,
+                                     std::size_t maxPolylines, std::size_t maxPoints,
+                                     std::vector<double>& points,
+                                     std::vector<std::vector<double>>& lines) {
+  double x, y;
+  for (std::size_t i = 0; i < freePoints; ++i) {
+    decoder.next(in, x, y);
+    points.push_back(x);
+    points.push_back(y);
+  }
+  std::size_t total = freePoints;
+  while (in.remaining() > 0 && lines.size() < maxPolylines && total < maxPoints) {
+    const std::uint8_t head = in.byte();
+    std::vector<double> line;
+    for (std::size_t k = 0; k <= static_cast<std::size_t>(head & 15); ++k) {
+      decoder.next(in, x, y);
+      line.push_back(x);
+      line.push_back(y);
+    }
+    if (head & 0x80) line.insert(line.end(), {line[0], line[1]});
+    total += line.size() / 2;
+    lines.push_back(std::move(line));
+  }
+}
 
 // Triangulation options from one byte: every order, both location starts, grid densities
 // that make the grid grow early or late, and (bit 7, unset in older seeds) snap rounding of

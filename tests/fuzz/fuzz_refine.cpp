@@ -46,25 +46,7 @@ Input decode(const std::uint8_t* data, std::size_t size) {
   const bool area = b & 128;
   const std::size_t free = in.byte() & 15;
   PointDecoder decoder(in);
-  double x, y;
-  for (std::size_t i = 0; i < free; ++i) {
-    decoder.next(in, x, y);
-    input.points.push_back(x);
-    input.points.push_back(y);
-  }
-  std::size_t total = free;
-  while (in.remaining() > 0 && input.lines.size() < kMaxPolylines && total < kMaxPoints) {
-    const std::uint8_t head = in.byte();
-    std::vector<double> line;
-    for (std::size_t k = 0; k <= static_cast<std::size_t>(head & 15); ++k) {
-      decoder.next(in, x, y);
-      line.push_back(x);
-      line.push_back(y);
-    }
-    if (head & 0x80) line.insert(line.end(), {line[0], line[1]});
-    total += line.size() / 2;
-    input.lines.push_back(std::move(line));
-  }
+  decodePointsAndPolylines(in, decoder, free, kMaxPolylines, kMaxPoints, input.points, input.lines);
   // A maximum area of about a hundredth of the bounding box's.
   if (area) {
     double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
