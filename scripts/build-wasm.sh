@@ -22,6 +22,24 @@ if ! command -v emcmake >/dev/null 2>&1; then
   fi
 fi
 
+# Emscripten 3.1.6 (Debian 12's package) is the version the build and web/ are made for. From
+# 3.1.52 on, the threaded build's worker script is no longer geocdt-threads.worker.js (named
+# .worker.mjs in 3.1.52, folded into the glue from 3.1.58: Emscripten's ChangeLog), which
+# web/ loads. Other versions may work: said, then tried.
+. "$root/scripts/versions.sh"
+emscripten=$(emcc --version 2>/dev/null | first_version)
+if version_at_least "$emscripten" 3.1.52; then
+  echo "build-wasm: Emscripten $emscripten found; from 3.1.52 on it no longer writes the" \
+    "threaded build's worker script that web/ loads. Use 3.1.6, Debian 12's package" \
+    "(apt-get install emscripten), or the emsdk's (emsdk install 3.1.6 &&" \
+    "emsdk activate 3.1.6, then source its emsdk_env.sh)." >&2
+  exit 1
+elif [ "$emscripten" != 3.1.6 ]; then
+  echo "build-wasm: Emscripten ${emscripten:-of unknown version} found; the build is known" \
+    "to work with 3.1.6 (Debian 12's package). Trying it; if the build or the JS tests" \
+    "fail, use 3.1.6 (emsdk install 3.1.6 && emsdk activate 3.1.6)." >&2
+fi
+
 # Debian's emscripten runs its JS tools with Debian's node modules (acorn), which a node
 # installed elsewhere does not search by itself.
 if [ -d /usr/share/nodejs/acorn ]; then

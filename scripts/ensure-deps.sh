@@ -1,18 +1,22 @@
 #!/bin/sh
-# Installs what a fresh Debian machine lacks, then the npm dev dependencies, then builds the
-# wasm when web/dist is missing or older than its sources. As root it installs Debian
-# packages; otherwise it prints the exact command to run and fails.
+# Installs what a fresh Debian machine lacks for one task, checks the versions of the tools
+# found, installs the npm dev dependencies, and builds the wasm when web/dist is missing or
+# older than its sources. As root it installs Debian packages; otherwise it prints the exact
+# command to run and fails.
 #
-#   sh scripts/ensure-deps.sh demo   # what `npm run demo` needs: CMake, make, Emscripten
-#   sh scripts/ensure-deps.sh        # what `npm test` needs: those, the native compilers,
-#                                    # GoogleTest, GMP, clang-format and Chromium
+#   sh scripts/ensure-deps.sh demo   # `npm run demo`: CMake, make, Emscripten, node
+#   sh scripts/ensure-deps.sh cpp    # `npm run test:cpp`: CMake, make, g++, GoogleTest, GMP
+#   sh scripts/ensure-deps.sh js     # `npm run test:js`: as demo
+#   sh scripts/ensure-deps.sh        # `npm test`: all of those, clang, clang-format, Chromium
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/scripts/versions.sh"
 profile=${1:-test}
 case "$profile" in
-  demo | test) ;;
-  *) echo "ensure-deps: unknown profile '$profile' (demo or test)" >&2; exit 2 ;;
+  demo | cpp | js | test) ;;
+  *) echo "ensure-deps: unknown profile '$profile' (demo, cpp, js or test)" >&2; exit 2 ;;
 esac
+wants() { case " $1 " in *" $profile "*) return 0 ;; esac; return 1; }
 
 missing=""
 need_command() { command -v "$1" >/dev/null 2>&1 || missing="$missing $2"; }
@@ -20,14 +24,16 @@ need_file() { [ -e "$1" ] || missing="$missing $2"; }
 
 need_command cmake cmake
 need_command make make
-need_command em++ emscripten
-if [ "$profile" = test ]; then
+if wants "demo js test"; then need_command em++ emscripten; fi
+if wants "cpp test"; then
   need_command g++ g++
+  need_file /usr/include/gtest/gtest.h libgtest-dev
+  need_file /usr/include/gmpxx.h libgmp-dev
+fi
+if wants test; then
   need_command clang++ clang
   need_command clang-format clang-format
   need_command chromium chromium
-  need_file /usr/include/gtest/gtest.h libgtest-dev
-  need_file /usr/include/gmpxx.h libgmp-dev
 fi
 
 if [ -n "$missing" ]; then
@@ -44,6 +50,26 @@ if [ -n "$missing" ]; then
     echo "  sudo apt-get update && sudo apt-get install -y$missing" >&2
     exit 1
   fi
+fi
+
+# The oldest versions the project's files are written for: cmake_minimum_required in
+# CMakeLists.txt, and the Node that runs the tests and scripts (import.meta.resolve, the test
+# runner's API; the package itself runs on less, see "engines" in package.json).
+cmake_version=$(cmake --version | first_version)
+if ! version_at_least "$cmake_version" 3.16; then
+  echo "ensure-deps: CMake $cmake_version found; geocdt needs 3.16 or later" \
+    "(Debian 11 and Ubuntu 20.04 have one; or: pip install cmake)" >&2
+  exit 1
+fi
+if ! command -v node >/dev/null 2>&1; then
+  echo "ensure-deps: node is missing: install Node 20 or later, with npm" \
+    "(https://nodejs.org/en/download, or a distribution's package of that version)" >&2
+  exit 1
+fi
+node_version=$(node --version | first_version)
+if ! version_at_least "$node_version" 20; then
+  echo "ensure-deps: Node $node_version found; the tests and scripts need Node 20 or later" >&2
+  exit 1
 fi
 
 # npm ci when node_modules is missing or older than the lock file. Some registries answer
@@ -65,6 +91,7 @@ if [ ! -f node_modules/.package-lock.json ] \
   rm -f "$log"
 fi
 
+wants "demo js test" || exit 0
 # The wasm builds (glue and binary, and the threaded build's worker script) when any is
 # missing or any source of them is newer: the core,
 # the bindings, the CMake files and the build script. Folders count too (a file removed).
