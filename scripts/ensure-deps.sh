@@ -53,8 +53,9 @@ if [ -n "$missing" ]; then
 fi
 
 # The oldest versions the project's files are written for: cmake_minimum_required in
-# CMakeLists.txt, and the Node that runs the tests and scripts (import.meta.resolve, the test
-# runner's API; the package itself runs on less, see "engines" in package.json).
+# CMakeLists.txt, and the Node its dev tools declare (ESLint 10 and Vite 7: ^20.19, ^22.13 or
+# 24 and later; Vite fails on Node 18, which lacks crypto.hash). The package itself runs on
+# less: "engines" in package.json.
 cmake_version=$(cmake --version | first_version)
 if ! version_at_least "$cmake_version" 3.16; then
   echo "ensure-deps: CMake $cmake_version found; geocdt needs 3.16 or later" \
@@ -62,15 +63,21 @@ if ! version_at_least "$cmake_version" 3.16; then
   exit 1
 fi
 if ! command -v node >/dev/null 2>&1; then
-  echo "ensure-deps: node is missing: install Node 20 or later, with npm" \
+  echo "ensure-deps: node is missing: install Node 20.19 or later, with npm" \
     "(https://nodejs.org/en/download, or a distribution's package of that version)" >&2
   exit 1
 fi
 node_version=$(node --version | first_version)
-if ! version_at_least "$node_version" 20; then
-  echo "ensure-deps: Node $node_version found; the tests and scripts need Node 20 or later" >&2
+if ! version_at_least "$node_version" 20.19; then
+  echo "ensure-deps: Node $node_version found; the tests and dev tools need Node 20.19 or" \
+    "later (ESLint and Vite declare ^20.19, ^22.13 or 24 and later)" >&2
   exit 1
 fi
+case $node_version in
+  21.* | 23.* | 22.[0-9].* | 22.1[0-2].*)
+    echo "ensure-deps: Node $node_version is outside what ESLint and Vite declare" \
+      "(^20.19, ^22.13 or 24 and later); going on" >&2 ;;
+esac
 
 # npm ci when node_modules is missing or older than the lock file. Some registries answer
 # without the other platforms' optional packages (rollup, esbuild), which npm ci then finds
