@@ -2,7 +2,7 @@
 // the `new URL(..., import.meta.url)` and ship it (and the warm-up's worker) as assets.
 import createGeocdtModule from './dist/geocdt.mjs';
 import { createApi, kAutoThreads } from './api.js';
-import { instantiateCompiled, threadedSettings } from './warm-up.js';
+import { instantiateCompiled, instantiateWithWarmUp, threadedSettings } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
 export { GeocdtError } from './errors.js';
@@ -82,12 +82,7 @@ async function instantiate(options) {
     return { wasm: await instantiateThreaded(options, threads), threads };
   }
   const module = await compile(options, false);
-  const wasm = await instantiateCompiled(createGeocdtModule, module);
-  // After the code that awaits init() has run to its first wait: a call made at once finds
-  // both cores free (the warm-up would only compete with it, bench/EXPERIMENTS.md), and a
-  // caller that loads its data first gets the warm-up meanwhile.
-  if (options.warmUp !== false) setTimeout(() => startWarmUp(module), 0);
-  return { wasm, threads: 1 };
+  return instantiateWithWarmUp(createGeocdtModule, module, options, startWarmUp);
 }
 
 export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =

@@ -8,7 +8,7 @@ import { Worker } from 'node:worker_threads';
 import createGeocdtModule from './dist/geocdt.mjs';
 import { createApi, kAutoThreads } from './api.js';
 import { PthreadWorker } from './pthread-worker.node.js';
-import { instantiateCompiled, threadedSettings } from './warm-up.js';
+import { instantiateCompiled, instantiateWithWarmUp, threadedSettings } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
 export { GeocdtError } from './errors.js';
@@ -95,12 +95,7 @@ async function instantiate(options) {
   const where = wasmUrl === undefined ? new URL('./dist/geocdt.wasm', import.meta.url)
     : typeof wasmUrl === 'string' ? wasmUrl : new URL(wasmUrl.href);
   const module = await WebAssembly.compile(options.wasmBinary ?? await readFile(where));
-  const wasm = await instantiateCompiled(createGeocdtModule, module);
-  // After the code that awaits init() has run to its first wait: a call made at once finds
-  // both cores free (the warm-up would only compete with it, bench/EXPERIMENTS.md), and a
-  // caller that loads its data first gets the warm-up meanwhile.
-  if (options.warmUp !== false) setTimeout(() => startWarmUp(module), 0);
-  return { wasm, threads: 1 };
+  return instantiateWithWarmUp(createGeocdtModule, module, options, startWarmUp);
 }
 
 export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =

@@ -17,6 +17,17 @@ export function instantiateCompiled(createModule, module, settings = {}) {
   });
 }
 
+// The single-threaded module, instantiated from its compiled module, with the warm-up
+// (startWarmUp(module), each entry's own worker) started unless options.warmUp is false.
+// It starts once the code that awaits init() has run to its first wait: a call made at once
+// finds both cores free (the warm-up would only compete with it, bench/EXPERIMENTS.md), and a
+// caller that loads its data first gets the warm-up meanwhile.
+export async function instantiateWithWarmUp(createModule, module, options, startWarmUp) {
+  const wasm = await instantiateCompiled(createModule, module);
+  if (options.warmUp !== false) setTimeout(() => startWarmUp(module), 0);
+  return { wasm, threads: 1 };
+}
+
 // The threaded build's module settings: a pool of threads - 1 workers, which load the glue
 // from glueUrl. The glue's warning on a blocked main thread is dropped: a call blocks the
 // thread that makes it while the pool works, as any call does (API.md says so).
