@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   const std::string order = argc > 3 ? argv[3] : "brio";
   const bool adopt = argc > 4 && std::strcmp(argv[4], "adopt") == 0;
   std::vector<double> xy =
-      points == "clusters" ? bench::gaussianClusters(n, 5) : bench::uniformPoints(n, 3);
+      points == "clusters" ? bench::clustersOfManySpreads(n, 5) : bench::uniformPointsMt19937(n, 3);
   geocdt::Options options;
   options.order = order == "hilbert" ? geocdt::InsertionOrder::Hilbert
                   : order == "input" ? geocdt::InsertionOrder::Input

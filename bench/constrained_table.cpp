@@ -42,7 +42,7 @@ void printConstrainedTable(const BenchConfig& config) {
   cases.push_back(fileCase(config, "Natural Earth 10m rings", "ne_10m_rings.gpl", naturalEarth));
   cases.push_back(fileCase(config, "Natural Earth 10m arcs", "ne_10m_arcs.gpl", naturalEarth));
   cases.push_back({"1,000 random segments + 100k points",
-                   uniformPoints(100000, 8),
+                   uniformPointsMt19937(100000, 8),
                    randomSegments(1000, 9),
                    {}});
   const std::string gshhg = "scripts/datasets/all.sh";

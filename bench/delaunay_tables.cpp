@@ -8,6 +8,7 @@
 #include "cgal_reference.h"
 #include "geocdt_runs.h"
 #include "markdown_table.h"
+#include "point_generators.h"
 #include "point_sets.h"
 
 namespace bench {
@@ -33,12 +34,12 @@ std::string stepsPer(std::uint64_t steps, std::uint64_t locates) {
 
 void printComparison(const BenchConfig& config) {
   const std::vector<PointCase> cases = {
-      {"uniform 10k", [] { return uniformPoints(10000, 1); }, 15, 5},
-      {"uniform 100k", [] { return uniformPoints(100000, 2); }, 9, 3},
-      {"uniform 1M", [] { return uniformPoints(1000000, 3); }, 5, 1},
-      {"uniform 4M", [] { return uniformPoints(4000000, 4); }, 3, 0},
-      {"gaussian clusters 1M", [] { return gaussianClusters(1000000, 5); }, 5, 1},
-      {"lattice 1000x1000", [] { return lattice(1000); }, 5, 1},
+      {"uniform 10k", [] { return uniformPointsMt19937(10000, 1); }, 15, 5},
+      {"uniform 100k", [] { return uniformPointsMt19937(100000, 2); }, 9, 3},
+      {"uniform 1M", [] { return uniformPointsMt19937(1000000, 3); }, 5, 1},
+      {"uniform 4M", [] { return uniformPointsMt19937(4000000, 4); }, 3, 0},
+      {"gaussian clusters 1M", [] { return clustersOfManySpreads(1000000, 5); }, 5, 1},
+      {"lattice 1000x1000", [] { return geocdt::testing::latticePoints(1000); }, 5, 1},
   };
   MarkdownTable table({"input", ">points", ">reps", ">geocdt ms", ">Mpt/s", ">ns/pt",
                        ">steps/insert", ">peak B/pt", ">CGAL ms", ">CGAL Mpt/s", ">CGAL peak B/pt",
@@ -92,9 +93,9 @@ const char* orderName(geocdt::InsertionOrder order) {
 }
 
 void printOptionComparison(const BenchConfig& config) {
-  const std::vector<double> xy = uniformPoints(1000000, 3);
-  const std::vector<double> late = uniformPoints(100000, 6);
-  const std::vector<double> queries = uniformPoints(10000, 7);
+  const std::vector<double> xy = uniformPointsMt19937(1000000, 3);
+  const std::vector<double> late = uniformPointsMt19937(100000, 6);
+  const std::vector<double> queries = uniformPointsMt19937(10000, 7);
   const int reps = config.quick ? 1 : 3;
   // Some combinations walk O(sqrt n) per point; a short limit keeps the whole bench short.
   const int timeout = std::min(config.timeoutSeconds, config.quick ? 20 : 30);

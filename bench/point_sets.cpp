@@ -5,7 +5,7 @@
 
 namespace bench {
 
-std::vector<double> uniformPoints(std::size_t n, std::uint64_t seed) {
+std::vector<double> uniformPointsMt19937(std::size_t n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> xy(2 * n);
@@ -13,7 +13,7 @@ std::vector<double> uniformPoints(std::size_t n, std::uint64_t seed) {
   return xy;
 }
 
-std::vector<double> gaussianClusters(std::size_t n, std::uint64_t seed) {
+std::vector<double> clustersOfManySpreads(std::size_t n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -29,18 +29,6 @@ std::vector<double> gaussianClusters(std::size_t n, std::uint64_t seed) {
     const int c = static_cast<int>(rng() % kClusters);
     xy[2 * i] = cx[c] + sigma[c] * normal(rng);
     xy[2 * i + 1] = cy[c] + sigma[c] * normal(rng);
-  }
-  return xy;
-}
-
-std::vector<double> lattice(std::size_t side) {
-  std::vector<double> xy;
-  xy.reserve(2 * side * side);
-  for (std::size_t y = 0; y < side; ++y) {
-    for (std::size_t x = 0; x < side; ++x) {
-      xy.push_back(static_cast<double>(x));
-      xy.push_back(static_cast<double>(y));
-    }
   }
   return xy;
 }

@@ -40,7 +40,7 @@ void printTargetsTable(const BenchConfig& config) {
   for (const Size& size : sizes) {
     const int reps = config.quick ? size.quickRepetitions : size.repetitions;
     if (reps == 0) continue;
-    const std::vector<double> xy = uniformPoints(size.points, 10 + size.points / 250000);
+    const std::vector<double> xy = uniformPointsMt19937(size.points, 10 + size.points / 250000);
     std::fprintf(stderr, "  targets: uniform %zu (%d repetitions)\n", size.points, reps);
     std::vector<RunOnce> engines = {
         [&](Sample& s, std::string& e) { return geocdtDelaunay(xy, defaults, s, e); }};
@@ -75,7 +75,7 @@ void printTargetsTable(const BenchConfig& config) {
 
   // The wasm binding's memory: the input buffer (counted) adopted by the core, then released.
   const std::size_t adoptedPoints = 1000000;
-  const std::vector<double> xy = uniformPoints(adoptedPoints, 14);
+  const std::vector<double> xy = uniformPointsMt19937(adoptedPoints, 14);
   std::fprintf(stderr, "  targets: adopted buffer, uniform %zu\n", adoptedPoints);
   const Measurement adopted = measure(1, config.timeoutSeconds, [&](Sample& s, std::string& e) {
     return geocdtDelaunayAdopted(xy, s, e);

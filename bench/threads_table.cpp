@@ -33,8 +33,8 @@ void printThreadsTable(const BenchConfig& config) {
   const bool cpuClock = usingProcessCpuClock();
   useProcessCpuClock(false);
   std::vector<ThreadsCase> cases;
-  cases.push_back({"uniform 1M", uniformPoints(1000000, 21), {}, {}, config.quick ? 1 : 7});
-  if (!config.quick) cases.push_back({"uniform 4M", uniformPoints(4000000, 22), {}, {}, 5});
+  cases.push_back({"uniform 1M", uniformPointsMt19937(1000000, 21), {}, {}, config.quick ? 1 : 7});
+  if (!config.quick) cases.push_back({"uniform 4M", uniformPointsMt19937(4000000, 22), {}, {}, 5});
   for (const auto& [name, file] : std::vector<std::pair<std::string, std::string>>{
            {"Natural Earth 10m rings", "ne_10m_rings.gpl"}, {"GSHHG Asia", "gshhg_asia.gpl"}}) {
     ThreadsCase c{name, {}, {}, {}, config.quick ? 1 : 5};

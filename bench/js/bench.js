@@ -11,7 +11,7 @@ import { gzipSync } from 'node:zlib';
 import { fileURLToPath } from 'node:url';
 import { init, triangulate } from 'geocdt';
 import { alternate, median } from './timing.js';
-import { countryArcs, countryRings, indexedGraph, pointCount, uniform } from './datasets.js';
+import { countryArcs, countryRings, indexedGraph, pointCount, uniformLehmer } from './datasets.js';
 import * as peers from './peers.js';
 import { constraintCost, constraintDatasets } from './constraint-cost.js';
 
@@ -82,7 +82,7 @@ async function uniformPoints(sizes) {
   console.log('geocdt times include the input checks and the copies in and out of the wasm ' +
     'heap.\n');
   for (const size of sizes) {
-    const xy = uniform(size);
+    const xy = uniformLehmer(size);
     const rounds = size <= 100_000 ? 9 : size <= 1_000_000 ? 5 : 3;
     const results = await alternate([
       geocdt('geocdt', { points: xy }),

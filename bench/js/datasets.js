@@ -3,7 +3,12 @@ import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { feature, mesh } from 'topojson-client';
 
-export function uniform(n, seed = 12345) {
+// The polyline forms' conversions, shared with the tests.
+export { flatPolylines, polylineArrays } from '../../tests/js/support/inputs.js';
+
+// n points uniform in [0, 1000)², from Lehmer's minimal standard generator: the benchmarks'
+// points since their first figures (the tests' uniform() draws others, with xorshift32).
+export function uniformLehmer(n, seed = 12345) {
   let s = seed;
   const xy = new Float64Array(2 * n);
   for (let i = 0; i < 2 * n; i++) {
@@ -92,23 +97,5 @@ export function readGpl(path) {
   const start = 8 + 4 * lines;
   const coords = new Float64Array(2 * offsets[lines]);
   new Uint8Array(coords.buffer).set(bytes.subarray(start, start + coords.byteLength));
-  return { coords, offsets };
-}
-
-// The same polylines as one Float64Array each: the form every version accepts.
-export function asArrays({ coords, offsets }) {
-  const polylines = new Array(offsets.length - 1);
-  for (let i = 0; i + 1 < offsets.length; i++) {
-    polylines[i] = coords.slice(2 * offsets[i], 2 * offsets[i + 1]);
-  }
-  return polylines;
-}
-
-// Polylines (one array each) as the flat form { coords, offsets }.
-export function flatPolylines(polylines) {
-  const offsets = new Uint32Array(polylines.length + 1);
-  polylines.forEach((l, i) => { offsets[i + 1] = offsets[i] + l.length / 2; });
-  const coords = new Float64Array(2 * offsets[polylines.length]);
-  polylines.forEach((l, i) => coords.set(l, 2 * offsets[i]));
   return { coords, offsets };
 }

@@ -43,8 +43,8 @@ const DATASETS = {
 
 async function makeDataset(name) {
   const d = DATASETS[name];
-  const { countryRings, flatPolylines, uniform } = await import('./datasets.js');
-  if (d.uniform) return { points: uniform(d.uniform) };
+  const { countryRings, flatPolylines, uniformLehmer } = await import('./datasets.js');
+  if (d.uniform) return { points: uniformLehmer(d.uniform) };
   return { polylines: flatPolylines(countryRings(d.scale).polylines) };
 }
 

@@ -9,7 +9,7 @@ import { existsSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { median } from './timing.js';
-import { asArrays, readGpl, uniform } from './datasets.js';
+import { polylineArrays, readGpl, uniformLehmer } from './datasets.js';
 
 function option(name, fallback) {
   const i = process.argv.indexOf(name);
@@ -54,14 +54,14 @@ const here = resolve(new URL('../..', import.meta.url).pathname);
 const builds = [{ name: 'this build', api: await load(here), flat: true }];
 if (baseline) builds.push({ name: 'baseline', api: await load(resolve(baseline)), flat: false });
 
-const points = uniform(1_000_000);
+const points = uniformLehmer(1_000_000);
 console.log(`## 1,000,000 uniform points (${rounds} alternating rounds, medians)\n`);
 measure(builds.map((b) => ({ name: b.name, run: () => b.api.triangulate({ points }) })));
 
 const gpl = data && join(data, 'gshhg_region.gpl');
 if (gpl && existsSync(gpl)) {
   const flat = readGpl(gpl);
-  const arrays = asArrays(flat);
+  const arrays = polylineArrays(flat);
   const n = (flat.offsets.at(-1)).toLocaleString('en-US');
   console.log(`## GSHHG region: ${n} points, ${flat.offsets.length - 1} polylines\n`);
   const contenders = [];

@@ -4,7 +4,7 @@
 // N uniform points (default 1M), or the Natural Earth 10m country rings or arcs as
 // constraints; the module path imports another build (its web/index.node.js).
 import { pathToFileURL } from 'node:url';
-import { countryArcs, countryRings, pointCount, uniform } from './datasets.js';
+import { countryArcs, countryRings, pointCount, uniformLehmer } from './datasets.js';
 
 const what = process.argv[2] ?? '1000000';
 const module = process.argv[3];
@@ -13,7 +13,7 @@ const { init, memoryUsage, triangulate } =
 await init();
 const input = what === 'rings' ? { polylines: countryRings('10m').polylines }
   : what === 'arcs' ? { polylines: countryArcs('10m').polylines }
-    : { points: uniform(Number(what)) };
+    : { points: uniformLehmer(Number(what)) };
 const n = input.points ? input.points.length / 2 : pointCount(input.polylines);
 const before = memoryUsage();
 triangulate(input);

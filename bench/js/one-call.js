@@ -23,9 +23,9 @@ const delayMs = Number(option('--delay', 1000));
 const data = option('--data', null);
 
 async function child(dataset, path) {
-  const { readGpl, uniform } = await import('./datasets.js');
+  const { readGpl, uniformLehmer } = await import('./datasets.js');
   const { init, triangulate } = await import('geocdt');
-  const input = dataset === 'uniform' ? { points: uniform(1_000_000) }
+  const input = dataset === 'uniform' ? { points: uniformLehmer(1_000_000) }
     : { polylines: readGpl(path) };
   const points = (input.points ?? input.polylines.coords).length / 2;
   await init();

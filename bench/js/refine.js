@@ -16,7 +16,7 @@ import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { init, triangulate, Triangulation } from 'geocdt';
 import {
-  asArrays, countryRings, indexedGraph, pointCount, readGpl, uniform,
+  countryRings, indexedGraph, pointCount, polylineArrays, readGpl, uniformLehmer,
 } from './datasets.js';
 import * as peers from './peers.js';
 import { alternate, median } from './timing.js';
@@ -35,7 +35,7 @@ const ringsFile = option('rings', null);
 // N uniform points in [0, 1000)^2 inside a square ring around them.
 function pointsInSquare(n) {
   const box = Float64Array.from([-1, -1, 1001, -1, 1001, 1001, -1, 1001, -1, -1]);
-  const points = uniform(n);
+  const points = uniformLehmer(n);
   const xy = [...box.subarray(0, 8), ...points];
   const edges = [[0, 1], [1, 2], [2, 3], [3, 0]];
   return {
@@ -48,7 +48,7 @@ function pointsInSquare(n) {
 // The polylines of a .gpl file, as one array each (the form Triangulation.insertPolyline
 // takes, and triangulate too).
 function ringsOf(file) {
-  const polylines = asArrays(readGpl(file));
+  const polylines = polylineArrays(readGpl(file));
   return { name: file, input: { polylines }, graph: indexedGraph(polylines) };
 }
 

@@ -9,7 +9,7 @@ import { init, triangulate } from 'geocdt';
 import createGeocdtModule from '../../web/dist/geocdt.mjs';
 import { createApi } from '../../web/api.js';
 import { instantiateCompiled } from '../../web/warm-up.js';
-import { countryRings, readGpl, uniform } from './datasets.js';
+import { countryRings, readGpl, uniformLehmer } from './datasets.js';
 import { alternate } from './timing.js';
 
 const args = process.argv.slice(2);
@@ -30,8 +30,10 @@ const single = createApi(async () => {
 });
 await single.init({ warmUp: false });
 
-const inputs = [{ name: '1M uniform points', input: { points: uniform(1_000_000) } }];
-if (!quick) inputs.push({ name: '4M uniform points', input: { points: uniform(4_000_000, 7) } });
+const inputs = [{ name: '1M uniform points', input: { points: uniformLehmer(1_000_000) } }];
+if (!quick) {
+  inputs.push({ name: '4M uniform points', input: { points: uniformLehmer(4_000_000, 7) } });
+}
 const rings = countryRings('10m').polylines;
 inputs.push({ name: 'Natural Earth 10m rings', input: { polylines: rings } });
 const asia = join(dataDir, 'gshhg_asia.gpl');

@@ -4,7 +4,7 @@
 //   node --expose-gc bench/js/values.js [--rounds N] [--quick]
 import { init, Triangulation } from '../../web/index.node.js';
 import { alternate } from './timing.js';
-import { uniform } from './datasets.js';
+import { uniformLehmer } from './datasets.js';
 import * as peers from './peers.js';
 
 const option = (name, fallback) => {
@@ -20,7 +20,7 @@ const ms = (x) => (x < 10 ? x.toFixed(2) : x.toFixed(0));
 await init();
 
 function surface(points) {
-  const xy = uniform(points);
+  const xy = uniformLehmer(points);
   const values = new Float64Array(points);
   for (let i = 0; i < points; i++) values[i] = Math.sin(xy[2 * i] / 50) * xy[2 * i + 1];
   const t = new Triangulation();
@@ -43,7 +43,7 @@ function table(results, reference) {
 // the grid cell's last triangle), and the same sorted into rows (a scan: walks of a step).
 {
   const { t, xy } = surface(size);
-  const random = uniform(size, 777);
+  const random = uniformLehmer(size, 777);
   const rows = new Float64Array(2 * size);
   const side = Math.round(Math.sqrt(size));
   for (let i = 0; i < size; i++) {
@@ -78,7 +78,7 @@ function table(results, reference) {
   const side = quick ? 1024 : 4096;
   console.log(`## ${side} x ${side} raster of ${n(t.triangleCount)} triangles\n`);
   const spec = { bbox: [0, 0, 1000, 1000], width: side, height: side };
-  const xy = uniform(size);
+  const xy = uniformLehmer(size);
   const reference = `delaunator, ${n(size)} points`;
   const contenders = [
     { name: reference, run: () => peers.delaunator(xy), describe: () => '' },

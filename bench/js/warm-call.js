@@ -2,7 +2,7 @@
 // comparisons of two trees (a worktree of an older commit, built) without two wasm heaps in
 // one process: run it for each tree in turn, several times.
 //   node --expose-gc bench/js/warm-call.js TREE uniform4m|rings10m [--threads N]
-import { countryRings, uniform } from './datasets.js';
+import { countryRings, uniformLehmer } from './datasets.js';
 
 const [tree, which] = process.argv.slice(2);
 const at = process.argv.indexOf('--threads');
@@ -10,7 +10,7 @@ const threads = at > 0 ? Number(process.argv[at + 1]) : 1;
 const api = await import(`${tree}/web/index.node.js`);
 await api.init({ threads });
 const input = which === 'uniform4m'
-  ? { points: uniform(4_000_000, 7) }
+  ? { points: uniformLehmer(4_000_000, 7) }
   : { polylines: countryRings('10m').polylines };
 const times = [];
 for (let i = 0; i < 4; i++) {
