@@ -55,24 +55,18 @@ fi
 # The oldest versions the project's files are written for: cmake_minimum_required in
 # CMakeLists.txt, and the Node its dev tools declare (ESLint 10 and Vite 7: ^20.19, ^22.13 or
 # 24 and later; Vite fails on Node 18, which lacks crypto.hash). The package itself runs on
-# less: "engines" in package.json.
-cmake_version=$(cmake --version | first_version)
-if ! version_at_least "$cmake_version" 3.16; then
-  echo "ensure-deps: CMake $cmake_version found; geocdt needs 3.16 or later" \
-    "(Debian 11 and Ubuntu 20.04 have one; or: pip install cmake)" >&2
+# less: "engines" in package.json. A tool missing or older stops here, with what to do.
+require_version() {  # tool, the command that prints its version, oldest version, advice
+  found=$($2 2>/dev/null | first_version) || found=""
+  [ -n "$found" ] && version_at_least "$found" "$3" && return 0
+  echo "ensure-deps: $1 ${found:-is missing}${found:+ found}; $3 or later is needed: $4" >&2
   exit 1
-fi
-if ! command -v node >/dev/null 2>&1; then
-  echo "ensure-deps: node is missing: install Node 20.19 or later, with npm" \
-    "(https://nodejs.org/en/download, or a distribution's package of that version)" >&2
-  exit 1
-fi
+}
+require_version CMake "cmake --version" 3.16 \
+  "Debian 11 and Ubuntu 20.04 have one, or pip install cmake"
+require_version Node "node --version" 20.19 "ESLint and Vite declare ^20.19, ^22.13 or 24 and \
+later; https://nodejs.org/en/download, or a distribution's package of such a version (with npm)"
 node_version=$(node --version | first_version)
-if ! version_at_least "$node_version" 20.19; then
-  echo "ensure-deps: Node $node_version found; the tests and dev tools need Node 20.19 or" \
-    "later (ESLint and Vite declare ^20.19, ^22.13 or 24 and later)" >&2
-  exit 1
-fi
 case $node_version in
   21.* | 23.* | 22.[0-9].* | 22.1[0-2].*)
     echo "ensure-deps: Node $node_version is outside what ESLint and Vite declare" \
