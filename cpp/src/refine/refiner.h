@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -211,7 +212,13 @@ class Refiner {
   void checkAround(std::int32_t t);  // the triangle and its subsegments
   void restoreDelaunay(std::vector<std::int32_t>& stack);
   Outcome splitSubsegment(std::int32_t e, bool forced);
+  // A bad triangle split at its candidate (circumcentre or off-centre), in these steps.
   Outcome splitTriangle(const BadTriangle& bad);
+  bool candidate(const BadTriangle& bad, double& cx, double& cy) const;
+  std::optional<Outcome> walkToCandidate(double cx, double cy, std::int32_t& cur, bool& onEdge);
+  bool findCavity(std::int32_t cur, double cx, double cy);
+  Outcome insertCandidate(std::int32_t cur, bool onEdge, double cx, double cy);
+  Outcome insertWithFlips(std::int32_t cur, std::uint32_t v, double cx, double cy);
   // One step of run()'s loop: a subsegment or a bad triangle split (or found gone); and up
   // to kChunk of them in a call of their own (chunks.h).
   enum class Step { Go, Stop, Failed };
