@@ -211,7 +211,27 @@ class Refiner {
   void noteCorners(std::int32_t t);
   void checkAround(std::int32_t t);  // the triangle and its subsegments
   void restoreDelaunay(std::vector<std::int32_t>& stack);
+  // A subsegment split near its middle (or on a shell), in these steps.
   Outcome splitSubsegment(std::int32_t e, bool forced);
+  // The subsegment e being split: its ends a -> b, the apexes c (of e's triangle) and dv (of
+  // its twin's), the segment s it lies on with its id (segmentOf), and what that says.
+  struct SplitSite {
+    std::int32_t e;
+    std::uint32_t a, b, c, dv;
+    InputSegment s;
+    std::uint64_t id;
+    const EdgeSource* sources = nullptr;
+    bool input;   // s is an input segment (else a hull edge)
+    bool hull;    // e is on the hull
+    bool shared;  // other input segments' chains hold e too
+  };
+  SplitSite splitSite(std::int32_t e) const;
+  void splitPoint(const SplitSite& site, double& px, double& py) const;
+  bool strictlyBetween(const SplitSite& site, const InputSegment& on, double qx, double qy) const;
+  bool fitsOthers(const SplitSite& site, double qx, double qy) const;
+  bool fitsAt(const SplitSite& site, double qx, double qy) const;
+  bool fitsOnHull(const SplitSite& site, double& px, double& py) const;
+  void insertSplitPoint(const SplitSite& site, double px, double py);
   // A bad triangle split at its candidate (circumcentre or off-centre), in these steps.
   Outcome splitTriangle(const BadTriangle& bad);
   bool candidate(const BadTriangle& bad, double& cx, double& cy) const;
