@@ -157,12 +157,34 @@ Status broken(const char* what) {
   return {StatusCode::InternalError, std::string("joining the strips: ") + what};
 }
 
-// Replaces the strips' triangles that findSeam did not keep by the seam's triangulation and
-// closes the slots up to `slots` in all.
-Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& seams,
-                  std::int32_t slots, Stats& stats) {
-  // The seam vertices, triangulated on their own: seam vertex i is vertex seamVertex[i].
-  std::vector<std::uint32_t> seamVertex;
+// The seam's own triangulation, and what joinStrips learns of it step by step.
+//
+//      strip 0 : strip 1          The strips' triangles whose circles cross a cut (:)
+//     kept  /\/:\/\  kept         or reach past a strip's hull are replaced. Their
+//          / /\:/\ \              vertices are triangulated again on their own, with the
+//      border  seam  border       borders (edges between kept and replaced triangles) as
+//                                 constraints; the part beyond the borders is dropped.
+struct Seam {
+  explicit Seam(const Options& options) : z(options) {}
+  Delaunay z;                          // the seam vertices triangulated on their own
+  std::vector<std::uint32_t> vertex;   // seam vertex i is vertex[i] of the strips
+  std::vector<std::uint8_t> dropped;   // per slot of z: on the kept triangles' side
+  std::vector<std::int32_t> borderOf;  // per half-edge of z on a border: the kept half-edge
+  std::vector<std::int32_t> holes;     // the strips' slots to refill, lowest first per strip
+  std::size_t filled = 0;              // holes taken by z's triangles
+  std::int32_t last = -1;              // a real triangle, for the next walk
+};
+
+Options seamOptions(const Options& options) {
+  Options o = options;
+  o.threads = 1;
+  o.progress = Progress();
+  return o;
+}
+
+// The seam vertices, triangulated on their own.
+Status triangulateSeam(const Delaunay& d, std::vector<StripSeam>& seams, Seam& seam) {
+  std::vector<std::uint32_t>& seamVertex = seam.vertex;
   for (StripSeam& s : seams) {
     seamVertex.insert(seamVertex.end(), s.vertices.begin(), s.vertices.end());
     std::vector<std::uint32_t>().swap(s.vertices);
@@ -173,25 +195,25 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
     coords[2 * i] = p[2 * seamVertex[i]];
     coords[2 * i + 1] = p[2 * seamVertex[i] + 1];
   }
-  Options seamOptions = options;
-  seamOptions.threads = 1;
-  seamOptions.progress = Progress();
-  Delaunay z(seamOptions);
   std::vector<std::uint32_t> zid(seamVertex.size());
-  Status s = z.insertBatch(std::move(coords), zid.data());
+  const Status s = seam.z.insertBatch(std::move(coords), zid.data());
   if (!s.ok()) return s;
-  if (z.vertexCount() != seamVertex.size()) return broken("seam vertices repeat");
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> seamOf(seamVertex.size());
-  for (std::uint32_t i = 0; i < seamVertex.size(); ++i) seamOf[i] = {seamVertex[i], i};
+  if (seam.z.vertexCount() != seamVertex.size()) return broken("seam vertices repeat");
+  return Status::success();
+}
+
+// The borders, as constraints of the seam's triangulation: then its triangles on their far
+// side are the kept triangles' region, to drop.
+Status dropKeptSide(const Delaunay& d, const std::vector<StripSeam>& seams, Seam& seam) {
+  Delaunay& z = seam.z;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> seamOf(seam.vertex.size());
+  for (std::uint32_t i = 0; i < seam.vertex.size(); ++i) seamOf[i] = {seam.vertex[i], i};
   std::sort(seamOf.begin(), seamOf.end());
   const auto local = [&](std::uint32_t v) {
     const auto it =
         std::lower_bound(seamOf.begin(), seamOf.end(), std::make_pair(v, std::uint32_t{0}));
     return it != seamOf.end() && it->first == v ? it->second : kGhost;
   };
-
-  // The borders, as constraints of the seam's triangulation: then its triangles on their far
-  // side are the kept triangles' region, to drop.
   const std::uint32_t* tri = d.topo.tri.data();
   VertexEdges ends;
   ends.build(z);
@@ -201,21 +223,22 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
     std::int32_t kept;   // its half-edge in the kept triangle
   };
   std::vector<Border> borders;
-  for (const StripSeam& seam : seams)
-    for (const std::int32_t e : seam.borders) {
+  for (const StripSeam& strip : seams)
+    for (const std::int32_t e : strip.borders) {
       const std::uint32_t u = local(tri[e]), v = local(tri[nextEdge(e)]);
       if (u == kGhost || v == kGhost) return broken("a border's end is not a seam vertex");
       borders.push_back({u, v, e});
       if (inserter.insert(u, v, EdgeSource{}) != Outcome::Inserted) return inserter.error();
     }
   const Topology& zt = z.topo;
-  std::vector<std::uint8_t> dropped(static_cast<std::size_t>(zt.slotCount()), 0);
-  std::vector<std::int32_t> borderOf(zt.tri.size(), -1);  // seam half-edge -> kept half-edge
+  std::vector<std::uint8_t>& dropped = seam.dropped;
+  dropped.assign(static_cast<std::size_t>(zt.slotCount()), 0);
+  seam.borderOf.assign(zt.tri.size(), -1);
   std::vector<std::int32_t> stack;
   for (const Border& b : borders) {
     const std::int32_t h = zt.edgeAround(ends.find(z, b.u), b.v);
     if (h < 0 || !zt.fixed[h]) return broken("a border is missing from the seam");
-    borderOf[h] = b.kept;
+    seam.borderOf[h] = b.kept;
     if (!dropped[h / 3]) {
       dropped[h / 3] = 1;
       stack.push_back(h / 3);
@@ -231,53 +254,58 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
       stack.push_back(zt.adj[e] / 3);
     }
   }
+  return Status::success();
+}
 
-  // The seam's other triangles fill the holes, lowest slots first.
-  std::vector<std::int32_t> holes;
-  for (StripSeam& seam : seams) {
-    holes.insert(holes.end(), seam.holes.begin(), seam.holes.end());
-    std::vector<std::int32_t>().swap(seam.holes);
+// The seam's other triangles fill the holes, lowest slots first, joined to each other and to
+// the kept triangles across the borders.
+Status fillHoles(Delaunay& d, std::vector<StripSeam>& seams, Seam& seam) {
+  const Topology& zt = seam.z.topo;
+  std::vector<std::int32_t>& holes = seam.holes;
+  for (StripSeam& strip : seams) {
+    holes.insert(holes.end(), strip.holes.begin(), strip.holes.end());
+    std::vector<std::int32_t>().swap(strip.holes);
   }
   std::vector<std::int32_t> slotOf(static_cast<std::size_t>(zt.slotCount()), -1);
-  std::size_t filled = 0;
   for (std::int32_t t = 0; t < zt.slotCount(); ++t) {
-    if (dropped[t]) continue;
-    if (filled == holes.size()) return broken("more seam triangles than holes");
-    slotOf[t] = holes[filled++];
+    if (seam.dropped[t]) continue;
+    if (seam.filled == holes.size()) return broken("more seam triangles than holes");
+    slotOf[t] = holes[seam.filled++];
   }
   Topology& topo = d.topo;
-  std::int32_t last = -1;
   for (std::int32_t t = 0; t < zt.slotCount(); ++t) {
-    if (dropped[t]) continue;
+    if (seam.dropped[t]) continue;
     const std::int32_t g = slotOf[t];
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t v = zt.tri[3 * t + k];
-      topo.tri[3 * g + k] = v == kGhost ? kGhost : seamVertex[v];
+      topo.tri[3 * g + k] = v == kGhost ? kGhost : seam.vertex[v];
       topo.fixed[3 * g + k] = 0;
       const std::int32_t twin = zt.adj[3 * t + k];
       std::int32_t to;
-      if (!dropped[twin / 3]) {
+      if (!seam.dropped[twin / 3]) {
         to = 3 * slotOf[twin / 3] + twin % 3;
       } else {
-        to = borderOf[twin];
+        to = seam.borderOf[twin];
         if (to < 0) return broken("a seam triangle meets a dropped one off the borders");
         topo.adj[to] = 3 * g + k;
       }
       topo.adj[3 * g + k] = to;
     }
-    if (last < 0 && !zt.isGhost(t)) last = g;
+    if (seam.last < 0 && !zt.isGhost(t)) seam.last = g;
   }
-  stats.flips += z.stats.flips;
-  stats.walkSteps += z.stats.walkSteps;
-  stats.locates += z.stats.locates;
+  return Status::success();
+}
 
-  // Holes left below the final count take the triangles above it.
+// Holes left below the final count of `slots` take the triangles above it.
+Status closeHoles(Delaunay& d, std::int32_t slots, Seam& seam) {
+  Topology& topo = d.topo;
+  const std::vector<std::int32_t>& holes = seam.holes;
   std::int32_t from = static_cast<std::int32_t>(topo.slotCount()) - 1;
   std::vector<std::uint8_t> isHole;  // for the slots at and above `slots` only
   isHole.assign(static_cast<std::size_t>(topo.slotCount() - slots), 0);
-  for (std::size_t i = filled; i < holes.size(); ++i)
+  for (std::size_t i = seam.filled; i < holes.size(); ++i)
     if (holes[i] >= slots) isHole[holes[i] - slots] = 1;
-  for (std::size_t i = filled; i < holes.size() && holes[i] < slots; ++i) {
+  for (std::size_t i = seam.filled; i < holes.size() && holes[i] < slots; ++i) {
     while (from >= slots && isHole[from - slots]) --from;
     if (from < slots) return broken("too few triangles to close the holes");
     const std::int32_t to = holes[i];
@@ -288,11 +316,28 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
       topo.adj[3 * to + k] = twin;
       topo.adj[twin] = 3 * to + k;
     }
-    if (last == from) last = to;
+    if (seam.last == from) seam.last = to;
     --from;
   }
   topo.resizeSlots(static_cast<std::size_t>(slots));
-  d.setLastTriangle(last >= 0 ? last : 0);
+  return Status::success();
+}
+
+// Replaces the strips' triangles that findSeam did not keep by the seam's triangulation and
+// closes the slots up to `slots` in all.
+Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& seams,
+                  std::int32_t slots, Stats& stats) {
+  Seam seam(seamOptions(options));
+  Status s = triangulateSeam(d, seams, seam);
+  if (s.ok()) s = dropKeptSide(d, seams, seam);
+  if (s.ok()) s = fillHoles(d, seams, seam);
+  if (!s.ok()) return s;
+  stats.flips += seam.z.stats.flips;
+  stats.walkSteps += seam.z.stats.walkSteps;
+  stats.locates += seam.z.stats.locates;
+  s = closeHoles(d, slots, seam);
+  if (!s.ok()) return s;
+  d.setLastTriangle(seam.last >= 0 ? seam.last : 0);
   return Status::success();
 }
 
