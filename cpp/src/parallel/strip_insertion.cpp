@@ -341,6 +341,124 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
   return Status::success();
 }
 
+// The strips of a batch: where they are cut, their points, boxes and slots.
+struct Strips {
+  std::uint32_t k = 0;
+  std::vector<double> cuts;                       // stripCuts'
+  std::vector<std::vector<std::uint32_t>> order;  // strip s's points in insertion order
+  std::vector<Bounds> box;
+  std::vector<std::int32_t> first;  // strip s has the slots [first[s], first[s + 1])
+
+  std::pair<double, double> slab(std::uint32_t s) const {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {s == 0 ? -inf : cuts[s - 1], s + 1 == k ? inf : cuts[s]};
+  }
+};
+
+// Each strip gathers its points from all of them (a pass over x per thread costs less than a
+// pass that hands them out) and puts them in insertion order. False when a strip has too
+// few points to pay for itself.
+bool gatherStrips(const double* p, std::uint32_t count, InsertionOrder order, Strips& strips) {
+  const std::uint32_t k = strips.k;
+  strips.order.assign(k, {});
+  strips.box.assign(k, {});
+  const double inf = std::numeric_limits<double>::infinity();
+  inParallel(k, [&](std::uint32_t s) {
+    const double lo = strips.slab(s).first, hi = strips.slab(s).second;
+    std::vector<std::uint32_t> mine;
+    mine.reserve(count / k + count / 32);
+    Bounds b{inf, inf, -inf, -inf};
+    forChunks(0, count, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const double x = p[2 * i];
+        if (x < lo || x >= hi) continue;
+        const double y = p[2 * i + 1];
+        mine.push_back(static_cast<std::uint32_t>(i));
+        b.minX = std::min(b.minX, x);
+        b.maxX = std::max(b.maxX, x);
+        b.minY = std::min(b.minY, y);
+        b.maxY = std::max(b.maxY, y);
+      }
+    });
+    strips.box[s] = b;
+    if (mine.size() < kMinStripPoints / 2) return;  // too few: checked below
+    strips.order[s] =
+        insertionOrder(p, mine.data(), static_cast<std::uint32_t>(mine.size()), order);
+  });
+  for (std::uint32_t s = 0; s < k; ++s)
+    if (strips.order[s].size() < kMinStripPoints / 2) return false;
+  return true;
+}
+
+// Each strip's slots: two a point are enough (a strip of n points uses 2n - 2). The arrays
+// are sized side by side: most of their cost is the first touch of fresh memory, which one
+// thread would pay alone (1.3 ms per million slots).
+void allocateStripSlots(Topology& topo, Strips& strips, std::uint32_t* ids, std::uint32_t count) {
+  const std::uint32_t k = strips.k;
+  strips.first.assign(k + 1, 0);
+  for (std::uint32_t s = 0; s < k; ++s)
+    strips.first[s + 1] = strips.first[s] + 2 * static_cast<std::int32_t>(strips.order[s].size());
+  const std::uint32_t jobs = std::min(k, 3u);
+  const std::size_t halfEdges = 3 * static_cast<std::size_t>(strips.first[k]);
+  inParallel(jobs, [&](std::uint32_t job) {
+    if (job == 0) topo.tri.resize(halfEdges);
+    if (job == 1) topo.adj.resize(halfEdges);
+    if (job == (jobs == 3 ? 2 : 0)) {  // the lighter arrays, with a job of their own if any
+      topo.fixed.resize(halfEdges);
+      std::fill(ids, ids + count, kGhost);
+    }
+  });
+}
+
+// What one strip's thread left: its status, the slots it used, one of its ghost triangles
+// (where its share of the seam is looked for) and its counters.
+struct StripRun {
+  Status status;
+  std::int32_t used = 0;
+  std::int32_t ghost = -1;
+  Stats stats;
+};
+
+// Triangulates each strip on a thread of its own into d's slots; returns the threads that ran.
+std::uint32_t triangulateStrips(Delaunay& d, const Strips& strips, std::uint32_t* ids,
+                                std::vector<StripRun>& runs) {
+  Options workerOptions = d.options();
+  workerOptions.threads = 1;
+  workerOptions.progress = Progress();  // the caller's callback is not for other threads
+  runs.assign(strips.k, {});
+  return inParallel(strips.k, [&](std::uint32_t s) {
+    Delaunay worker(workerOptions, d, strips.first[s]);
+    StripRun& run = runs[s];
+    const std::vector<std::uint32_t>& order = strips.order[s];
+    run.status = worker.insertStrip(order.data(), static_cast<std::uint32_t>(order.size()), ids);
+    run.used = worker.usedSlots();
+    // A point right of the strip's box lies beyond one of its hull edges: a ghost triangle.
+    const Bounds& box = strips.box[s];
+    const double far = box.maxX + std::fabs(box.maxX) + 1;
+    const Hit h = worker.locate(far, box.minY, false);
+    if (h.kind == Hit::Kind::Outside) run.ghost = h.edge / 3;
+    run.stats = worker.stats;
+  });
+}
+
+// Each strip's share of the seam, found side by side, then the join.
+Status joinAlongSeams(Delaunay& d, const Strips& strips, const std::vector<StripRun>& runs,
+                      std::uint32_t count, Stats& stats) {
+  const std::uint32_t k = strips.k;
+  std::vector<std::uint8_t> state(static_cast<std::size_t>(strips.first[k]));
+  std::vector<std::uint8_t> seen(count, 0);
+  std::vector<StripSeam> seams(k);
+  inParallel(k, [&](std::uint32_t s) {
+    findSeam(d, runs[s].ghost, strips.first[s], runs[s].used, strips.first[s + 1],
+             strips.slab(s).first, strips.slab(s).second, state, seen, seams[s]);
+  });
+  std::vector<std::uint8_t>().swap(seen);
+  std::vector<std::uint8_t>().swap(state);
+  const std::uint64_t vertices = stats.inserted;
+  const auto slots = static_cast<std::int32_t>(2 * vertices - 2);
+  return joinStrips(d, d.options(), seams, slots, stats);
+}
+
 }  // namespace
 
 Status Delaunay::insertStrip(const std::uint32_t* order, std::uint32_t count, std::uint32_t* ids) {
@@ -363,110 +481,37 @@ Status Delaunay::insertStrip(const std::uint32_t* order, std::uint32_t count, st
 
 Status Delaunay::insertInStrips(std::uint32_t count, std::uint32_t* ids, bool& handled) {
   handled = false;
-  const std::uint32_t k = std::min(options_.threads, count / kMinStripPoints);
-  const double* p = xy.data();
-  const std::vector<double> cuts = stripCuts(p, count, k);
-  if (cuts.empty()) return Status::success();
-  // Each strip gathers its points from all of them (a pass over x per thread costs less than
-  // a pass that hands them out) and puts them in insertion order.
-  std::vector<std::vector<std::uint32_t>> strip(k);
-  std::vector<Bounds> box(k);
-  const double inf = std::numeric_limits<double>::infinity();
-  const auto slab = [&](std::uint32_t s) {
-    return std::make_pair(s == 0 ? -inf : cuts[s - 1], s + 1 == k ? inf : cuts[s]);
-  };
+  Strips strips;
+  strips.k = std::min(options_.threads, count / kMinStripPoints);
+  strips.cuts = stripCuts(xy.data(), count, strips.k);
+  if (strips.cuts.empty()) return Status::success();
   options_.progress(Phase::Sort, 0, count);
-  inParallel(k, [&](std::uint32_t s) {
-    const double lo = slab(s).first, hi = slab(s).second;
-    std::vector<std::uint32_t> mine;
-    mine.reserve(count / k + count / 32);
-    Bounds b{inf, inf, -inf, -inf};
-    forChunks(0, count, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        const double x = p[2 * i];
-        if (x < lo || x >= hi) continue;
-        const double y = p[2 * i + 1];
-        mine.push_back(static_cast<std::uint32_t>(i));
-        b.minX = std::min(b.minX, x);
-        b.maxX = std::max(b.maxX, x);
-        b.minY = std::min(b.minY, y);
-        b.maxY = std::max(b.maxY, y);
-      }
-    });
-    box[s] = b;
-    if (mine.size() < kMinStripPoints / 2) return;  // too few: checked below
-    strip[s] =
-        insertionOrder(p, mine.data(), static_cast<std::uint32_t>(mine.size()), options_.order);
-  });
+  const bool gathered = gatherStrips(xy.data(), count, options_.order, strips);
   options_.progress(Phase::Sort, count, count);
-  for (std::uint32_t s = 0; s < k; ++s)
-    if (strip[s].size() < kMinStripPoints / 2) return Status::success();
-
-  // Each strip's slots: two a point are enough (a strip of n points uses 2n - 2).
-  std::vector<std::int32_t> first(k + 1, 0);
-  for (std::uint32_t s = 0; s < k; ++s)
-    first[s + 1] = first[s] + 2 * static_cast<std::int32_t>(strip[s].size());
-  // The arrays side by side: most of their cost is the first touch of fresh memory, which one
-  // thread would pay alone (1.3 ms per million slots).
-  const std::uint32_t jobs = std::min(k, 3u);
-  const std::size_t halfEdges = 3 * static_cast<std::size_t>(first[k]);
-  inParallel(jobs, [&](std::uint32_t job) {
-    if (job == 0) topo.tri.resize(halfEdges);
-    if (job == 1) topo.adj.resize(halfEdges);
-    if (job == (jobs == 3 ? 2 : 0)) {  // the lighter arrays, with a job of their own if any
-      topo.fixed.resize(halfEdges);
-      std::fill(ids, ids + count, kGhost);
-    }
-  });
+  if (!gathered) return Status::success();
+  allocateStripSlots(topo, strips, ids, count);
   options_.progress(Phase::Points, 0, count);
-  Options workerOptions = options_;
-  workerOptions.threads = 1;
-  workerOptions.progress = Progress();  // the caller's callback is not for other threads
-  std::vector<Status> status(k);
-  std::vector<std::int32_t> used(k), ghost(k, -1);
-  std::vector<Stats> workerStats(k);
-  const std::uint32_t running = inParallel(k, [&](std::uint32_t s) {
-    Delaunay worker(workerOptions, *this, first[s]);
-    status[s] =
-        worker.insertStrip(strip[s].data(), static_cast<std::uint32_t>(strip[s].size()), ids);
-    used[s] = worker.usedSlots();
-    // A point right of the strip's box lies beyond one of its hull edges: a ghost triangle.
-    const double far = box[s].maxX + std::fabs(box[s].maxX) + 1;
-    const Hit h = worker.locate(far, box[s].minY, false);
-    if (h.kind == Hit::Kind::Outside) ghost[s] = h.edge / 3;
-    workerStats[s] = worker.stats;
-  });
-  for (const Status& s : status) {
-    if (s.ok()) continue;
-    if (s.code == StatusCode::InternalError) return s;
+  std::vector<StripRun> runs;
+  const std::uint32_t running = triangulateStrips(*this, strips, ids, runs);
+  for (const StripRun& run : runs) {
+    if (run.status.ok()) continue;
+    if (run.status.code == StatusCode::InternalError) return run.status;
     topo.clear();  // a strip of collinear points: one thread does it all
     return Status::success();
   }
-  for (std::vector<std::uint32_t>& s : strip) std::vector<std::uint32_t>().swap(s);
-  for (const std::int32_t g : ghost)
-    if (g < 0) return broken("no ghost triangle found right of a strip");
+  for (std::vector<std::uint32_t>& s : strips.order) std::vector<std::uint32_t>().swap(s);
+  for (const StripRun& run : runs)
+    if (run.ghost < 0) return broken("no ghost triangle found right of a strip");
   handled = true;
-  for (const Stats& w : workerStats) {
-    stats.inserted += w.inserted;
-    stats.duplicates += w.duplicates;
-    stats.walkSteps += w.walkSteps;
-    stats.locates += w.locates;
-    stats.flips += w.flips;
-    stats.walkFallbacks += w.walkFallbacks;
+  for (const StripRun& run : runs) {
+    stats.inserted += run.stats.inserted;
+    stats.duplicates += run.stats.duplicates;
+    stats.walkSteps += run.stats.walkSteps;
+    stats.locates += run.stats.locates;
+    stats.flips += run.stats.flips;
+    stats.walkFallbacks += run.stats.walkFallbacks;
   }
-
-  std::vector<std::uint8_t> state(static_cast<std::size_t>(first[k]));
-  std::vector<std::uint8_t> seen(count, 0);
-  std::vector<StripSeam> seams(k);
-  inParallel(k, [&](std::uint32_t s) {
-    findSeam(*this, ghost[s], first[s], used[s], first[s + 1], slab(s).first, slab(s).second, state,
-             seen, seams[s]);
-  });
-  std::vector<std::uint8_t>().swap(seen);
-  std::vector<std::uint8_t>().swap(state);
-  const std::uint64_t vertices = stats.inserted;
-  const auto slots = static_cast<std::int32_t>(2 * vertices - 2);
-  const Status joined = joinStrips(*this, options_, seams, slots, stats);
+  const Status joined = joinAlongSeams(*this, strips, runs, count, stats);
   if (!joined.ok()) return joined;
   built_ = true;
   stats.threads = running;
@@ -477,8 +522,8 @@ Status Delaunay::insertInStrips(std::uint32_t count, std::uint32_t* ids, bool& h
   } else {
     for (std::uint32_t i = 0; i < count; ++i) ids[i] = i;
   }
-  Bounds all = box[0];
-  for (const Bounds& b : box) {
+  Bounds all = strips.box[0];
+  for (const Bounds& b : strips.box) {
     all.minX = std::min(all.minX, b.minX);
     all.minY = std::min(all.minY, b.minY);
     all.maxX = std::max(all.maxX, b.maxX);
