@@ -2,10 +2,10 @@
 // segments one by one through the SegmentInserter.
 #include <algorithm>
 #include <cmath>
-#include <new>
 #include <string>
 
 #include "base/chunks.h"
+#include "base/out_of_memory.h"
 #include "constraints/chain_check.h"
 #include "constraints/present_segments.h"
 #include "constraints/segment_inserter.h"
@@ -313,41 +313,37 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
   const Status checked = checkPolylines(polylines, count, total);
   if (!checked.ok()) return checked;
   Delaunay& d = state_->delaunay;
-  try {
-    std::vector<std::uint32_t> scratch;
-    std::uint32_t* ids = vertexIds;
-    if (ids == nullptr) {
-      scratch.resize(total);
-      ids = scratch.data();
-    }
-    const std::uint32_t firstNew = d.vertexCount();
-    // All points first, in one spatially sorted batch.
-    Status s;
-    if (adopt) {
-      s = insertCheckedPoints(adopt->data(), total, ids, values, adopt);
-    } else if (count == 1) {
-      s = insertCheckedPoints(polylines[0].xy, polylines[0].count, ids, values);
-    } else {
-      std::vector<double> all;
-      all.reserve(2 * total);
-      for (std::size_t i = 0; i < count; ++i)
-        all.insert(all.end(), polylines[i].xy, polylines[i].xy + 2 * polylines[i].count);
-      s = insertCheckedPoints(all.data(), total, ids, values);
-    }
-    if (!s.ok()) return s;
-    state_->values.recordPolylinePoints(ids, total);
-    state_->changed();
-    // Then their segments.
-    reserveStore(d.constraints, total, count, d.vertexCount());
-    s = BatchSegments(d, state_->options, total, firstNew).insert(polylines, count, ids);
-    if (!s.ok()) return s;
-  } catch (const std::bad_alloc&) {
-    d.clear();
-    state_->values.clear();
-    state_->changed();
-    return {StatusCode::OutOfMemory,
-            "out of memory: the input is too large for the available memory"};
-  }
+  const Status s = catchOutOfMemory(
+      [&] {
+        std::vector<std::uint32_t> scratch;
+        std::uint32_t* ids = vertexIds;
+        if (ids == nullptr) {
+          scratch.resize(total);
+          ids = scratch.data();
+        }
+        const std::uint32_t firstNew = d.vertexCount();
+        // All points first, in one spatially sorted batch.
+        Status inserted;
+        if (adopt) {
+          inserted = insertCheckedPoints(adopt->data(), total, ids, values, adopt);
+        } else if (count == 1) {
+          inserted = insertCheckedPoints(polylines[0].xy, polylines[0].count, ids, values);
+        } else {
+          std::vector<double> all;
+          all.reserve(2 * total);
+          for (std::size_t i = 0; i < count; ++i)
+            all.insert(all.end(), polylines[i].xy, polylines[i].xy + 2 * polylines[i].count);
+          inserted = insertCheckedPoints(all.data(), total, ids, values);
+        }
+        if (!inserted.ok()) return inserted;
+        state_->values.recordPolylinePoints(ids, total);
+        state_->changed();
+        // Then their segments.
+        reserveStore(d.constraints, total, count, d.vertexCount());
+        return BatchSegments(d, state_->options, total, firstNew).insert(polylines, count, ids);
+      },
+      [&] { state_->clear(); });
+  if (!s.ok()) return s;
   return insertPendingSegments(d, state_->options);
 }
 

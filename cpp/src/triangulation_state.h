@@ -25,6 +25,12 @@ struct Triangulation::State {
     slotMapValid = false;
     windings.clear();
   }
+  // Empty again: after release(), and after running out of memory midway through a change.
+  void clear() {
+    delaunay.clear();
+    values.clear();
+    changed();
+  }
 };
 
 // Builds the caller's arrays from the internal slots: ghost triangles dropped. With
