@@ -392,7 +392,7 @@ bool gatherStrips(const double* p, std::uint32_t count, InsertionOrder order, St
 
 // Each strip's slots: two a point are enough (a strip of n points uses 2n - 2). The arrays
 // are sized side by side: most of their cost is the first touch of fresh memory, which one
-// thread would pay alone (1.3 ms per million slots).
+// thread would pay alone (bench/EXPERIMENTS.md, T1).
 void allocateStripSlots(Topology& topo, Strips& strips, std::uint32_t* ids, std::uint32_t count) {
   const std::uint32_t k = strips.k;
   strips.first.assign(k + 1, 0);

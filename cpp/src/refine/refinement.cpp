@@ -498,8 +498,7 @@ Status Refiner::run() {
     hull_.push_back({x(a), y(a), x(b), y(b)});
   }
   // The scan and the loop's steps in chunks (chunks.h): run() is called once, and with both
-  // inlined it was 18 KB of wasm that a first call ran in its baseline code throughout
-  // (bench/EXPERIMENTS.md, first call 21).
+  // inlined a first call ran it in baseline code throughout (bench/EXPERIMENTS.md, F21).
   forChunks(
       0, static_cast<std::size_t>(topo_.slotCount()), [&](std::size_t begin, std::size_t end) {
         for (auto t = static_cast<std::int32_t>(begin); t < static_cast<std::int32_t>(end); ++t) {

@@ -50,13 +50,11 @@ struct BadTriangle {
 
 // Bad triangles in buckets. First those with a corner on a subsegment, worst angle first
 // (buckets of sin^2 of the smallest angle, then those bad for their area alone): near small
-// input angles that is the order that ends. Then the rest, shortest shortest side first, in
-// buckets of half powers of two of its length, as Triangle orders them all: it places fewer
-// Steiner points (20,000 uniform points at 30 degrees: 7.6% fewer than worst angle first).
-// Triangle's order everywhere ran away on Natural Earth at 25 to 30 degrees (bench/
-// EXPERIMENTS.md, Refinement 6). The last queued comes first within a bucket, which keeps
-// to the neighbourhood just refined. A heap of them all spent most of its time missing the
-// cache.
+// input angles that is the order that ends. Then the rest, shortest side first, in buckets
+// of half powers of two of its length, as Triangle orders them all: it places fewer Steiner
+// points than worst angle first (bench/EXPERIMENTS.md, R7), but everywhere it ran away on
+// country borders (R6). The last queued comes first within a bucket, which keeps to the
+// neighbourhood just refined. A heap of them all spent most of its time missing the cache.
 class BadQueue {
  public:
   static constexpr int kAngleBuckets = 2048, kLengthBuckets = 4096;
@@ -90,7 +88,7 @@ class BadQueue {
     size_ = 0;
   }
   // The first bucket that is not empty, found in the bits of the occupied ones: walking the
-  // empty buckets one by one was 8% of refinement on US counties at 30 degrees.
+  // empty buckets one by one cost refinement dearly (bench/EXPERIMENTS.md, R18).
   BadTriangle pop() {
     std::size_t word = first_ / 64;
     std::uint64_t bits = occupied_[word] & (~std::uint64_t{0} << (first_ % 64));
@@ -192,7 +190,7 @@ class Refiner {
     if (encroached(e)) queueSubsegment(e, false);
   }
   // Of a real triangle. Inlined: in wasm, a returned Shape goes through the stack in memory
-  // (6.8% of refinement's time on 20k uniform points in checkTriangle around the call).
+  // (bench/EXPERIMENTS.md, R15).
   GEOCDT_ALWAYS_INLINE Shape shape(std::int32_t t) const;
   bool holds(const BadTriangle& b) const {  // whether b's slot still holds it
     const std::uint32_t* corner = &topo_.tri[3 * b.slot];
