@@ -5,7 +5,7 @@
 // stays usable.
 #include <utility>
 
-#include "base/out_of_memory.h"
+#include "out_of_memory.h"
 #include "output.h"
 
 namespace geocdt::wasm {

@@ -1,7 +1,7 @@
 #include "input.h"
 
-#include "base/out_of_memory.h"
 #include "heap_reserve.h"
+#include "out_of_memory.h"
 
 namespace geocdt::wasm {
 

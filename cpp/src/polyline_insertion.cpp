@@ -5,7 +5,6 @@
 #include <string>
 
 #include "base/chunks.h"
-#include "base/out_of_memory.h"
 #include "constraints/chain_check.h"
 #include "constraints/present_segments.h"
 #include "constraints/segment_inserter.h"
@@ -13,6 +12,7 @@
 #include "delaunay/vertex_edges.h"
 #include "geocdt/triangulation.h"
 #include "invalid_coordinate.h"
+#include "out_of_memory.h"
 #include "triangulation_state.h"
 
 namespace geocdt {

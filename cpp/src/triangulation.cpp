@@ -6,8 +6,8 @@
 #include <string>
 
 #include "base/in_parallel.h"
-#include "base/out_of_memory.h"
 #include "invalid_coordinate.h"
+#include "out_of_memory.h"
 #include "refine/refinement.h"
 #include "triangulation_state.h"
 #include "values/interpolation.h"

@@ -1,5 +1,6 @@
 #pragma once
-// What a Triangulation holds: the Delaunay engine and the constraints inserted into it.
+// What a Triangulation holds: the Delaunay engine (with the constraints inserted into it), the
+// values carried by the vertices, and what the export may reuse.
 #include <cstdint>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Values carried by the vertices: those the input points gave, and those derived for vertices
-// no input point became (constraint crossings; later, Steiner points), as weighted sums of
+// no input point became (constraint crossings, Steiner points), as weighted sums of
 // their parents' values.
 #include <cstddef>
 #include <cstdint>
