@@ -242,7 +242,7 @@ void Refiner::weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], dou
 //
 // False when the triangle is left as it is: skinny between two subsegments at a small input
 // angle, or a candidate out of range.
-bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy) const {
+inline bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy) const {
   const bool skinny = bad.skinny;
   // The shortest edge p -> q, the third corner r on its left.
   std::uint32_t corner[3] = {bad.a, bad.b, bad.c};
@@ -278,8 +278,8 @@ bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy) const {
 // Walks from slot cur towards the candidate; a subsegment in the way is split if the candidate
 // encroaches it (the triangle is then tried again), else the triangle is left. Nothing when
 // the walk arrives: cur then holds the candidate, on one of its edges if onEdge.
-std::optional<Outcome> Refiner::walkToCandidate(double cx, double cy, std::int32_t& cur,
-                                                bool& onEdge) {
+inline std::optional<Outcome> Refiner::walkToCandidate(double cx, double cy, std::int32_t& cur,
+                                                       bool& onEdge) {
   // Each step starts one edge further round (step % 3), so that the walk cannot cycle.
   for (int step = 0, first = 0;; ++step, first = first == 2 ? 0 : first + 1) {
     if (step > 100000) return Outcome::Skipped;
@@ -314,7 +314,7 @@ std::optional<Outcome> Refiner::walkToCandidate(double cx, double cy, std::int32
 // subsegments. A subsegment on its border that the candidate encroaches is queued to be split
 // instead; true when one was. Whether a slot is in the cavity is looked up in the list while
 // that is short (a few triangles, in the cache), in stamps beyond.
-bool Refiner::findCavity(std::int32_t cur, double cx, double cy) {
+inline bool Refiner::findCavity(std::int32_t cur, double cx, double cy) {
   cavity_.assign(1, cur);
   boundary_.clear();
   bool stamping = false;
@@ -373,7 +373,7 @@ bool Refiner::findCavity(std::int32_t cur, double cx, double cy) {
 // cavity's border joined to the point is its insertion; on an edge, or where the border does
 // not make a star, the point is located and inserted with flips (which repeat the cavity's
 // in-circle tests).
-Outcome Refiner::insertCandidate(std::int32_t cur, bool onEdge, double cx, double cy) {
+inline Outcome Refiner::insertCandidate(std::int32_t cur, bool onEdge, double cx, double cy) {
   if (capReached()) {
     capped_ = true;
     return Outcome::Done;

@@ -87,9 +87,9 @@ std::vector<std::uint64_t> VertexValues::segmentsThroughDerived(const Delaunay& 
 // Vertex v's parents along the input segments through it, pairs[next ..) while they are v's
 // (next moves past them): each segment's ends, weighted by v's projection on it, the segments
 // averaged. False when no segment has ends with values to give.
-bool VertexValues::deriveAlongSegments(const Delaunay& d, std::uint32_t v,
-                                       const std::vector<std::uint64_t>& pairs, std::size_t& next,
-                                       Derivations& out) {
+inline bool VertexValues::deriveAlongSegments(const Delaunay& d, std::uint32_t v,
+                                              const std::vector<std::uint64_t>& pairs,
+                                              std::size_t& next, Derivations& out) {
   const std::size_t k = perPoint_;
   const double* p = d.xy.data();
   const std::size_t from = out.parents.size();
@@ -133,7 +133,7 @@ bool VertexValues::deriveAlongSegments(const Delaunay& d, std::uint32_t v,
 }
 
 // Vertex v's values: its parents' from out.parents[from ..), weighted.
-void VertexValues::evaluate(std::uint32_t v, const Derivations& out, std::size_t from) {
+inline void VertexValues::evaluate(std::uint32_t v, const Derivations& out, std::size_t from) {
   const std::size_t k = perPoint_;
   double* to = values_.data() + v * k;
   for (std::size_t j = 0; j < k; ++j) to[j] = 0;
