@@ -24,7 +24,7 @@ function enumNames(embindEnum) {
 // Float64Array over the memory); the core judges them (a NaN coordinate is refused, a NaN
 // value means none). A typed array goes in with one set(); a plain array is checked for
 // numbers as it is copied (set() would turn null into 0 and '1' into 1), which once warm
-// costs what set() does: 4.1 against 4.7 ms for 2M numbers.
+// costs about what set() does (bench/EXPERIMENTS.md, L2).
 function copyNumbers(heap, at, values, name) {
   if (isNumericTypedArray(values)) {
     heap.set(values, at);
