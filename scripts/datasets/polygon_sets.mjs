@@ -1,6 +1,11 @@
-// Polygon batches in GeoArrow's layout, for triangulatePolygons() and its peers: the real-world
-// vector tiles of @mapbox/mvt-fixtures, the Natural Earth 10m countries (world-atlas) each
-// polygon alone, and boundaries cut into tiles by geojson-vt. Each set is
+#!/usr/bin/env node
+// Polygon batches in GeoArrow's layout, for triangulatePolygons(), its tests, its benchmark
+// and its demo: the real-world vector tiles of @mapbox/mvt-fixtures, the Natural Earth 10m
+// countries (world-atlas) each polygon alone, and those countries cut into tiles by
+// geojson-vt. Run as a script, it writes each set as .gpl rings and .gpg polygons (the files of
+// tests/cpp/support/polyline_file.h) for the native tests:
+//   node scripts/datasets/polygon_sets.mjs [output folder, default build/data]
+// Each set is
 //   { name, coords, ringOffsets, polygonOffsets, tileOffsets? }
 // with coords x, y interleaved (an Int32Array for the mvt-fixtures tiles, whose integers reach
 // 2^20 in the OSM QA tiles; an Int16Array for geojson-vt's; else a Float64Array), ring r the
@@ -211,6 +216,30 @@ const TYPES = { Int16Array, Int32Array, Float64Array };
 
 const defaultCache = fileURLToPath(new URL('../../build/data', import.meta.url));
 
+// Writes a set as polygons_<name>.gpl (its rings as float64 polylines) and .gpg (rings per
+// polygon).
+export function writeSetFiles(set, name, outDir) {
+  const { coords, ringOffsets, polygonOffsets } = set;
+  const rings = ringOffsets.length - 1, points = coords.length / 2;
+  const gpl = new DataView(new ArrayBuffer(8 + 4 * rings + 16 * points));
+  [0x47, 0x50, 0x4c, 0x31].forEach((byte, i) => gpl.setUint8(i, byte));
+  gpl.setUint32(4, rings, true);
+  for (let r = 0; r < rings; r++) {
+    gpl.setUint32(8 + 4 * r, ringOffsets[r + 1] - ringOffsets[r], true);
+  }
+  const at = 8 + 4 * rings;
+  for (let i = 0; i < 2 * points; i++) gpl.setFloat64(at + 8 * i, coords[i], true);
+  writeFileSync(join(outDir, `polygons_${name}.gpl`), new Uint8Array(gpl.buffer));
+  const polygons = polygonOffsets.length - 1;
+  const gpg = new DataView(new ArrayBuffer(8 + 4 * polygons));
+  [0x47, 0x50, 0x47, 0x31].forEach((byte, i) => gpg.setUint8(i, byte));
+  gpg.setUint32(4, polygons, true);
+  for (let p = 0; p < polygons; p++) {
+    gpg.setUint32(8 + 4 * p, polygonOffsets[p + 1] - polygonOffsets[p], true);
+  }
+  writeFileSync(join(outDir, `polygons_${name}.gpg`), new Uint8Array(gpg.buffer));
+}
+
 export function loadSet(name, cacheDir = defaultCache) {
   const file = join(cacheDir, `polygons-${name}.json`);
   const binary = file.replace(/\.json$/, '.bin');
@@ -236,4 +265,12 @@ export function loadSet(name, cacheDir = defaultCache) {
     arrays: keys.map((key) => ({ key, type: set[key].constructor.name, length: set[key].length })),
   }));
   return set;
+}
+
+if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
+  const outDir = process.argv[2] ?? defaultCache;
+  mkdirSync(outDir, { recursive: true });
+  for (const name of ['tiles', 'geojson-vt']) {
+    writeSetFiles(loadSet(name, outDir), name.replace('-', '_'), outDir);
+  }
 }
