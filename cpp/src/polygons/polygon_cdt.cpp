@@ -4,6 +4,8 @@
 #include <limits>
 
 #include "delaunay/first_triangle.h"
+#include "delaunay/insertion_order.h"
+#include "exact/small_integer_predicates.h"
 #include "geocdt/predicates.h"
 #include "labels/slot_windings.h"
 
@@ -20,6 +22,10 @@ inline bool ccw(const double* p, std::uint32_t a, std::uint32_t b, std::uint32_t
 }
 
 constexpr std::int32_t kUnseen = std::numeric_limits<std::int32_t>::min();
+
+// Polygons of this many points or more are inserted in the core's spatial order
+// (bench/EXPERIMENTS.md, polygons P1).
+constexpr std::uint32_t kSortFrom = 64;
 
 }  // namespace
 
@@ -39,20 +45,29 @@ bool PolygonCdt::triangulate(const double* xy, std::uint32_t n, const std::uint3
 
 bool PolygonCdt::insertPoints() {
   slots_ = 0;
+  if (n_ < 3) return true;
+  // Ring order keeps the walks and flips short on small rings; a long ring (a coastline)
+  // inserted along itself grows a snake of thin triangles that later parts of the ring cut
+  // through with many flips: there the core's spatial order (BRIO rounds in Hilbert order).
+  integers_ = areSmallIntegers(p_, n_);
+  const bool sorted = n_ >= kSortFrom;
+  if (sorted) order_ = insertionOrder(p_, n_, InsertionOrder::Brio);
+  const std::uint32_t* order = sorted ? order_.data() : nullptr;
+  const auto at = [order](std::size_t i) {
+    return order ? order[i] : static_cast<std::uint32_t>(i);
+  };
   std::size_t i1 = 0, i2 = 0;
-  if (n_ < 3 || !findFirstTriangle(
-                    p_, [](std::size_t i) { return i; }, n_, i1, i2))
-    return true;
+  if (!findFirstTriangle(p_, at, n_, i1, i2)) return true;
   // Every insertion adds two slots to the first four.
   const std::size_t most = 2 * static_cast<std::size_t>(n_);
   if (topo_.tri.size() < 3 * most) topo_.resizeSlots(most);
   vertexOf_.resize(n_);
   flips_ = 0;
-  // Ring order keeps flips near 1.5 a point on real rings; 16 a point plus a margin means an
-  // order that went quadratic, which the general engine's spatial sort avoids.
+  // Real rings flip 2 to 3 times a point in either order; 16 a point plus a margin means an
+  // order gone quadratic, which the general engine's spatial sort and grid avoid.
   flipBudget_ = 16 * static_cast<std::uint64_t>(n_) + 64;
 
-  std::uint32_t a = 0, b = static_cast<std::uint32_t>(i1), c = static_cast<std::uint32_t>(i2);
+  std::uint32_t a = at(0), b = at(i1), c = at(i2);
   if (orient(p_, a, b, c) == Sign::Negative) std::swap(b, c);
   // The first triangle and its three ghosts, as Delaunay::build lays them out.
   topo_.setTriangle(0, a, b, c);
@@ -67,19 +82,20 @@ bool PolygonCdt::insertPoints() {
   topo_.link(10, 8);
   slots_ = 4;
   last_ = 0;
-  vertexOf_[0] = 0;
-  vertexOf_[i1] = static_cast<std::uint32_t>(i1);
-  vertexOf_[i2] = static_cast<std::uint32_t>(i2);
-  for (std::uint32_t k = 1; k < n_; ++k) {
+  vertexOf_[a] = a;
+  vertexOf_[b] = b;
+  vertexOf_[c] = c;
+  for (std::size_t k = 1; k < n_; ++k) {
     if (k == i1 || k == i2) continue;
-    if (!insertPoint(k)) return false;
+    if (!insertPoint(at(k))) return false;
   }
   return true;
 }
 
 bool PolygonCdt::insertPoint(std::uint32_t k) {
   int kind = 0;
-  const std::int32_t e = locate(p_[2 * k], p_[2 * k + 1], kind);
+  const std::int32_t e = integers_ ? locate<true>(p_[2 * k], p_[2 * k + 1], kind)
+                                   : locate<false>(p_[2 * k], p_[2 * k + 1], kind);
   if (e < 0) return false;
   if (kind == 2) {
     vertexOf_[k] = topo_.tri[e];
@@ -92,10 +108,20 @@ bool PolygonCdt::insertPoint(std::uint32_t k) {
   } else {
     splitFace(e / 3, k);
   }
+  if (integers_) {
+    legalize<true>(k);
+  } else {
+    legalize<false>(k);
+  }
   return flips_ <= flipBudget_;
 }
 
+template <bool kIntegers>
 std::int32_t PolygonCdt::locate(double x, double y, int& kind) const {
+  const auto orient2d = [](double ax, double ay, double bx, double by, double cx, double cy) {
+    return kIntegers ? orient2dSmallIntegers(ax, ay, bx, by, cx, cy)
+                     : geocdt::orient2d(ax, ay, bx, by, cx, cy);
+  };
   const double* p = p_;
   const std::uint32_t* tri = topo_.tri.data();
   const std::int32_t* adj = topo_.adj.data();
@@ -203,7 +229,6 @@ void PolygonCdt::splitFace(std::int32_t t, std::uint32_t p) {
     pushLawson(s);
   }
   last_ = t;
-  legalize(p);
 }
 
 // e = a -> b in (a, b, c) and its twin in (b, a, d) become (c, a, p), (a, d, p), (d, b, p)
@@ -230,11 +255,11 @@ void PolygonCdt::splitEdge(std::int32_t e, std::uint32_t p) {
     pushLawson(s);
   }
   last_ = A / 3;
-  legalize(p);
 }
 
 // Lawson flips around p, as the core's legalizeAround without constraints: each edge on the
 // stack is the first edge a -> b of a triangle (a, b, p).
+template <bool kIntegers>
 void PolygonCdt::legalize(std::uint32_t p) {
   static constexpr std::int32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
   std::uint32_t* tri = topo_.tri.data();
@@ -252,8 +277,10 @@ void PolygonCdt::legalize(std::uint32_t p) {
     const std::uint32_t a = tri[e], b = tri[e + 1], d = tri[fp];
     bool flip;
     if (std::max(std::max(a, b), d) != kGhost) {
-      flip = incircle(q[2 * b], q[2 * b + 1], q[2 * a], q[2 * a + 1], q[2 * d], q[2 * d + 1], px,
-                      py) == Sign::Positive;
+      const double bx = q[2 * b], by = q[2 * b + 1], ax = q[2 * a], ay = q[2 * a + 1];
+      const double dx = q[2 * d], dy = q[2 * d + 1];
+      flip = (kIntegers ? incircleSmallIntegers(bx, by, ax, ay, dx, dy, px, py)
+                        : incircle(bx, by, ax, ay, dx, dy, px, py)) == Sign::Positive;
     } else if (d == kGhost) {
       flip = false;
     } else {
@@ -458,33 +485,34 @@ bool PolygonCdt::restoreDelaunay() {
 }
 
 // The windings of every slot, from the ghost triangles (0) across edges, each constrained
-// edge adding the ring traversals its fixed byte holds; the inside triangles go out.
+// edge adding the ring traversals its fixed byte holds; the inside triangles go out as the
+// flood meets them. The ghost triangles ring the hull, joined by unconstrained edges: a flood
+// from one of them reaches the others at winding 0.
 void PolygonCdt::countWindings(FillRule fill, std::uint32_t base, std::vector<std::uint32_t>& out) {
+  const std::uint32_t* tri = topo_.tri.data();
   const std::int32_t* adj = topo_.adj.data();
   const std::uint8_t* fixed = topo_.fixed.data();
   winding_.assign(static_cast<std::size_t>(slots_), kUnseen);
+  std::int32_t* winding = winding_.data();
   flood_.clear();
-  for (std::int32_t t = 0; t < slots_; ++t) {
-    if (topo_.isGhost(t)) {
-      winding_[t] = 0;
-      flood_.push_back(t);
-    }
-  }
+  std::int32_t ghost = 0;
+  while (!topo_.isGhost(ghost)) ++ghost;
+  winding[ghost] = 0;
+  flood_.push_back(ghost);
   for (std::size_t head = 0; head < flood_.size(); ++head) {
     const std::int32_t t = flood_[head];
+    const std::int32_t w = winding[t];
+    if (w != 0 && insideByRule(w, fill) && !topo_.isGhost(t)) {
+      out.push_back(base + tri[3 * t]);
+      out.push_back(base + tri[3 * t + 1]);
+      out.push_back(base + tri[3 * t + 2]);
+    }
     for (int k = 0; k < 3; ++k) {
       const std::int32_t e = 3 * t + k, next = adj[e] / 3;
-      if (winding_[next] != kUnseen) continue;
-      winding_[next] = winding_[t] - (static_cast<std::int8_t>(fixed[e]) - 1) / 2;
+      if (winding[next] != kUnseen) continue;
+      winding[next] = w - (static_cast<std::int8_t>(fixed[e]) - 1) / 2;
       flood_.push_back(next);
     }
-  }
-  const std::uint32_t* tri = topo_.tri.data();
-  for (std::int32_t t = 0; t < slots_; ++t) {
-    if (topo_.isGhost(t) || !insideByRule(winding_[t], fill)) continue;
-    out.push_back(base + tri[3 * t]);
-    out.push_back(base + tri[3 * t + 1]);
-    out.push_back(base + tri[3 * t + 2]);
   }
 }
 

@@ -33,9 +33,12 @@ class PolygonCdt {
   bool insertPoint(std::uint32_t k);
   // Visibility walk from last_ to (x, y): a half-edge of where it lies and what that is
   // (0 face or outside, 1 edge, 2 vertex), or -1 when the walk fails.
+  template <bool kIntegers>
   std::int32_t locate(double x, double y, int& kind) const;
   void splitFace(std::int32_t t, std::uint32_t p);
   void splitEdge(std::int32_t e, std::uint32_t p);
+  // kIntegers: the polygon's coordinates are small integers (exact/small_integer_predicates.h).
+  template <bool kIntegers>
   void legalize(std::uint32_t p);
   void pushLawson(std::int32_t e);
 
@@ -69,7 +72,9 @@ class PolygonCdt {
   Topology topo_;
   std::int32_t slots_ = 0;  // used slots of topo_
   std::int32_t last_ = 0;   // the triangle of the last insertion
+  bool integers_ = false;   // small integer coordinates: the cheaper exact predicates
   std::uint64_t flips_ = 0, flipBudget_ = 0;
+  std::vector<std::uint32_t> order_;     // the insertion order of a large polygon's points
   std::vector<std::uint32_t> vertexOf_;  // local point -> the local point it is the vertex of
   std::vector<std::int32_t> edgeOut_;    // vertex -> a half-edge out of it (during segments)
   std::vector<std::int32_t> lawson_;
