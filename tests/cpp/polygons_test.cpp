@@ -15,6 +15,7 @@
 #include "polygon_checks.h"
 #include "polygons/general_polygon.h"
 #include "polygons/polygon_cdt.h"
+#include "polygons/tiny_ring.h"
 
 namespace geocdt {
 namespace {
@@ -213,6 +214,37 @@ TEST(Polygons, LargeStarShapedRingsWithHoles) {
   }
   const Outcome r = checked(Batch(list));
   EXPECT_EQ(r.stats.smallPath, 3u);
+}
+
+// Rings of three and four points take their own path: its triangles must pass the checker
+// and cover what the small path's do, on every quad of a small grid's kind (convex, concave,
+// crossed, with collinear or repeated corners, cocircular), either way round, open or closed.
+TEST(Polygons, TinyRingsAgreeWithTheSmallPath) {
+  std::mt19937 rng(17);
+  std::uniform_int_distribution<int> coordinate(0, 4);
+  PolygonCdt small;
+  std::size_t handled = 0;
+  Batch all;
+  for (int i = 0; i < 20000; ++i) {
+    Ring ring;
+    const int corners = 3 + i % 3;  // five: refused unless some repeat
+    for (int k = 0; k < corners; ++k) {
+      ring.push_back(coordinate(rng));
+      ring.push_back(coordinate(rng));
+    }
+    if (i % 3 == 0) ring.insert(ring.end(), {ring[0], ring[1]});
+    const auto n = static_cast<std::uint32_t>(ring.size() / 2);
+    std::vector<std::uint32_t> tiny, full;
+    const std::uint32_t starts[2] = {0, n};
+    if (!triangulateTinyRing(ring.data(), n, 0, tiny)) continue;
+    ++handled;
+    ASSERT_TRUE(small.triangulate(ring.data(), n, starts, 1, FillRule::EvenOdd, 0, full));
+    EXPECT_EQ(tiny.size(), full.size());
+    all.add({ring});
+  }
+  EXPECT_GT(handled, 10000u);
+  const Outcome r = checked(all);
+  EXPECT_EQ(r.out.triangles.size() % 3, 0u);
 }
 
 TEST(Polygons, ThreadsGiveTheSameArrays) {

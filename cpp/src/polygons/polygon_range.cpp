@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "polygons/tiny_ring.h"
+
 namespace geocdt {
 
 namespace {
@@ -24,8 +26,9 @@ Status PolygonRange::run(const PolygonBatch& batch, FillRule fill, std::size_t f
       ringStarts_.resize(r1 - r0 + 1);
       for (std::uint32_t r = r0; r <= r1; ++r) ringStarts_[r - r0] = rings[r] - start;
       const double* xy = batch.xy + 2 * static_cast<std::size_t>(start);
-      if (n <= kSmallPathMost &&
-          small_.triangulate(xy, n, ringStarts_.data(), r1 - r0, fill, start, triangles)) {
+      if ((r1 - r0 == 1 && triangulateTinyRing(xy, n, start, triangles)) ||
+          (n <= kSmallPathMost &&
+           small_.triangulate(xy, n, ringStarts_.data(), r1 - r0, fill, start, triangles))) {
         ++stats.smallPath;
       } else {
         const std::size_t before = extras.size();
