@@ -273,12 +273,14 @@ void PolygonCdt::legalize(std::uint32_t p) {
     const std::int32_t e = stack[--top];
     const std::int32_t f = adj[e];
     const std::int32_t s = f - static_cast<std::int32_t>(static_cast<std::uint32_t>(f) % 3);
-    const std::int32_t fn = s + kNext[f - s], fp = s + kPrev[f - s];
+    const std::int32_t fp = s + kPrev[f - s];
     const std::uint32_t a = tri[e], b = tri[e + 1], d = tri[fp];
     bool flip;
     if (std::max(std::max(a, b), d) != kGhost) {
-      const double bx = q[2 * b], by = q[2 * b + 1], ax = q[2 * a], ay = q[2 * a + 1];
-      const double dx = q[2 * d], dy = q[2 * d + 1];
+      // (Indices as size_t: no zero extension for each of the six loads.)
+      const std::size_t ia = a, ib = b, id = d;
+      const double bx = q[2 * ib], by = q[2 * ib + 1], ax = q[2 * ia], ay = q[2 * ia + 1];
+      const double dx = q[2 * id], dy = q[2 * id + 1];
       flip = (kIntegers ? incircleSmallIntegers(bx, by, ax, ay, dx, dy, px, py)
                         : incircle(bx, by, ax, ay, dx, dy, px, py)) == Sign::Positive;
     } else if (d == kGhost) {
@@ -287,6 +289,7 @@ void PolygonCdt::legalize(std::uint32_t p) {
       flip = a == kGhost ? ccw(q, d, b, p) : ccw(q, a, d, p);
     }
     if (!flip) continue;
+    const std::int32_t fn = s + kNext[f - s];  // (only now: fewer live registers above)
     const std::int32_t twinAD = adj[fn], twinDB = adj[fp], twinBP = adj[e + 1];
     tri[e + 1] = d;
     tri[s] = d;
@@ -493,14 +496,16 @@ void PolygonCdt::countWindings(FillRule fill, std::uint32_t base, std::vector<st
   const std::int32_t* adj = topo_.adj.data();
   const std::uint8_t* fixed = topo_.fixed.data();
   winding_.assign(static_cast<std::size_t>(slots_), kUnseen);
+  if (flood_.size() < static_cast<std::size_t>(slots_)) flood_.resize(slots_);
   std::int32_t* winding = winding_.data();
-  flood_.clear();
+  std::int32_t* queue = flood_.data();  // each slot enters once: no bound to check
   std::int32_t ghost = 0;
   while (!topo_.isGhost(ghost)) ++ghost;
   winding[ghost] = 0;
-  flood_.push_back(ghost);
-  for (std::size_t head = 0; head < flood_.size(); ++head) {
-    const std::int32_t t = flood_[head];
+  queue[0] = ghost;
+  std::int32_t tail = 1;
+  for (std::int32_t head = 0; head < tail; ++head) {
+    const std::int32_t t = queue[head];
     const std::int32_t w = winding[t];
     if (w != 0 && insideByRule(w, fill) && !topo_.isGhost(t)) {
       out.push_back(base + tri[3 * t]);
@@ -511,7 +516,7 @@ void PolygonCdt::countWindings(FillRule fill, std::uint32_t base, std::vector<st
       const std::int32_t e = 3 * t + k, next = adj[e] / 3;
       if (winding[next] != kUnseen) continue;
       winding[next] = w - (static_cast<std::int8_t>(fixed[e]) - 1) / 2;
-      flood_.push_back(next);
+      queue[tail++] = next;
     }
   }
 }
