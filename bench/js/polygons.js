@@ -20,7 +20,9 @@ import createGeocdtModule from '../../web/dist/geocdt.mjs';
 import { createApi } from '../../web/api.js';
 import { instantiateCompiled } from '../../web/warm-up.js';
 import { readFileSync } from 'node:fs';
-import { earcutInput, loadSet, polygonCount, vertexCount } from '../../scripts/datasets/polygon_sets.mjs';
+import {
+  earcutInput, loadSet, polygonCount, vertexCount,
+} from '../../scripts/datasets/polygon_sets.mjs';
 import { alternate, median } from './timing.js';
 
 const args = process.argv.slice(2);

@@ -75,8 +75,9 @@ export function mvtTileFiles() {
 }
 
 // A tile's polygons as the MVT spec classifies rings (by signed area: an exterior ring, then
-// its interior rings; rings of zero area dropped), each as arrays of flat x, y.
-export function tilePolygons(bytes) {
+// its interior rings; rings of zero area dropped), each as arrays of flat x, y, layer by layer
+// in name order; with layers, each as { layer, extent, rings }.
+export function tilePolygons(bytes, { layers = false } = {}) {
   const tile = new VectorTile(new PbfReader(bytes));
   const polygons = [];
   for (const name of Object.keys(tile.layers).sort()) {
@@ -85,14 +86,15 @@ export function tilePolygons(bytes) {
       const f = layer.feature(i);
       if (f.type !== 3) continue;
       for (const polygon of classifyRings(f.loadGeometry())) {
-        polygons.push(polygon.map((ring) => {
+        const rings = polygon.map((ring) => {
           const flat = new Array(2 * ring.length);
           for (let k = 0; k < ring.length; k++) {
             flat[2 * k] = ring[k].x;
             flat[2 * k + 1] = ring[k].y;
           }
           return flat;
-        }));
+        });
+        polygons.push(layers ? { layer: name, extent: layer.extent, rings } : rings);
       }
     }
   }
