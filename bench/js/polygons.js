@@ -5,21 +5,25 @@
 //   warm: the contenders alternate in one process, round after round (medians);
 //   cold: the first call of each in a fresh process (medians of --cold-runs processes);
 //   threads: the threaded build on 2 threads against one thread, outputs compared;
-//   heap: the wasm allocator's peak per input vertex, in a fresh process.
+//   heap: the wasm allocator's peak per input vertex, in a fresh process;
+//   chromium (--chromium): the warm alternation in a headless Chromium page.
 // earcut gets each polygon as Mapbox GL passes it (a plain array and hole indices), made
 // outside the timing; geocdt gets the batch's typed arrays. "earcut wrong" counts polygons
 // where the area of earcut's triangles differs from the area inside the rings (even-odd, the
 // area of geocdt's triangles, which the tests check against triangulate(..., { keep:
 // 'inside' })) by more than 1e-9 of it.
 //   node --expose-gc bench/js/polygons.js [--rounds 5] [--cold-runs 3] [--sets tiles,...]
-//     [--skip cold,threads,heap]
+//     [--skip cold,threads,heap,chromium]
 import { execFileSync } from 'node:child_process';
+import { createServer } from 'node:http';
+import { extname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 import earcut, { refine } from 'earcut';
 import { init, triangulatePolygons, memoryUsage } from 'geocdt';
 import createGeocdtModule from '../../web/dist/geocdt.mjs';
 import { createApi } from '../../web/api.js';
 import { instantiateCompiled } from '../../web/warm-up.js';
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import {
   earcutInput, loadSet, polygonCount, vertexCount,
 } from '../../scripts/datasets/polygon_sets.mjs';
@@ -144,6 +148,125 @@ function fresh(extra) {
   return JSON.parse(out.trim().split('\n').pop());
 }
 
+// --- Chromium: the same warm alternation in a page, geocdt's browser entry and earcut as ES
+// modules served from the repo, each set's arrays as one binary file. ---
+
+const root = fileURLToPath(new URL('../../', import.meta.url));
+const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript',
+  '.wasm': 'application/wasm' };
+const PAGE = `<!doctype html><script type="importmap">{"imports": {
+  "earcut": "/node_modules/earcut/src/earcut.js", "geocdt": "/web/index.browser.js"}}</script>
+<p>polygons</p>`;
+
+// A set's arrays as [uint32 JSON length, JSON { arrays: [{ key, type, length }] }, padding,
+// the arrays], for the page.
+function encodeSet(set) {
+  const keys = ['coords', 'ringOffsets', 'polygonOffsets'];
+  const header = Buffer.from(JSON.stringify({ arrays: keys.map((key) =>
+    ({ key, type: set[key].constructor.name, length: set[key].length })) }));
+  const padded = 4 + Math.ceil(header.length / 8) * 8;
+  const parts = [Buffer.alloc(padded)];
+  parts[0].writeUInt32LE(header.length, 0);
+  header.copy(parts[0], 4);
+  for (const key of keys) {
+    const a = set[key];
+    const bytes = Buffer.from(a.buffer, a.byteOffset, a.byteLength);
+    parts.push(bytes, Buffer.alloc((8 - (bytes.length % 8)) % 8));
+  }
+  return Buffer.concat(parts);
+}
+
+function serve(sets) {
+  const server = createServer((request, response) => {
+    const path = decodeURIComponent(new URL(request.url, 'http://x').pathname);
+    let body = null, type = 'application/octet-stream';
+    try {
+      if (path === '/') [body, type] = [PAGE, MIME['.html']];
+      else if (path.startsWith('/data/')) body = sets.get(path.slice(6));
+      else if (path.startsWith('/web/') || path.startsWith('/node_modules/')) {
+        body = readFileSync(join(root, path));
+        type = MIME[extname(path)] ?? type;
+      }
+    } catch {
+      body = null;
+    }
+    if (body == null) return response.writeHead(404).end();
+    response.writeHead(200, { 'Content-Type': type, 'Cache-Control': 'no-store' });
+    response.end(body);
+  });
+  return new Promise((done) => server.listen(0, '127.0.0.1', () => done(server)));
+}
+
+// Runs in the page: for each set, the contenders alternating for `rounds`; medians.
+async function inPage(names, rounds) {
+  const { default: earcut, refine } = await import('earcut');
+  const { init, triangulatePolygons } = await import('geocdt');
+  await init({ warmUp: false });
+  const types = { Int16Array, Int32Array, Float64Array, Uint32Array };
+  const out = {};
+  for (const name of names) {
+    const buffer = await (await fetch(`/data/${name}`)).arrayBuffer();
+    const length = new DataView(buffer).getUint32(0, true);
+    const header = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, length)));
+    let at = 4 + Math.ceil(length / 8) * 8;
+    const set = {};
+    for (const { key, type, length: n } of header.arrays) {
+      set[key] = new types[type](buffer, at, n);
+      at += Math.ceil((n * types[type].BYTES_PER_ELEMENT) / 8) * 8;
+    }
+    const { coords, ringOffsets, polygonOffsets } = set;
+    const inputs = [];
+    for (let p = 0; p + 1 < polygonOffsets.length; p++) {
+      const first = ringOffsets[polygonOffsets[p]];
+      const data = Array.from(coords.subarray(2 * first, 2 * ringOffsets[polygonOffsets[p + 1]]));
+      const holes = [];
+      for (let r = polygonOffsets[p] + 1; r < polygonOffsets[p + 1]; r++) {
+        holes.push(ringOffsets[r] - first);
+      }
+      inputs.push({ data, holes });
+    }
+    const runs = {
+      earcut: () => { for (const { data, holes } of inputs) earcut(data, holes); },
+      'earcut + refine': () => {
+        for (const { data, holes } of inputs) refine(earcut(data, holes), data);
+      },
+      geocdt: () => triangulatePolygons({ coords, ringOffsets, polygonOffsets }),
+    };
+    const times = { earcut: [], 'earcut + refine': [], geocdt: [] };
+    const names3 = Object.keys(runs);
+    for (let r = 0; r < rounds; r++) {
+      for (let k = 0; k < 3; k++) {
+        const c = names3[(k + r) % 3];
+        const started = performance.now();
+        runs[c]();
+        times[c].push(performance.now() - started);
+      }
+    }
+    const median = (a) => [...a].sort((x, y) => x - y)[a.length >> 1];
+    out[name] = Object.fromEntries(names3.map((c) => [c, median(times[c])]));
+  }
+  return out;
+}
+
+async function chromium(names) {
+  const sets = new Map(names.map((name) => [name, encodeSet(loadSet(name))]));
+  const server = await serve(sets);
+  const { chromium: browserType } = await import('playwright-core');
+  const browser = await browserType.launch({
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
+  });
+  try {
+    const page = await browser.newPage();
+    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    return await page.evaluate(([source, list, n]) => new Function(`return (${source})`)()(list, n),
+      [inPage.toString(), names, rounds]);
+  } finally {
+    await browser.close();
+    server.close();
+  }
+}
+
 const fmt = (ms) => ms.toFixed(0);
 const ratio = (a, b) => `${(a / b).toFixed(2)}×`;
 const verdict = (value, target) => (value <= target ? 'met' : 'missed');
@@ -206,6 +329,23 @@ async function main() {
     console.log(`\nHeap, tiles: allocator peak ${h.peakPerVertex.toFixed(1)} B a vertex `
       + `(wasm memory ${h.heapPerVertex.toFixed(1)} B a vertex)`);
     targets.push(['tiles, wasm heap peak: ≤ 64 B a vertex', h.peakPerVertex, 64]);
+  }
+  if (!skip.has('chromium') && existsSync(process.env.CHROMIUM_PATH ?? '/usr/bin/chromium')) {
+    console.log(`\nChromium (headless, warm, medians of ${rounds} alternating rounds)\n`);
+    console.log('| set | earcut ms | earcut + refine ms | geocdt ms | vs earcut | '
+      + 'vs earcut + refine |');
+    console.log('|---|--:|--:|--:|--:|--:|');
+    const results = await chromium(setNames);
+    for (const name of setNames) {
+      const r = results[name];
+      console.log(`| ${name} | ${fmt(r.earcut)} | ${fmt(r['earcut + refine'])} | `
+        + `${fmt(r.geocdt)} | ${ratio(r.geocdt, r.earcut)} | `
+        + `${ratio(r.geocdt, r['earcut + refine'])} |`);
+      if (name === 'tiles') {
+        targets.push(['tiles, Chromium: ≤ 1.0× earcut + refine', r.geocdt / r['earcut + refine'],
+          1]);
+      }
+    }
   }
   console.log('\n| target | measured | |');
   console.log('|---|--:|---|');

@@ -24,7 +24,7 @@ inline bool ccw(const double* p, std::uint32_t a, std::uint32_t b, std::uint32_t
 constexpr std::int32_t kUnseen = std::numeric_limits<std::int32_t>::min();
 
 // Polygons of this many points or more are inserted in the core's spatial order
-// (bench/EXPERIMENTS.md, polygons P1).
+// (bench/EXPERIMENTS.md, PG1).
 constexpr std::uint32_t kSortFrom = 64;
 
 }  // namespace
