@@ -1,10 +1,7 @@
 #include "polygons.h"
 
-#include <new>
-#include <stdexcept>
-#include <utility>
-
 #include "heap_reserve.h"
+#include "out_of_memory.h"
 
 namespace geocdt::wasm {
 
@@ -31,17 +28,15 @@ bool PolygonCall::prepare(double coordValues, double rings, double polygons) {
   constexpr double kAddressSpace = 4294967296.0;
   if (8 * coordValues + 4 * (rings + polygons) >= kAddressSpace) return false;
   reserveHeap(8 * coordValues + kReservePerPolygonPoint * coordValues / 2 + 4 * (rings + polygons));
-  try {
-    coords_.resize(static_cast<std::size_t>(coordValues));
-    rings_.resize(static_cast<std::size_t>(rings) + 1);
-    polygons_.resize(static_cast<std::size_t>(polygons) + 1);
-  } catch (const std::bad_alloc&) {
-    release();
-    return false;
-  } catch (const std::length_error&) {
-    release();
-    return false;
-  }
+  const Status s = catchOutOfMemory(
+      [&] {
+        coords_.resize(static_cast<std::size_t>(coordValues));
+        rings_.resize(static_cast<std::size_t>(rings) + 1);
+        polygons_.resize(static_cast<std::size_t>(polygons) + 1);
+        return Status::success();
+      },
+      [&] { release(); });
+  if (!s.ok()) return false;
   header_[Coords] = address(coords_);
   header_[RingOffsets] = address(rings_);
   header_[PolygonOffsets] = address(polygons_);

@@ -1,11 +1,10 @@
 // triangulatePolygons(): the batch checked, cut into ranges of polygons for the threads, each
 // range triangulated polygon after polygon, and the ranges' arrays joined in polygon order.
 #include <algorithm>
-#include <new>
-#include <stdexcept>
 
 #include "base/in_parallel.h"
 #include "geocdt/polygons.h"
+#include "out_of_memory.h"
 #include "polygons/batch_check.h"
 #include "polygons/polygon_range.h"
 
@@ -124,13 +123,8 @@ Status triangulatePolygons(const PolygonBatch& batch, const PolygonOptions& opti
   Status s = checkPolygonBatch(batch);
   if (!s.ok()) return s;
   PolygonStats counted;
-  try {
-    s = runBatch(batch, options, out, counted);
-  } catch (const std::bad_alloc&) {
-    s = {StatusCode::OutOfMemory, "out of memory: the batch is too large for the available memory"};
-  } catch (const std::length_error&) {
-    s = {StatusCode::OutOfMemory, "out of memory: the batch is too large for the available memory"};
-  }
+  s = catchOutOfMemory([&] { return runBatch(batch, options, out, counted); },
+                       [&] { out = PolygonTriangles(); });
   if (!s.ok()) out = PolygonTriangles();
   if (stats) *stats = counted;
   return s;
