@@ -11,6 +11,7 @@
 #include "names.h"
 #include "one_shot.h"
 #include "output.h"
+#include "polygons.h"
 
 namespace geocdt::wasm {
 namespace {
@@ -98,6 +99,18 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("vertexCount", &Incremental::vertexCount)
       .function("triangleCount", &Incremental::triangleCount)
       .function("polylineCount", &Incremental::polylineCount);
+
+  class_<PolygonCall>("PolygonCall")
+      .constructor<>()
+      .function("header", &PolygonCall::header)
+      .function("prepare", &PolygonCall::prepare)
+      .function("run", &PolygonCall::run)
+      .function("release", &PolygonCall::release)
+      .function("code", &PolygonCall::code)
+      .function("message", &PolygonCall::message)
+      .function("index", &PolygonCall::index)
+      .function("segment", &PolygonCall::segment)
+      .function("stats", &PolygonCall::stats);
 
   function("triangulateInto", &triangulateInto);
   function("allocatedBytes", &allocatedBytes);

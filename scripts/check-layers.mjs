@@ -16,6 +16,7 @@ const LAYERS = [
   ['constraints', 'labels', 'values'],
   ['parallel', 'refine'],
   ['.'],
+  ['polygons'],
 ];
 
 const rank = new Map(LAYERS.flatMap((names, r) => names.map((name) => [name, r])));

@@ -3,8 +3,8 @@
 import { Kernel } from './kernel.js';
 import { GeocdtError } from './errors.js';
 import {
-  checkCoordinates, checkInput, checkOffsets, checkRaster, checkValues, checkValuesPerPoint,
-  describe, threadsError,
+  checkCoordinates, checkEarcutInput, checkInput, checkOffsets, checkPolygons, checkRaster,
+  checkValues, checkValuesPerPoint, describe, threadsError,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 
@@ -26,6 +26,10 @@ function insertOptions(options) {
   }
   return options.onProgress;
 }
+
+const POLYGON_NAMES = { coords: 'coords', ringOffsets: 'ringOffsets',
+  polygonOffsets: 'polygonOffsets' };
+const EARCUT_NAMES = { coords: 'data', ringOffsets: 'holeIndices', polygonOffsets: 'holeIndices' };
 
 // 'auto' threads: the cores, at most this many.
 export const kAutoThreads = 8;
@@ -75,6 +79,31 @@ export function createApi(instantiate) {
     const { output, rest } = geoJSONOutput(options);
     const input = readGeoJSON(geojson);
     return geoJSONResult(triangulate(input, rest), input, output, rest);
+  }
+
+  // Every polygon of a batch in GeoArrow's layout triangulated alone, inside triangles only,
+  // in one call: { triangles, extraPoints, triangleOffsets, stats }.
+  function triangulatePolygons(polygons, options) {
+    const started = now();
+    const k = ready();
+    const checked = checkPolygons(polygons);
+    const fill = k.fillRuleOption(options);
+    const result = k.triangulatePolygons(checked, fill, 2, POLYGON_NAMES);
+    result.stats.polygons = checked.polygonOffsets.length - 1;
+    result.stats.milliseconds = now() - started;
+    return result;
+  }
+
+  // earcut's signature: one polygon (data with dim numbers a vertex, holes starting at the
+  // vertex indices holeIndices) -> its triangles' vertex indices, with the points added where
+  // rings cross as the array's extraPoints (indices from data.length / dim on).
+  function earcut(data, holeIndices, dim = 2) {
+    const k = ready();
+    const batch = checkEarcutInput(data, holeIndices, dim);
+    const { triangles, extraPoints } = k.triangulatePolygons(batch, k.fillRule.evenodd, dim,
+      EARCUT_NAMES);
+    triangles.extraPoints = extraPoints;
+    return triangles;
   }
 
   // What the wasm heap holds: its size, the bytes allocated now, and the allocator's peak.
@@ -204,5 +233,8 @@ export function createApi(instantiate) {
     Triangulation.prototype[Symbol.dispose] = Triangulation.prototype.dispose;
   }
 
-  return { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation };
+  return {
+    init, triangulate, triangulatePolygons, earcut, triangulateGeoJSON, memoryUsage,
+    Triangulation,
+  };
 }

@@ -44,6 +44,8 @@ export function serializeError(error) {
     code: error?.code,
     index: error?.index,
     segment: error?.segment,
+    polygon: error?.polygon,
+    ring: error?.ring,
   };
 }
 
@@ -54,6 +56,8 @@ export function reviveError(e) {
     return new GeocdtError('InternalError', `geocdt: the worker failed: ${e.name}: ${e.message}`);
   }
   const error = new Type(e.message);
-  for (const key of ['code', 'index', 'segment']) if (e[key] !== undefined) error[key] = e[key];
+  for (const key of ['code', 'index', 'segment', 'polygon', 'ring']) {
+    if (e[key] !== undefined) error[key] = e[key];
+  }
   return error;
 }

@@ -98,5 +98,6 @@ async function instantiate(options) {
   return instantiateWithWarmUp(createGeocdtModule, module, options, startWarmUp);
 }
 
-export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =
-  createApi(instantiate);
+export const {
+  init, triangulate, triangulatePolygons, earcut, triangulateGeoJSON, memoryUsage, Triangulation,
+} = createApi(instantiate);

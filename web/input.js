@@ -209,6 +209,75 @@ export function coordinateError(values, name, start, point, owner) {
   return null;
 }
 
+// triangulatePolygons()'s input: GeoArrow's polygon layout. Returns it unchanged; the offsets'
+// order and range and the coordinates' values are checked by the core as it reads them.
+export function checkPolygons(polygons) {
+  if (polygons === null || typeof polygons !== 'object' || Array.isArray(polygons)
+    || ArrayBuffer.isView(polygons)) {
+    throw new TypeError('geocdt: triangulatePolygons() takes { coords, ringOffsets, '
+      + `polygonOffsets } (GeoArrow's polygon layout), got ${describe(polygons)}`);
+  }
+  const { coords, ringOffsets, polygonOffsets } = polygons;
+  checkCoordinates(coords, 'coords');
+  checkOffsets(ringOffsets, 'ringOffsets', 'rings', 'vertex');
+  checkOffsets(polygonOffsets, 'polygonOffsets', 'polygons', 'ring');
+  return { coords, ringOffsets, polygonOffsets };
+}
+
+// earcut()'s input, (data, holeIndices, dim) as earcut takes it -> a batch of one polygon.
+export function checkEarcutInput(data, holeIndices, dim) {
+  if (!Array.isArray(data) && !isNumericTypedArray(data)) {
+    throw new TypeError('geocdt: earcut(data, holeIndices, dim) takes data as an array of '
+      + `numbers or a numeric typed array, got ${describe(data)}`);
+  }
+  checkAttached(data, 'data');
+  if (!Number.isInteger(dim) || dim < 2) {
+    throw new RangeError(`geocdt: earcut() dim must be an integer from 2 up, got ${dim}`);
+  }
+  if (data.length % dim !== 0) {
+    throw new RangeError(`geocdt: earcut() data has ${data.length} numbers, not a multiple of `
+      + `dim = ${dim}`);
+  }
+  const points = data.length / dim;
+  const holes = holeIndices ?? [];
+  if (!Array.isArray(holes) && !isNumericTypedArray(holes)) {
+    throw new TypeError('geocdt: earcut() holeIndices must be an array of vertex indices, got '
+      + `${describe(holeIndices)}`);
+  }
+  const ringOffsets = new Uint32Array(holes.length + 2);
+  for (let i = 0; i < holes.length; i++) {
+    const start = holes[i];
+    const before = i === 0 ? 0 : holes[i - 1];
+    if (!Number.isInteger(start) || start < before || start > points) {
+      throw new RangeError(`geocdt: earcut() holeIndices[${i}] is ${start}: hole ${i} must `
+        + `start at a vertex index from ${before} to ${points}`);
+    }
+    ringOffsets[i + 1] = start;
+  }
+  ringOffsets[holes.length + 1] = points;
+  return {
+    coords: data, ringOffsets, polygonOffsets: new Uint32Array([0, holes.length + 1]),
+  };
+}
+
+// The RangeError for the first bad coordinate of ring `ring` (an index into ringOffsets) of
+// coords (dim numbers a point), or null when it has none; where: { polygon, ring } (the
+// ring's place in its polygon), or null for a ring in no polygon.
+export function polygonCoordinateError(coords, dim, name, ringOffsets, ring, where) {
+  const owner = where === null ? `, in ring ${ring}`
+    : `, in polygon ${where.polygon} ring ${where.ring}`;
+  for (let k = ringOffsets[ring]; k < ringOffsets[ring + 1]; k++) {
+    for (let axis = 0; axis < 2; axis++) {
+      const i = dim * k + axis;
+      if (badCoordinate(coords[i])) {
+        return new RangeError(`geocdt: ${name}[${i}] (${axis ? 'y' : 'x'} of point ${k}`
+          + `${owner}) is ${problem(coords[i])}`);
+      }
+    }
+  }
+  return null;
+}
+
 // The RangeError for polygons[i], the first that breaks their layout; name: where they were
 // given ('polygons', 'options.polygons').
 export function polygonOffsetError(polygons, i, polylines, name) {

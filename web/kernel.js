@@ -6,7 +6,8 @@
 // come from the module (bindings/names.h, bindings/output.cpp): no table is kept here.
 import { GeocdtError, outOfMemoryError, statusError } from './errors.js';
 import {
-  coordinateError, describe, isNumericTypedArray, offsetError, polygonOffsetError,
+  coordinateError, describe, isNumericTypedArray, offsetError, polygonCoordinateError,
+  polygonOffsetError,
 } from './input.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
@@ -264,6 +265,22 @@ export class Kernel {
     return { keep: k, fill: f, insideFlags: insideFlags || k === this.keep.inside, segmentSources };
   }
 
+  // options.fillRule alone (triangulatePolygons()'s only option) -> the module's enum value.
+  fillRuleOption(options) {
+    if (options == null) return this.fillRule.evenodd;
+    if (typeof options !== 'object') {
+      throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
+    }
+    const { fillRule = 'evenodd' } = options;
+    if (typeof fillRule === 'string' && fillRule !== 'values'
+      && Object.hasOwn(this.fillRule, fillRule)) {
+      return this.fillRule[fillRule];
+    }
+    const names = enumNames(this.fillRule).map((n) => `'${n}'`).join(' or ');
+    throw new TypeError(
+      `geocdt: options.fillRule must be ${names}, got ${JSON.stringify(fillRule)}`);
+  }
+
   // options.refine -> { refine, minAngle, maxArea, maxSteinerPoints } for the binding (0 for
   // no area bound and the default cap). true asks for the defaults.
   refineOptions(refine, name = 'options.refine') {
@@ -367,6 +384,73 @@ export class Kernel {
     });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
+  }
+
+  // The binding's polygon call, made once: its header (bindings/polygons.h) is where
+  // addresses and sizes travel, read as uint32 at this.polygonHeader.
+  polygonCall() {
+    if (this.polygons === undefined) {
+      this.polygons = new this.wasm.PolygonCall();
+      this.polygonHeader = this.polygons.header() / 4;
+    }
+    return this.polygons;
+  }
+
+  // A checked batch { coords, ringOffsets, polygonOffsets } (coords: dim numbers a point, x
+  // and y first) -> { triangles, extraPoints, triangleOffsets, stats }. names: what the caller
+  // calls the three arrays, for errors.
+  triangulatePolygons({ coords, ringOffsets, polygonOffsets }, fill, dim, names) {
+    const call = this.polygonCall();
+    const h = this.polygonHeader;
+    this.enter();
+    try {
+      if (!call.prepare(coords.length, ringOffsets.length - 1, polygonOffsets.length - 1)) {
+        const bytes = 8 * coords.length + 4 * (ringOffsets.length + polygonOffsets.length);
+        throw outOfMemoryError(`the input alone needs ${bytes} bytes`);
+      }
+      const f64 = this.heap().HEAPF64;
+      let u32 = this.heap().HEAPU32;
+      copyNumbers(f64, u32[h] / 8, coords, names.coords);
+      copyOffsets(u32, u32[h + 1] / 4, ringOffsets, names.ringOffsets);
+      copyOffsets(u32, u32[h + 2] / 4, polygonOffsets, names.polygonOffsets);
+      const started = now();
+      const ok = call.run(dim, fill, this.threads);
+      const coreMilliseconds = now() - started;
+      if (!ok) throw this.polygonError(call, coords, dim, ringOffsets, polygonOffsets, names);
+      ({ HEAPU32: u32 } = this.heap());
+      const { buffer } = u32;
+      const stats = call.stats();
+      stats.coreMilliseconds = coreMilliseconds;
+      return {
+        triangles: new Uint32Array(buffer, u32[h + 3], u32[h + 4]).slice(),
+        extraPoints: new Float64Array(buffer, u32[h + 5], u32[h + 6]).slice(),
+        triangleOffsets: new Uint32Array(buffer, u32[h + 7], u32[h + 8]).slice(),
+        stats,
+      };
+    } finally {
+      call.release();
+      this.leave();
+    }
+  }
+
+  // The exception for a failed polygon call: bad offsets and coordinates are RangeErrors that
+  // name the polygon and ring (and, for a coordinate, the caller's index of it).
+  polygonError(call, coords, dim, ringOffsets, polygonOffsets, names) {
+    const code = this.statusCodes[call.code().value];
+    const polygon = call.index(), ring = call.segment();
+    let error = null;
+    if (code === 'InvalidCoordinate' && ring >= 0) {
+      error = polygonCoordinateError(coords, dim, names.coords, ringOffsets, ring,
+        polygon < 0 ? null : { polygon, ring: ring - polygonOffsets[polygon] });
+    }
+    if (error === null && (code === 'InvalidArgument' || code === 'InvalidCoordinate')) {
+      error = new RangeError(`geocdt: ${call.message()}`);
+    }
+    if (error === null) return statusError(code, call.message(), polygon, ring);
+    error.code = code;
+    if (polygon >= 0) error.polygon = polygon;
+    if (ring >= 0) error.ring = ring;
+    return error;
   }
 
   createIncremental(valuesPerPoint) {

@@ -4,8 +4,8 @@
 // the heap.
 import { GeocdtError, reviveError } from './errors.js';
 import {
-  checkCoordinates, checkInput, checkOffsets, checkRaster, checkValues, checkValuesPerPoint,
-  describe,
+  checkCoordinates, checkEarcutInput, checkInput, checkOffsets, checkPolygons, checkRaster,
+  checkValues, checkValuesPerPoint, describe,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 
@@ -110,6 +110,29 @@ export class GeocdtWorker {
       };
     }
     return this.request('triangulate', [sent, rest], [...buffers], onProgress);
+  }
+
+  // triangulatePolygons() in the worker: the batch's arrays are transferred (options.transfer
+  // as for triangulate()), the three result arrays transferred back.
+  async triangulatePolygons(polygons, options) {
+    const { transfer, rest } = takeProgress(options);
+    const { coords, ringOffsets, polygonOffsets } = checkPolygons(polygons);
+    const buffers = new Set();
+    const sent = {
+      coords: transferable(coords, transfer, buffers),
+      ringOffsets: transferable(ringOffsets, transfer, buffers),
+      polygonOffsets: transferable(polygonOffsets, transfer, buffers),
+    };
+    return this.request('triangulatePolygons', [sent, rest], [...buffers]);
+  }
+
+  // earcut()'s signature in the worker; data is copied (it is usually a small array).
+  async earcut(data, holeIndices, dim = 2) {
+    checkEarcutInput(data, holeIndices, dim);
+    const holes = holeIndices == null ? holeIndices : Array.from(holeIndices);
+    const { triangles, extraPoints } = await this.request('earcut', [data, holes, dim]);
+    triangles.extraPoints = extraPoints;
+    return triangles;
   }
 
   // The GeoJSON is read on this thread (it cannot be transferred); the coordinates go to the

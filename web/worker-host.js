@@ -32,6 +32,12 @@ export function createHost(api, post) {
     init: () => undefined,
     triangulate: (onProgress, input, options) =>
       api.triangulate(input, { ...options, onProgress }),
+    triangulatePolygons: (_, polygons, options) => api.triangulatePolygons(polygons, options),
+    // The index array's extraPoints would not survive the message: sent beside it.
+    earcut: (_, data, holeIndices, dim) => {
+      const triangles = api.earcut(data, holeIndices, dim);
+      return { triangles, extraPoints: triangles.extraPoints };
+    },
     memoryUsage: () => api.memoryUsage(),
     create: (_, id, options) => { triangulations.set(id, new api.Triangulation(options)); },
     insertPoints: (onProgress, id, xy, values) =>

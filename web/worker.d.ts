@@ -2,9 +2,10 @@
 // worker_threads Worker (Node). Coordinates go to the worker and results come back as
 // transferred buffers, not copies.
 import type {
-  Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, GeoJSONResult, InterpolateOptions,
-  Location, MemoryUsage, Mesh, MeshOptions, ProgressOptions, RasterOptions, RefineOptions,
-  ResultsOptions, TriangleFeatureCollection, TriangulateInput, TriangulateOptions,
+  Coordinates, CoreStats, EarcutTriangles, GeoJSONInput, GeoJSONOptions, GeoJSONResult,
+  InterpolateOptions, Location, MemoryUsage, Mesh, MeshOptions, Offsets, PolygonBatch,
+  PolygonTriangles, ProgressOptions, RasterOptions, RefineOptions, ResultsOptions,
+  TriangleFeatureCollection, TriangulateInput, TriangulateOptions, TriangulatePolygonsOptions,
   TriangulateResult, TriangulationOptions, Keep, FillRule,
 } from './index.js';
 
@@ -34,6 +35,12 @@ export class GeocdtWorker {
   triangulateGeoJSON(
     geojson: GeoJSONInput,
     options?: GeoJSONOptions): Promise<TriangleFeatureCollection | GeoJSONResult>;
+  /** The batch's typed arrays are transferred to the worker (transfer: false copies them). */
+  triangulatePolygons(
+    polygons: PolygonBatch,
+    options?: TriangulatePolygonsOptions & TransferOptions): Promise<PolygonTriangles>;
+  earcut(
+    data: Coordinates, holeIndices?: Offsets | null, dim?: number): Promise<EarcutTriangles>;
   memoryUsage(): Promise<MemoryUsage>;
   /** A Triangulation that lives in the worker. */
   createTriangulation(options?: TriangulationOptions): RemoteTriangulation;

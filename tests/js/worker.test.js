@@ -2,7 +2,7 @@
 import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { createWorker } from 'geocdt/worker';
-import { init, triangulate, triangulateGeoJSON } from 'geocdt';
+import { init, triangulate, triangulateGeoJSON, triangulatePolygons, earcut } from 'geocdt';
 import { createHost } from '../../web/worker-host.js';
 import { checkMesh } from './support/invariants.js';
 import { flatPolylines, uniform } from './support/inputs.js';
@@ -21,6 +21,29 @@ test('triangulate in the worker equals triangulate here', async () => {
     assert.deepEqual(there[key], here[key], key);
   }
   assert.equal(there.stats.inserted, 20_000);
+});
+
+test('triangulatePolygons and earcut in the worker equal them here', async () => {
+  await init();
+  const batch = () => ({
+    coords: new Int32Array([0, 0, 8, 0, 8, 8, 0, 8, 0, 0, 2, 2, 2, 6, 6, 6, 6, 2, 2, 2,
+      20, 0, 24, 4, 24, 0, 20, 4]),
+    ringOffsets: new Uint32Array([0, 5, 10, 14]),
+    polygonOffsets: new Uint32Array([0, 2, 3]),
+  });
+  const here = triangulatePolygons(batch());
+  const sent = batch();
+  const there = await worker.triangulatePolygons(sent, { fillRule: 'evenodd' });
+  assert.equal(sent.coords.byteLength, 0, 'the batch was transferred');
+  for (const key of ['triangles', 'extraPoints', 'triangleOffsets']) {
+    assert.deepEqual(there[key], here[key], key);
+  }
+  assert.equal(there.stats.crossings, 1);
+  const bow = await worker.earcut([0, 0, 4, 4, 4, 0, 0, 4], null, 2);
+  assert.deepEqual(bow, earcut([0, 0, 4, 4, 4, 0, 0, 4]));
+  assert.deepEqual(bow.extraPoints, new Float64Array([2, 2]));
+  await assert.rejects(() => worker.triangulatePolygons({ coords: [0, NaN], ringOffsets: [0, 1],
+    polygonOffsets: [0, 1] }), (e) => e instanceof RangeError && e.polygon === 0);
 });
 
 test('input buffers are transferred (detached here), unless transfer: false', async () => {

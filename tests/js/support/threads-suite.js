@@ -6,13 +6,14 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { feature } from 'topojson-client';
-import { init, triangulate, Triangulation } from 'geocdt';
+import { init, triangulate, triangulatePolygons, Triangulation } from 'geocdt';
 import createGeocdtModule from '../../../web/dist/geocdt.mjs';
 import { createApi } from '../../../web/api.js';
 import { instantiateCompiled } from '../../../web/warm-up.js';
 import { checkMesh } from './invariants.js';
 import { checkConstraints } from './constraints.js';
 import { gaussianClusters, lattice, uniform } from './inputs.js';
+import { loadSet } from '../../../scripts/datasets/polygon_sets.mjs';
 
 const require = createRequire(import.meta.url);
 
@@ -69,6 +70,18 @@ export function threadsSuite(threads) {
     if (generalPosition) assert.deepEqual(triangleSet(r), triangleSet(one));
     return r;
   };
+
+  test(`polygons of the real-world tiles on ${threads} threads: one thread's arrays`, () => {
+    const { coords, ringOffsets, polygonOffsets } = loadSet('tiles');
+    const input = { coords, ringOffsets, polygonOffsets };
+    const r = triangulatePolygons(input);
+    const one = single.triangulatePolygons(input);
+    assert.equal(r.stats.threads, threads, 'each range of polygons on a thread of its own');
+    assert.equal(one.stats.threads, 1);
+    assert.deepEqual(r.triangles, one.triangles);
+    assert.deepEqual(r.extraPoints, one.extraPoints);
+    assert.deepEqual(r.triangleOffsets, one.triangleOffsets);
+  });
 
   test(`uniform points on ${threads} threads: one thread's triangles`, () => {
     same({ points: uniform(150_000, 7) }, true);

@@ -1,8 +1,9 @@
 // Compiled with tsc --noEmit by types.test.js: the declarations must accept real use and
 // reject wrong use (the @ts-expect-error lines fail the build if they stop being errors).
 import {
-  init, triangulate, triangulateGeoJSON, geoJSONToInput, Triangulation, memoryUsage, GeocdtError,
-  type TriangulateResult, type ProgressEvent, type GeocdtErrorCode, type Position,
+  init, triangulate, triangulatePolygons, earcut, triangulateGeoJSON, geoJSONToInput,
+  Triangulation, memoryUsage, GeocdtError, type TriangulateResult, type ProgressEvent,
+  type GeocdtErrorCode, type Position, type PolygonTriangles,
 } from 'geocdt';
 import { createWorker } from 'geocdt/worker';
 
@@ -44,6 +45,18 @@ async function main(): Promise<void> {
   const offsets: Uint32Array =
     geoJSONToInput({ type: 'Point', coordinates: [0, 0] }, { flat: true }).polylines.offsets;
 
+  // Polygons in GeoArrow's layout, tile decoders' typed arrays included; earcut's signature.
+  const filled: PolygonTriangles = triangulatePolygons({
+    coords: new Int16Array(8), ringOffsets: new Uint32Array([0, 4]), polygonOffsets: [0, 1],
+  }, { fillRule: 'nonzero' });
+  const fillIndices: Uint32Array = filled.triangles;
+  const extra: Float64Array = filled.extraPoints;
+  const perPolygon: Uint32Array = filled.triangleOffsets;
+  const general: number = filled.stats.general;
+  const ear = earcut([0, 0, 1, 0, 0, 1], null);
+  const earIndices: Uint32Array = ear;
+  const earExtra: Float64Array = earcut(new Float32Array(9), [3], 3).extraPoints;
+
   const tri = new Triangulation();
   const v: Uint32Array = tri.insertPoints([0, 0, 1, 0, 0, 1], { onProgress: () => {} });
   const surface = new Triangulation({ valuesPerPoint: 2 });
@@ -80,6 +93,10 @@ async function main(): Promise<void> {
   await rv.insertPoints([0, 0, 1, 0, 0, 1], [1, 2, 3], { transfer: false });
   const remoteAt: Float64Array = await rv.interpolate([0.1, 0.1], { method: 'linear' });
   const remoteGrid: Float32Array = await rv.rasterize({ bbox: [0, 0, 1, 1], width: 2, height: 2 });
+  const remoteFill: Uint32Array = (await worker.triangulatePolygons(
+    { coords: [0, 0, 1, 0, 0, 1], ringOffsets: [0, 3], polygonOffsets: [0, 1] },
+    { transfer: false })).triangles;
+  const remoteEar: Float64Array = (await worker.earcut([0, 0, 1, 0, 0, 1])).extraPoints;
   worker.terminate();
 
   // @ts-expect-error keep takes 'all' or 'inside'
@@ -98,10 +115,15 @@ async function main(): Promise<void> {
   const phase: ProgressEvent['phase'] = 'walk';
   // @ts-expect-error no such method
   surface.interpolate([0, 0], { method: 'cubic' });
+  // @ts-expect-error the layout needs ringOffsets
+  triangulatePolygons({ coords: [0, 0], polygonOffsets: [0, 0] });
+  // @ts-expect-error no such fill rule
+  triangulatePolygons({ coords: [], ringOffsets: [0], polygonOffsets: [0] }, { fillRule: 'all' });
 
   void [t, h, inside, ms, flat, phases, firstRing, ids, perRing, offsets, v, kind, flips, heap,
     remote, located, phase, id, name, regionOf, featureOf, heights, regions, meshRegions, at,
-    grid, perPoint, remoteAt, remoteGrid];
+    grid, perPoint, remoteAt, remoteGrid, fillIndices, extra, perPolygon, general, earIndices,
+    earExtra, remoteFill, remoteEar];
 }
 
 main();
