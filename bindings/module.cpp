@@ -11,6 +11,7 @@
 #include "names.h"
 #include "one_shot.h"
 #include "output.h"
+#include "terrain.h"
 
 namespace geocdt::wasm {
 namespace {
@@ -69,6 +70,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("index", &Output::index)
       .function("segment", &Output::segment)
       .function("stats", &Output::statsObject)
+      .function("terrainStats", &Output::terrainStats)
       .function("clear", &Output::clear);
 
   class_<Input>("Input")
@@ -79,6 +81,8 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("lineOffsetsAddress", &Input::lineOffsetsAddress)
       .function("polygonOffsetsAddress", &Input::polygonOffsetsAddress)
       .function("valuesAddress", &Input::valuesAddress)
+      .function("resizeRaster", &Input::resizeRaster)
+      .function("rasterAddress", &Input::rasterAddress)
       .function("badOffset", &Input::badOffset)
       .function("badPolygonOffset", &Input::badPolygonOffset)
       .function("clear", &Input::clear);
@@ -99,7 +103,21 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("triangleCount", &Incremental::triangleCount)
       .function("polylineCount", &Incremental::polylineCount);
 
+  value_object<RasterOptions>("RasterOptions")
+      .field("maxError", &RasterOptions::maxError)
+      .field("maxTriangles", &RasterOptions::maxTriangles)
+      .field("maxVertices", &RasterOptions::maxVertices)
+      .field("hasNoData", &RasterOptions::hasNoData)
+      .field("noData", &RasterOptions::noData)
+      .field("minAngle", &RasterOptions::minAngle)
+      .field("hasBbox", &RasterOptions::hasBbox)
+      .field("minX", &RasterOptions::minX)
+      .field("minY", &RasterOptions::minY)
+      .field("maxX", &RasterOptions::maxX)
+      .field("maxY", &RasterOptions::maxY);
+
   function("triangulateInto", &triangulateInto);
+  function("triangulateRasterInto", &triangulateRasterInto);
   function("allocatedBytes", &allocatedBytes);
   function("peakBytes", &peakBytes);
 }

@@ -3,7 +3,8 @@
 # wasm when web/dist is missing or older than its sources. As root it installs Debian
 # packages; otherwise it prints the exact command to run and fails.
 #
-#   sh scripts/ensure-deps.sh demo   # what `npm run demo` needs: CMake, make, Emscripten
+#   sh scripts/ensure-deps.sh demo   # what `npm run demo` needs: CMake, make, Emscripten,
+#                                    # and the USGS elevation models of the terrain page
 #   sh scripts/ensure-deps.sh        # what `npm test` needs: those, the native compilers,
 #                                    # GoogleTest, GMP, clang-format and Chromium
 set -eu
@@ -21,6 +22,9 @@ need_file() { [ -e "$1" ] || missing="$missing $2"; }
 need_command cmake cmake
 need_command make make
 need_command em++ emscripten
+# The USGS DEMs (Jacksboro fault, topobathy) that the terrain tests, bench and demo read.
+need_file /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz \
+  python-matplotlib-data
 if [ "$profile" = test ]; then
   need_command g++ g++
   need_command clang++ clang

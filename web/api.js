@@ -3,8 +3,8 @@
 import { Kernel } from './kernel.js';
 import { GeocdtError } from './errors.js';
 import {
-  checkCoordinates, checkInput, checkOffsets, checkRaster, checkValues, checkValuesPerPoint,
-  describe, threadsError,
+  checkCoordinates, checkHeightmap, checkInput, checkOffsets, checkRaster, checkRasterOptions,
+  checkValues, checkValuesPerPoint, describe, threadsError,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 
@@ -69,6 +69,16 @@ export function createApi(instantiate) {
     const checked = checkInput(input, valuesPerPoint);
     const r = k.refineOptions(options?.refine);
     return finish(k.triangulate(checked, o, valuesPerPoint, options?.onProgress, r), started);
+  }
+
+  // A TIN from a heightmap: vertices on pixel positions (or the bbox's frame), heights in
+  // values, every pixel within options.maxError of the surface.
+  function triangulateRaster(raster, options) {
+    const started = now();
+    const k = ready();
+    const checked = checkHeightmap(raster);
+    const mesh = k.triangulateRaster(checked, checkRasterOptions(options));
+    return finish(mesh, started);
   }
 
   function triangulateGeoJSON(geojson, options) {
@@ -204,5 +214,7 @@ export function createApi(instantiate) {
     Triangulation.prototype[Symbol.dispose] = Triangulation.prototype.dispose;
   }
 
-  return { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation };
+  return {
+    init, triangulate, triangulateRaster, triangulateGeoJSON, memoryUsage, Triangulation,
+  };
 }

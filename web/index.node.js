@@ -103,5 +103,6 @@ async function instantiate(options) {
   return { wasm, threads: 1 };
 }
 
-export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =
-  createApi(instantiate);
+export const {
+  init, triangulate, triangulateRaster, triangulateGeoJSON, memoryUsage, Triangulation,
+} = createApi(instantiate);

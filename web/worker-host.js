@@ -32,6 +32,7 @@ export function createHost(api, post) {
     init: () => undefined,
     triangulate: (onProgress, input, options) =>
       api.triangulate(input, { ...options, onProgress }),
+    triangulateRaster: (_, raster, options) => api.triangulateRaster(raster, options),
     memoryUsage: () => api.memoryUsage(),
     create: (_, id, options) => { triangulations.set(id, new api.Triangulation(options)); },
     insertPoints: (onProgress, id, xy, values) =>

@@ -345,6 +345,7 @@ class Triangulation {
   struct State;  // internal: named here so that the implementation's helpers can take it
 
  private:
+  friend struct StateAccess;  // the facade's helpers that work on the state (terrain)
   std::unique_ptr<State> state_;
 };
 
