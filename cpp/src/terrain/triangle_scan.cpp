@@ -10,26 +10,67 @@ namespace {
 
 bool below(const Corner& p, const Corner& q) { return p.y < q.y || (p.y == q.y && p.x < q.x); }
 
-// ceil and floor of x to an integer (|x| < 2^62): a conversion and a compare, where the
-// library's calls cost more than a short row of pixels.
-std::int64_t ceilToInt(double x) {
-  const auto i = static_cast<std::int64_t>(x);
+// ceil and floor of x >= -1 (a pixel position, give or take rounding) as integers: a
+// conversion and a compare, where std::ceil is a library call on x86-64's baseline.
+std::int32_t ceilOf(double x) {
+  const auto i = static_cast<std::int32_t>(x);
   return i + (x > static_cast<double>(i));
 }
-std::int64_t floorToInt(double x) {
-  const auto i = static_cast<std::int64_t>(x);
+std::int32_t floorOf(double x) {
+  const auto i = static_cast<std::int32_t>(x);
   return i - (x < static_cast<double>(i));
 }
 
-// An edge from its end p lower in (y, x) order: its x at row y is p.x + (y - p.y) * slope, the
-// same arithmetic in both triangles that share it.
+// An edge stepped a row at a time from its first row (ceil of its lower end's y, its ends
+// ordered by (y, x)): the same additions in both triangles that share it, so that they
+// agree on every row's crossing to the last bit.
 struct Edge {
-  double px, py, slope;
-  double at(double y) const { return px + (y - py) * slope; }
+  double x, slope;
 };
 
 Edge edge(const Corner& p, const Corner& q) {
-  return {p.x, p.y, p.y < q.y ? (q.x - p.x) / (q.y - p.y) : 0.0};
+  if (!(p.y < q.y)) return {p.x, 0.0};  // horizontal: only its row, where it ends at p
+  const double slope = (q.x - p.x) / (q.y - p.y);
+  return {p.x + (static_cast<double>(ceilOf(p.y)) - p.y) * slope, slope};
+}
+
+// The pixels of rows first..last between two edges, `left` of `right` all the way (their
+// crossings with a row, rounded inwards: ceil and floor); both edges are moved on past them.
+// The triangle lies inside the raster, so no span leaves it.
+struct Rows {
+  const double* heights;
+  const std::uint8_t* skip;
+  std::size_t width;
+  double base, gx, gy;  // the plane: z = base + gx x + gy y
+};
+
+void scanRows(const Rows& r, Edge& left, Edge& right, std::int64_t first, std::int64_t last,
+              ScanResult& out) {
+  double best = out.error;
+  std::int64_t bestPixel = out.pixel;
+  std::uint64_t scanned = 0;
+  double xl = left.x, xr = right.x;
+  for (std::int64_t j = first; j <= last; ++j, xl += left.slope, xr += right.slope) {
+    const std::int64_t i0 = ceilOf(xl), i1 = floorOf(xr);
+    if (i1 < i0) continue;
+    scanned += static_cast<std::uint64_t>(i1 - i0 + 1);
+    const std::size_t rowStart = static_cast<std::size_t>(j) * r.width;
+    const double* row = r.heights + rowStart;
+    const double rowBase = r.base + r.gy * static_cast<double>(j);
+    double x = static_cast<double>(i0);
+    for (std::int64_t i = i0; i <= i1; ++i, x += 1) {
+      const double e = std::fabs(row[i] - (rowBase + r.gx * x));
+      if (e > best && !r.skip[rowStart + static_cast<std::size_t>(i)]) {
+        best = e;
+        bestPixel = static_cast<std::int64_t>(rowStart) + i;
+      }
+    }
+  }
+  left.x = xl;
+  right.x = xr;
+  out.error = best;
+  out.pixel = bestPixel;
+  out.scanned += scanned;
 }
 
 }  // namespace
@@ -46,41 +87,31 @@ ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raste
   const double det = ux * vy - vx * uy;
   if (!(det != 0)) return r;
   // The plane z = a.z + gx (x - a.x) + gy (y - a.y).
-  const double gx = (uz * vy - vz * uy) / det, gy = (ux * vz - vx * uz) / det;
-  const std::int64_t lastRow = static_cast<std::int64_t>(raster.height()) - 1;
-  const std::int64_t lastColumn = static_cast<std::int64_t>(raster.width()) - 1;
-  const std::int64_t first = std::max<std::int64_t>(0, ceilToInt(a.y));
-  const std::int64_t end = std::min<std::int64_t>(lastRow, floorToInt(c.y));
-  const Edge across = edge(a, c), lower = edge(a, b), upper = edge(b, c);
-  const double* heights = raster.heights();
-  const std::size_t width = raster.width();
-  double best = 0;
-  std::int64_t bestPixel = -1;
-  std::uint64_t scanned = 0;
-  for (std::int64_t j = first; j <= end; ++j) {
-    const auto y = static_cast<double>(j);
-    const double x0 = across.at(y);
-    const double x1 = y < b.y ? lower.at(y) : b.y == c.y ? b.x : upper.at(y);
-    const std::int64_t i0 = std::max<std::int64_t>(0, ceilToInt(std::min(x0, x1)));
-    const std::int64_t i1 = std::min<std::int64_t>(lastColumn, floorToInt(std::max(x0, x1)));
-    if (i1 < i0) continue;
-    scanned += static_cast<std::uint64_t>(i1 - i0 + 1);
-    const std::size_t rowStart = static_cast<std::size_t>(j) * width;
-    const double* row = heights + rowStart;
-    // z at column i of this row: base + gx * i.
-    const double base = a.z + gy * (y - a.y) - gx * a.x;
-    double column = static_cast<double>(i0);
-    for (std::int64_t i = i0; i <= i1; ++i, column += 1) {
-      const double e = std::fabs(row[i] - (base + gx * column));
-      if (e > best && !skip[rowStart + static_cast<std::size_t>(i)]) {
-        best = e;
-        bestPixel = static_cast<std::int64_t>(rowStart) + i;
-      }
+  const double inverse = 1 / det;
+  const double gx = (uz * vy - vz * uy) * inverse, gy = (ux * vz - vx * uz) * inverse;
+  const Rows rows{raster.heights(), skip, raster.width(), a.z - gx * a.x - gy * a.y, gx, gy};
+  // Rows below b lie between edges ac and ab, rows from b on between ac and bc; b is right
+  // of ac when det > 0.
+  Edge ac = edge(a, c);
+  const std::int64_t first = ceilOf(a.y), middle = ceilOf(b.y), last = floorOf(c.y);
+  const bool bRight = det > 0;
+  if (middle > first) {
+    Edge ab = edge(a, b);
+    const std::int64_t end = std::min(middle - 1, last);
+    if (bRight) {
+      scanRows(rows, ac, ab, first, end, r);
+    } else {
+      scanRows(rows, ab, ac, first, end, r);
     }
   }
-  r.error = best;
-  r.pixel = bestPixel;
-  r.scanned = scanned;
+  if (last >= middle) {
+    Edge bc = edge(b, c);
+    if (bRight) {
+      scanRows(rows, ac, bc, middle, last, r);
+    } else {
+      scanRows(rows, bc, ac, middle, last, r);
+    }
+  }
   return r;
 }
 
