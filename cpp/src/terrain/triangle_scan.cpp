@@ -21,22 +21,26 @@ std::int32_t floorOf(double x) {
   return i - (x < static_cast<double>(i));
 }
 
-// An edge stepped a row at a time from its first row (ceil of its lower end's y, its ends
-// ordered by (y, x)): the same additions in both triangles that share it, so that they
-// agree on every row's crossing to the last bit.
+// Where an edge crosses row y: p.x + (y - p.y) * slope, from its end p lower in (y, x) order.
 struct Edge {
-  double x, slope;
+  double px, py, slope;
+  double at(double y) const { return px + (y - py) * slope; }
 };
 
 Edge edge(const Corner& p, const Corner& q) {
-  if (!(p.y < q.y)) return {p.x, 0.0};  // horizontal: only its row, where it ends at p
-  const double slope = (q.x - p.x) / (q.y - p.y);
-  return {p.x + (static_cast<double>(ceilOf(p.y)) - p.y) * slope, slope};
+  return {p.x, p.y, p.y < q.y ? (q.x - p.x) / (q.y - p.y) : 0.0};
 }
 
+// Spans reach this far (in pixels) past their edges' computed crossings: a pixel on an edge,
+// which rounding may put a little outside both triangles beside it (a sliver's two edges can
+// cross a row in the wrong order), is then scanned by both. Rounding errs far less (a few
+// ulps of the raster's size), and a pixel that close to an edge is on it: the plane it is
+// measured against is the neighbour's, extended by nothing that shows.
+constexpr double kReach = 0x1p-20;
+
 // The pixels of rows first..last between two edges, `left` of `right` all the way (their
-// crossings with a row, rounded inwards: ceil and floor); both edges are moved on past them.
-// The triangle lies inside the raster, so no span leaves it.
+// crossings with a row, widened by kReach and rounded inwards). The triangle lies inside the
+// raster, but a widened span may reach past its first or last column: clamped.
 struct Rows {
   const double* heights;
   const std::uint8_t* skip;
@@ -44,19 +48,21 @@ struct Rows {
   double base, gx, gy;  // the plane: z = base + gx x + gy y
 };
 
-void scanRows(const Rows& r, Edge& left, Edge& right, std::int64_t first, std::int64_t last,
-              ScanResult& out) {
+void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t first,
+              std::int64_t last, ScanResult& out) {
   double best = out.error;
   std::int64_t bestPixel = out.pixel;
   std::uint64_t scanned = 0;
-  double xl = left.x, xr = right.x;
-  for (std::int64_t j = first; j <= last; ++j, xl += left.slope, xr += right.slope) {
-    const std::int64_t i0 = ceilOf(xl), i1 = floorOf(xr);
+  const auto lastColumn = static_cast<std::int64_t>(r.width) - 1;
+  for (std::int64_t j = first; j <= last; ++j) {
+    const auto y = static_cast<double>(j);
+    const std::int64_t i0 = std::max<std::int64_t>(0, ceilOf(left.at(y) - kReach));
+    const std::int64_t i1 = std::min(lastColumn, std::int64_t{floorOf(right.at(y) + kReach)});
     if (i1 < i0) continue;
     scanned += static_cast<std::uint64_t>(i1 - i0 + 1);
     const std::size_t rowStart = static_cast<std::size_t>(j) * r.width;
     const double* row = r.heights + rowStart;
-    const double rowBase = r.base + r.gy * static_cast<double>(j);
+    const double rowBase = r.base + r.gy * y;
     double x = static_cast<double>(i0);
     for (std::int64_t i = i0; i <= i1; ++i, x += 1) {
       const double e = std::fabs(row[i] - (rowBase + r.gx * x));
@@ -66,8 +72,6 @@ void scanRows(const Rows& r, Edge& left, Edge& right, std::int64_t first, std::i
       }
     }
   }
-  left.x = xl;
-  right.x = xr;
   out.error = best;
   out.pixel = bestPixel;
   out.scanned += scanned;
@@ -91,26 +95,23 @@ ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raste
   const double gx = (uz * vy - vz * uy) * inverse, gy = (ux * vz - vx * uz) * inverse;
   const Rows rows{raster.heights(), skip, raster.width(), a.z - gx * a.x - gy * a.y, gx, gy};
   // Rows below b lie between edges ac and ab, rows from b on between ac and bc; b is right
-  // of ac when det > 0.
-  Edge ac = edge(a, c);
-  const std::int64_t first = ceilOf(a.y), middle = ceilOf(b.y), last = floorOf(c.y);
+  // of ac when det > 0. Rows within kReach of a corner's row count (rounding aside, a corner's
+  // row is an integer only when it is a pixel's).
+  const Edge ac = edge(a, c);
+  const auto lastRow = static_cast<std::int64_t>(raster.height()) - 1;
+  const std::int64_t first = std::max<std::int64_t>(0, ceilOf(a.y - kReach));
+  const std::int64_t middle = ceilOf(b.y);
+  const std::int64_t last = std::min(lastRow, std::int64_t{floorOf(c.y + kReach)});
   const bool bRight = det > 0;
   if (middle > first) {
-    Edge ab = edge(a, b);
+    const Edge ab = edge(a, b);
     const std::int64_t end = std::min(middle - 1, last);
-    if (bRight) {
-      scanRows(rows, ac, ab, first, end, r);
-    } else {
-      scanRows(rows, ab, ac, first, end, r);
-    }
+    scanRows(rows, bRight ? ac : ab, bRight ? ab : ac, first, end, r);
   }
   if (last >= middle) {
-    Edge bc = edge(b, c);
-    if (bRight) {
-      scanRows(rows, ac, bc, middle, last, r);
-    } else {
-      scanRows(rows, bc, ac, middle, last, r);
-    }
+    // A horizontal bc (b.y == c.y) is only row c.y, whose span ends at b: a zero slope does.
+    const Edge bc = b.y < c.y ? edge(b, c) : Edge{b.x, b.y, 0.0};
+    scanRows(rows, bRight ? ac : bc, bRight ? bc : ac, std::max(middle, first), last, r);
   }
   return r;
 }
