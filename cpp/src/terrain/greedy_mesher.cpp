@@ -22,6 +22,7 @@ void GreedyMesher::grow() {
     const std::size_t n = slots + slots / 2 + 16;
     error_.resize(n, 0);
     candidate_.resize(n, -1);
+    corners_.resize(3 * n, kGhost);
     if (rings_) winding_.resize(n, 0);
   }
   const std::size_t vertices = d_.vertexCount();
@@ -32,11 +33,11 @@ void GreedyMesher::measure(std::vector<std::int32_t> windings) {
   // Vertices added on constrained edges take ids far past the store's id-ordered slots.
   d_.constraints.scatter();
   const std::int32_t slots = topo_.slotCount();
-  error_.clear();
-  candidate_.clear();
-  winding_.clear();
+  // What was measured before (and what it found) stays where the slot holds the same triangle.
+  const std::int32_t known = std::min(slots, static_cast<std::int32_t>(corners_.size() / 3));
   vertexEdge_.clear();
   grow();
+  if (corners_.size() < 3 * static_cast<std::size_t>(slots)) corners_.resize(3 * error_.size());
   if (rings_) {
     if (windings.size() != static_cast<std::size_t>(slots)) windings = slotWindings(d_);
     std::copy(windings.begin(), windings.end(), winding_.begin());
@@ -46,52 +47,73 @@ void GreedyMesher::measure(std::vector<std::int32_t> windings) {
     if (tri[e] != kGhost) vertexEdge_[tri[e]] = e;
   // Vertices on pixels are never proposed again.
   const std::uint32_t w = raster_.width(), h = raster_.height();
-  skip_.assign(static_cast<std::size_t>(w) * h, 0);
-  for (std::uint32_t v = 0; v < d_.vertexCount(); ++v) {
+  if (skip_.empty()) skip_.assign(static_cast<std::size_t>(w) * h, 0);
+  for (std::uint32_t v = skipped_; v < d_.vertexCount(); ++v) {
     const double x = d_.xy[2 * v], y = d_.xy[2 * v + 1];
     if (x == std::floor(x) && y == std::floor(y) && x >= 0 && y >= 0 && x < w && y < h)
       skip_[raster_.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))] = 1;
   }
+  skipped_ = d_.vertexCount();
   markBoundary();
-  triangleQueue_.clear();
   triangles_ = 0;
   for (std::int32_t t = 0; t < slots; ++t) {
     triangles_ += inside(t);
+    const std::uint32_t* c = &corners_[3 * t];
+    if (t < known && c[0] == tri[3 * t] && c[1] == tri[3 * t + 1] && c[2] == tri[3 * t + 2])
+      continue;
     measureTriangle(t);
   }
 }
 
 // The border segments: the edges between a triangle of the mesh and one outside it (a ghost,
 // or outside the rings). Their pixels are the border's, which triangles do not propose.
+// Without rings they are the hull's edges, found by a turn round the ghost vertex; with rings
+// every slot is looked at.
 void GreedyMesher::markBoundary() {
   segments_.clear();
   segmentQueue_.clear();
+  if (!rings_) {
+    std::int32_t start = 0;
+    const std::int32_t halfEdges = 3 * topo_.slotCount();
+    while (start < halfEdges && topo_.tri[start] != kGhost) ++start;
+    if (start == halfEdges) return;
+    // Each ghost triangle (g, a, b) has the hull edge a -> b; its twin b -> a is the mesh's.
+    std::int32_t e = start;
+    do {
+      const std::int32_t hull = nextEdge(e);
+      addBoundary(topo_.tri[topo_.adj[hull]], topo_.tri[nextEdge(topo_.adj[hull])]);
+      e = topo_.adj[prevEdge(e)];
+    } while (e != start);
+    return;
+  }
   const std::int32_t slots = topo_.slotCount();
-  const double* xy = d_.xy.data();
   for (std::int32_t t = 0; t < slots; ++t) {
     if (!inside(t)) continue;
-    for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e) {
-      if (inside(topo_.adj[e] / 3)) continue;
-      const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
-      const std::uint32_t s = segments_.add(a, b);
-      measureSegment(s);
-      // Its pixels, strictly between its ends (it runs along a row or a column).
-      const double ax = xy[2 * a], ay = xy[2 * a + 1], bx = xy[2 * b], by = xy[2 * b + 1];
-      const bool horizontal = ay == by;
-      const double lo = horizontal ? std::min(ax, bx) : std::min(ay, by);
-      const double hi = horizontal ? std::max(ax, bx) : std::max(ay, by);
-      const double fixed = horizontal ? ay : ax;
-      if (fixed != std::floor(fixed) || (ax != bx && ay != by)) continue;
-      for (double p = std::floor(lo) + 1; p < hi; ++p) {
-        const double x = horizontal ? p : fixed, y = horizontal ? fixed : p;
-        if (x < 0 || y < 0 || x >= raster_.width() || y >= raster_.height()) continue;
-        skip_[raster_.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))] = 1;
-      }
-    }
+    for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e)
+      if (!inside(topo_.adj[e] / 3)) addBoundary(topo_.tri[e], topo_.tri[nextEdge(e)]);
+  }
+}
+
+// A border segment from a to b, measured, its pixels marked.
+void GreedyMesher::addBoundary(std::uint32_t a, std::uint32_t b) {
+  measureSegment(segments_.add(a, b));
+  // Its pixels, strictly between its ends (it runs along a row or a column).
+  const double* xy = d_.xy.data();
+  const double ax = xy[2 * a], ay = xy[2 * a + 1], bx = xy[2 * b], by = xy[2 * b + 1];
+  const bool horizontal = ay == by;
+  const double lo = horizontal ? std::min(ax, bx) : std::min(ay, by);
+  const double hi = horizontal ? std::max(ax, bx) : std::max(ay, by);
+  const double fixed = horizontal ? ay : ax;
+  if (fixed != std::floor(fixed) || (ax != bx && ay != by)) return;
+  for (double p = std::floor(lo) + 1; p < hi; ++p) {
+    const double x = horizontal ? p : fixed, y = horizontal ? fixed : p;
+    if (x < 0 || y < 0 || x >= raster_.width() || y >= raster_.height()) continue;
+    skip_[raster_.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))] = 1;
   }
 }
 
 void GreedyMesher::measureTriangle(std::int32_t t) {
+  std::copy(&topo_.tri[3 * t], &topo_.tri[3 * t] + 3, &corners_[3 * t]);
   if (!inside(t)) {
     error_[t] = 0;
     candidate_[t] = -1;

@@ -36,7 +36,8 @@ class GreedyMesher {
       : d_(d), topo_(d.topo), raster_(raster), z_(z), rings_(rings), limits_(limits) {}
 
   // Measures every triangle and border segment of the mesh as it is now: at the start, and
-  // after anything else changed it (refinement). windings: every slot's, when the caller has
+  // after anything else changed it (refinement), when only the slots that hold another
+  // triangle than they did are measured again. windings: every slot's, when the caller has
   // them (refinement hands them back), else computed here.
   void measure(std::vector<std::int32_t> windings = {});
   // Inserts pixels, largest error first, until none is above maxError or a limit stops it.
@@ -53,6 +54,7 @@ class GreedyMesher {
   void measureTriangle(std::int32_t t);
   void measureSegment(std::uint32_t s);
   void markBoundary();
+  void addBoundary(std::uint32_t a, std::uint32_t b);
   // Inserts the pixel at (i, j) as vertex, located by h; false on a failure of the core.
   bool insertPixel(std::size_t pixel, const Hit& h);
   Hit locateIn(std::int32_t t, double x, double y);
@@ -72,9 +74,11 @@ class GreedyMesher {
   std::uint64_t triangles_ = 0;  // real triangles of the mesh (inside the rings)
   // Per pixel: 1 for vertices and the border's pixels, which no triangle proposes.
   std::vector<std::uint8_t> skip_;
+  std::uint32_t skipped_ = 0;  // the vertices whose pixels skip_ has
   // Per slot: its error and candidate pixel, and (with rings) its winding number.
   std::vector<double> error_;
   std::vector<std::int64_t> candidate_;
+  std::vector<std::uint32_t> corners_;  // per slot: the triangle its measurement is of
   std::vector<std::int32_t> winding_;
   std::vector<std::int32_t> vertexEdge_;  // per vertex: a half-edge out of it
   std::vector<std::int32_t> star_;
