@@ -3,13 +3,14 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
 import { buildAllDatasets } from './scripts/bundle-data.mjs';
+import { buildTerrainData } from './scripts/bundle-dem.mjs';
 
 const here = (path) => fileURLToPath(new URL(path, import.meta.url));
 
 // The binary datasets are made from npm packages at build time, never stored in the tree.
 function bundledData() {
   let files = null;
-  const all = () => (files ??= buildAllDatasets());
+  const all = () => (files ??= { ...buildAllDatasets(), ...buildTerrainData() });
   return {
     name: 'geocdt-demo-data',
     configureServer(server) {
@@ -42,6 +43,8 @@ export default defineConfig({
     emptyOutDir: true,
     target: 'es2022',
     chunkSizeWarningLimit: 1024,
+    // The vector data demo and the terrain page.
+    rollupOptions: { input: { main: here('index.html'), terrain: here('terrain.html') } },
   },
   plugins: [bundledData()],
 });

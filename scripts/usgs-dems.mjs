@@ -3,7 +3,7 @@
 //   jacksboro()  the Jacksboro fault DEM: 403 x 344 int16 metres, with its lon/lat bounds
 //   topobathy()  a 120 x 91 float32 topography and bathymetry grid, metres
 import { readFileSync } from 'node:fs';
-import { readNpz } from './npz.mjs';
+import { readNpz } from '../web/npy.js';
 
 export const kSampleData = '/usr/share/matplotlib/mpl-data/sample_data';
 
@@ -13,7 +13,7 @@ function read(file) {
   } catch (error) {
     if (error.code !== 'ENOENT') throw error;
     throw new Error(`${kSampleData}/${file} is missing: install Debian's python-matplotlib-data `
-      + '(sh scripts/ensure-deps.sh does)');
+      + '(sh scripts/ensure-deps.sh does)', { cause: error });
   }
 }
 

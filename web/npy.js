@@ -1,7 +1,8 @@
-// A reader for NumPy's .npz files (a zip archive of .npy arrays), enough for the USGS DEMs the
-// tests, benchmarks and demo use: stored or deflated entries, little-endian numeric arrays in C
-// order. No dependency: the zip's central directory is read by hand and node:zlib inflates.
-//   readNpz(bytes) -> { name: { data: TypedArray, shape: [rows, columns, ...] }, ... }
+// Readers for NumPy's .npy arrays and .npz files (a zip archive of .npy arrays), for the CLI's
+// rasters (and the tests', benchmarks' and demo's elevation models): little-endian numeric
+// arrays in C order; stored or deflated zip entries. Node only (node:zlib inflates).
+//   readNpy(bytes) -> { data: TypedArray, shape: [rows, columns, ...] }
+//   readNpz(bytes) -> { name: { data, shape }, ... }
 import { inflateRawSync } from 'node:zlib';
 
 // NumPy's type codes and the typed arrays that hold them.
@@ -43,7 +44,7 @@ function unzip(bytes) {
 }
 
 // One .npy array: its header (a Python dict literal) gives the type, the order and the shape.
-function readNpy(bytes, name) {
+export function readNpy(bytes, name = 'the array') {
   if (bytes[0] !== 0x93 || new TextDecoder().decode(bytes.subarray(1, 6)) !== 'NUMPY') {
     throw new Error(`npz: ${name} is not a .npy array`);
   }

@@ -5,7 +5,8 @@ import type {
   Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, GeoJSONResult, InterpolateOptions,
   Location, MemoryUsage, Mesh, MeshOptions, ProgressOptions, RasterOptions, RefineOptions,
   ResultsOptions, TriangleFeatureCollection, TriangulateInput, TriangulateOptions,
-  TriangulateResult, TriangulationOptions, Keep, FillRule,
+  TriangulateResult, TriangulationOptions, Keep, FillRule, Heightmap, RasterMesh,
+  RasterMeshOptions,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -34,6 +35,9 @@ export class GeocdtWorker {
   triangulateGeoJSON(
     geojson: GeoJSONInput,
     options?: GeoJSONOptions): Promise<TriangleFeatureCollection | GeoJSONResult>;
+  /** The heights and breaklines are transferred as triangulate()'s points are. */
+  triangulateRaster(
+    raster: Heightmap, options?: RasterMeshOptions & TransferOptions): Promise<RasterMesh>;
   memoryUsage(): Promise<MemoryUsage>;
   /** A Triangulation that lives in the worker. */
   createTriangulation(options?: TriangulationOptions): RemoteTriangulation;

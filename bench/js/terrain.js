@@ -1,0 +1,180 @@
+// Terrain meshes from the USGS Jacksboro fault DEM (403 x 344 int16 metres, Debian's
+// python-matplotlib-data): geocdt's triangulateRaster (wasm) against delatin (greedy
+// Delaunay insertion) and @mapbox/martini (RTIN, on the top-left 257 x 257 crop, the size it
+// needs), alternating in one process, medians of wall and main-thread CPU time. Each mesh's
+// largest error is measured over every pixel, the same way for all (pixel-error.js). Then
+// breaklines and minAngle 20 against geocdt's plain mesh. Prints the targets, met or missed.
+//   node --expose-gc bench/js/terrain.js [--rounds N] [--quick]
+import Delatin from 'delatin';
+import Martini from '@mapbox/martini';
+import { init, triangulateRaster } from 'geocdt';
+import { crop, jacksboro } from '../../scripts/usgs-dems.mjs';
+import { maxPixelError } from './pixel-error.js';
+import { median, threadCpuClock } from './timing.js';
+
+const option = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i >= 0 ? Number(process.argv[i + 1]) : fallback;
+};
+const quick = process.argv.includes('--quick');
+const rounds = option('--rounds', quick ? 3 : 7);
+const errors = quick ? [5, 20] : [1, 5, 10, 20];
+const n = (x) => x.toLocaleString('en-US');
+const ms = (x) => (x < 10 ? x.toFixed(2) : x.toFixed(1));
+const ratio = (x) => `${x.toFixed(2)}×`;
+
+await init();
+const cpuClock = threadCpuClock();
+
+// Runs the contenders in alternation, round after round; each returns a mesh summary
+// { triangles, maxError }, measured after the timing from the last run's output.
+function alternate(contenders) {
+  const results = contenders.map(() => ({ wall: [], cpu: [], output: null }));
+  for (let round = 0; round < rounds; round++) {
+    for (let k = 0; k < contenders.length; k++) {
+      const i = (k + round) % contenders.length;
+      globalThis.gc?.();
+      const started = performance.now();
+      const cpuStarted = cpuClock?.();
+      const output = contenders[i].run();
+      results[i].wall.push(performance.now() - started);
+      if (cpuClock) results[i].cpu.push(cpuClock() - cpuStarted);
+      results[i].output = output;
+    }
+  }
+  return results.map((r, i) => ({
+    name: contenders[i].name,
+    wall: median(r.wall),
+    cpu: cpuClock ? median(r.cpu) : NaN,
+    ...contenders[i].measure(r.output),
+  }));
+}
+
+const dem = jacksboro();
+const small = crop(dem, 257);
+const martini = new Martini(257);
+const smallFloat = Float32Array.from(small.heights);
+
+const geocdt = (raster, maxError, extra = {}) => ({
+  name: 'geocdt',
+  run: () => triangulateRaster(raster, { maxError, ...extra }),
+  measure: (r) => ({
+    triangles: r.triangles.length / 3,
+    ...maxPixelError({ xy: r.points, triangles: r.triangles, z: r.values }, raster),
+  }),
+});
+const delatin = (raster, maxError) => ({
+  name: 'delatin',
+  run: () => {
+    const d = new Delatin(raster.heights, raster.width, raster.height);
+    d.run(maxError);
+    return d;
+  },
+  measure: (d) => ({
+    triangles: d.triangles.length / 3,
+    ...maxPixelError({ xy: d.coords, triangles: d.triangles }, raster),
+  }),
+});
+
+const targets = [];
+function target(text, met, detail) {
+  targets.push(`- ${met ? 'met' : 'MISSED'}: ${text} (${detail})`);
+}
+
+function table(rows) {
+  console.log('| max error | library | triangles | wall ms | CPU ms | largest error '
+    + 'over every pixel | pixels in no triangle |');
+  console.log('|--:|---|--:|--:|--:|--:|--:|');
+  for (const { e, r } of rows) {
+    console.log(`| ${e} m | ${r.name} | ${n(r.triangles)} | ${ms(r.wall)} | ${ms(r.cpu)} | `
+      + `${r.maxError.toFixed(3)} | ${r.uncovered} |`);
+  }
+  console.log();
+}
+
+// The main targets: against delatin on the whole DEM.
+console.log(`## Jacksboro DEM, ${dem.width} x ${dem.height}, ${rounds} rounds\n`);
+{
+  const rows = [];
+  for (const e of errors) {
+    const [g, d] = alternate([geocdt(dem, e), delatin(dem, e)]);
+    rows.push({ e, r: g }, { e, r: d });
+    const time = (cpuClock ? g.cpu / d.cpu : g.wall / d.wall);
+    target(`${e} m: at most 1.0× delatin's triangles`, g.triangles <= d.triangles,
+      `${n(g.triangles)} against ${n(d.triangles)}, ${ratio(g.triangles / d.triangles)}`);
+    target(`${e} m: at most 0.25× delatin's time`, time <= 0.25,
+      `${ratio(time)} (${cpuClock ? 'CPU' : 'wall'}: ${ms(cpuClock ? g.cpu : g.wall)} against `
+      + `${ms(cpuClock ? d.cpu : d.wall)} ms)`);
+    target(`${e} m: every pixel within the bound`, g.maxError <= e * (1 + 1e-9) && !g.uncovered,
+      `largest ${g.maxError.toFixed(3)}, ${g.uncovered} uncovered`);
+  }
+  table(rows);
+}
+
+// Against martini on the 257 x 257 crop it can take.
+console.log(`## The top-left 257 x 257 crop, ${rounds} rounds\n`);
+{
+  const rows = [];
+  for (const e of errors) {
+    const m = {
+      name: 'martini',
+      run: () => martini.createTile(smallFloat).getMesh(e),
+      measure: ({ vertices, triangles }) => ({
+        triangles: triangles.length / 3,
+        ...maxPixelError({ xy: vertices, triangles }, small),
+      }),
+    };
+    const [g, mm, d] = alternate([geocdt(small, e), m, delatin(small, e)]);
+    rows.push({ e, r: g }, { e, r: mm }, { e, r: d });
+    const time = cpuClock ? g.cpu / mm.cpu : g.wall / mm.wall;
+    target(`crop, ${e} m: at most 0.6× martini's triangles`, g.triangles <= 0.6 * mm.triangles,
+      `${n(g.triangles)} against ${n(mm.triangles)}, ${ratio(g.triangles / mm.triangles)}`);
+    target(`crop, ${e} m (aim): martini's time`, time <= 1, `${ratio(time)}`);
+  }
+  table(rows);
+}
+
+// Breaklines (three lines across the DEM, crossing each other and its edges, and a closed
+// one) and minAngle 20, against the plain mesh.
+const breaklines = [
+  [-10, 330, 120, 230, 260, 150, 415, 20],
+  [30, -5, 160, 120, 250, 200, 330, 350],
+  [0, 100, 402, 180],
+  [200, 60, 260, 60, 260, 110, 200, 110, 200, 60],
+];
+console.log(`## Breaklines and minAngle 20 at 5 m and 20 m, ${rounds} rounds\n`);
+{
+  console.log('| max error | mesh | triangles | Steiner points | wall ms | CPU ms | vs plain '
+    + '| largest error over every pixel |');
+  console.log('|--:|---|--:|--:|--:|--:|--:|--:|');
+  for (const e of quick ? [5] : [5, 20]) {
+    const variant = (name, extra) => ({
+      ...geocdt(dem, e, extra),
+      name,
+      measure: (r) => ({
+        triangles: r.triangles.length / 3,
+        steiner: r.stats.steinerPoints,
+        ...maxPixelError({ xy: r.points, triangles: r.triangles, z: r.values }, dem),
+      }),
+    });
+    const results = alternate([
+      variant('plain', {}),
+      variant('breaklines', { breaklines }),
+      variant('minAngle 20', { minAngle: 20 }),
+      variant('breaklines, minAngle 20', { breaklines, minAngle: 20 }),
+    ]);
+    const plain = results[0];
+    const time = (r) => (cpuClock ? r.cpu : r.wall);
+    for (const r of results) {
+      console.log(`| ${e} m | ${r.name} | ${n(r.triangles)} | ${n(r.steiner)} | ${ms(r.wall)} | `
+        + `${ms(r.cpu)} | ${ratio(time(r) / time(plain))} | ${r.maxError.toFixed(3)} |`);
+    }
+    const both = results[3];
+    target(`${e} m: breaklines and minAngle 20 at most 1.5× the plain mesh's time`,
+      time(both) <= 1.5 * time(plain), ratio(time(both) / time(plain)));
+  }
+  console.log();
+}
+
+console.log('## Targets\n');
+console.log(targets.join('\n'));
