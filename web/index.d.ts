@@ -144,8 +144,9 @@ export interface CoreStats {
   steinerPoints: number;
   /**
    * Triangles of the refined part that miss minAngle or maxArea after the last refinement:
-   * those in corners where input segments meet at a smaller angle, where rounding left a
-   * convex-hull edge unsplittable (keep: 'all'), and what the cap left.
+   * those in corners where input segments meet at a smaller angle (their angle; maxArea holds
+   * there too), where rounding left a convex-hull edge unsplittable (keep: 'all'), and what
+   * the cap left.
    */
   refineSkipped: number;
   /** 1 when maxSteinerPoints ended the last refinement, else 0. */

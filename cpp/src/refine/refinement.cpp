@@ -241,11 +241,16 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
     if (l < best) best = l, k0 = k;
   }
   const std::uint32_t p = corner[k0], q = corner[(k0 + 1) % 3], r = corner[(k0 + 2) % 3];
-  // Most triangles have an end of their shortest edge on no subsegment. One too large (and
-  // not skinny) is split wherever it lies: an input angle is no reason to leave it.
-  if (skinny && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q))
-    return Outcome::Skipped;
   const double qx = x(q) - x(p), qy = y(q) - y(p), rx = x(r) - x(p), ry = y(r) - y(p);
+  // maxArea holds on every triangle, as Triangle's -a does: one too large is split even where
+  // its angle is left (below) or its off-centre or circumcentre cannot go (then at its
+  // centroid, which lies inside it).
+  const bool large = 0.5 * std::fabs(qx * ry - qy * rx) > maxArea_;
+  // A skinny triangle whose shortest edge joins two subsegments meeting at a small input
+  // angle is left: its angle cannot be mended there. Most triangles have an end of their
+  // shortest edge on no subsegment.
+  if (skinny && !large && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q))
+    return Outcome::Skipped;
   const double twice = 2 * (qx * ry - qy * rx);
   const double q2 = qx * qx + qy * qy, r2 = rx * rx + ry * ry;
   double cx = (ry * q2 - qy * r2) / twice, cy = (qx * r2 - rx * q2) / twice;  // from p
@@ -264,9 +269,18 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   cy += y(p);
   if (!std::isfinite(cx) || !std::isfinite(cy)) return Outcome::Skipped;
   // Walk towards the candidate; a subsegment in the way is split if the candidate
-  // encroaches it (then the triangle is tried again), else the triangle is left.
+  // encroaches it (then the triangle is tried again), else the triangle is left, or split at
+  // its centroid when it is too large.
   std::int32_t cur = t;
   bool onEdge = false;  // of cur, where the walk ends
+  const auto blocked = [&] {
+    if (!large) return false;
+    cx = (x(p) + x(q) + x(r)) / 3;
+    cy = (y(p) + y(q) + y(r)) / 3;
+    cur = t;
+    onEdge = false;
+    return true;
+  };
   // Each step starts one edge further round (step % 3), so that the walk cannot cycle.
   for (int step = 0, first = 0;; ++step, first = first == 2 ? 0 : first + 1) {
     if (step > 100000) return Outcome::Skipped;
@@ -286,13 +300,19 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
     if (exit < 0) break;
     if (isSubsegment(exit)) {
       const std::uint32_t a = topo_.tri[exit], b = topo_.tri[nextEdge(exit)];
-      if (!encroachedBy(x(a), y(a), x(b), y(b), cx, cy)) return Outcome::Skipped;
-      const std::size_t before = subsegments_.size();
-      queueSubsegment(exit, true);
-      return subsegments_.size() > before ? Outcome::Retry : Outcome::Skipped;
+      if (encroachedBy(x(a), y(a), x(b), y(b), cx, cy)) {
+        const std::size_t before = subsegments_.size();
+        queueSubsegment(exit, true);
+        if (subsegments_.size() > before) return Outcome::Retry;
+      }
+      if (blocked()) break;
+      return Outcome::Skipped;
     }
     cur = topo_.adj[exit] / 3;
-    if (topo_.isGhost(cur)) return Outcome::Skipped;
+    if (topo_.isGhost(cur)) {
+      if (blocked()) break;
+      return Outcome::Skipped;
+    }
   }
   // The cavity: the triangles whose circumcircles hold the candidate, reached without
   // crossing subsegments. A subsegment on its border that the candidate encroaches is split
