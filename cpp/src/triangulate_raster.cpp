@@ -8,7 +8,7 @@
 #include <string>
 
 #include "geocdt/terrain.h"
-#include "refine/refinement.h"
+#include "refine/refiner.h"
 #include "terrain/breakline_pieces.h"
 #include "terrain/greedy_mesher.h"
 #include "terrain/mesh_frame.h"
@@ -231,8 +231,10 @@ void steinerHeights(Build& b, const Delaunay& d, std::size_t first, const Raster
   }
 }
 
-// Greedy insertion, then with minAngle rounds of refinement and insertion where the refined
-// mesh misses the bound, until a round inserts nothing (or after a few).
+// Greedy insertion; then with minAngle, rounds of refinement and of insertion where the
+// refined mesh misses the bound, until a round inserts nothing (or after a few). One refiner
+// serves every round, told of the pixels inserted between them: setting one up again each
+// round cost most of what refinement did (bench/EXPERIMENTS.md, T11).
 Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
             const terrain::MesherLimits& limits, TerrainStats& stats) {
   Delaunay& d = StateAccess::of(b.triangulation).delaunay;
@@ -240,21 +242,34 @@ Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
   mesher.measure();
   std::uint64_t inserted = 0;
   if (!mesher.run(inserted)) return d.lastError();
-  constexpr std::uint32_t kMaxRounds = 8;
-  while (o.minAngle > 0 && stats.refineRounds < kMaxRounds) {
+  if (o.minAngle > 0 && d.built()) {
     RefineOptions r;
     r.minAngle = o.minAngle;
     r.keep = b.rings ? Keep::Inside : Keep::All;
-    const std::size_t before = d.steiner.size();
-    std::vector<std::int32_t> windings;
-    const Status s = refineTriangulation(d, r, &windings);
-    if (!s.ok()) return s;
-    ++stats.refineRounds;
-    stats.steinerPoints += d.steiner.size() - before;
-    steinerHeights(b, d, before, raster);
-    mesher.measure(std::move(windings));
-    if (!mesher.run(inserted)) return d.lastError();
-    if (inserted == 0) break;
+    refinement::Refiner refiner(d, r);
+    refiner.start();
+    terrain::GreedyMesher::Listener listener;
+    listener.context = &refiner;
+    listener.inserted = [](void* context, std::int32_t from, std::uint32_t a, std::uint32_t v,
+                           bool onSubsegment) {
+      static_cast<refinement::Refiner*>(context)->noteInsertion(from, a, v, onSubsegment);
+    };
+    mesher.listen(listener);
+    constexpr std::uint32_t kMaxRounds = 8;
+    while (stats.refineRounds < kMaxRounds) {
+      const std::size_t before = d.steiner.size();
+      const Status s = refiner.resume();
+      if (!s.ok()) return s;
+      ++stats.refineRounds;
+      stats.steinerPoints += d.steiner.size() - before;
+      steinerHeights(b, d, before, raster);
+      const std::vector<std::int32_t>& all = refiner.windings();
+      std::vector<std::int32_t> windings;
+      if (b.rings) windings.assign(all.begin(), all.begin() + d.topo.slotCount());
+      mesher.measure(std::move(windings));
+      if (!mesher.run(inserted)) return d.lastError();
+      if (inserted == 0) break;
+    }
   }
   stats.maxError = mesher.maxError();
   stats.insertions = mesher.stats().insertions;

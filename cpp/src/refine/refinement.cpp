@@ -75,7 +75,13 @@ std::int32_t Refiner::findEdge(std::uint32_t u, std::uint32_t v) const {
 }
 
 void Refiner::rebuild() {
-  winding_ = slotWindings(d_);
+  // Without rings every slot winds 0 (open polylines wind nothing): no flood needed.
+  const std::vector<std::uint8_t>& ring = d_.constraints.ring;
+  if (std::find(ring.begin(), ring.end(), std::uint8_t{1}) == ring.end()) {
+    winding_.assign(static_cast<std::size_t>(topo_.slotCount()), 0);
+  } else {
+    winding_ = slotWindings(d_);
+  }
   vertexEdge_.assign(d_.vertexCount(), -1);
   onSubsegment_.assign(d_.vertexCount(), 0);
   // One pass: a half-edge out of each vertex (the last one), and the ends of subsegments
@@ -458,6 +464,11 @@ Refiner::Step Refiner::refineSteps(std::vector<BadTriangle>& retry,
 
 Status Refiner::run() {
   if (!d_.built()) return Status::success();
+  start();
+  return resume();
+}
+
+void Refiner::start() {
   // Steiner vertices take ids past the constraint store's id-ordered slots (EdgeSlot).
   d_.constraints.scatter();
   rebuild();
@@ -496,33 +507,59 @@ Status Refiner::run() {
           }
         }
       });
+}
+
+Status Refiner::resume() {
   std::vector<BadTriangle> retry;
-  std::vector<BadTriangle> unresolved;  // taken from the queue and left as they were
   Step step = Step::Go;
-  while (step == Step::Go) step = refineSteps(retry, unresolved);
+  while (step == Step::Go) step = refineSteps(retry, unresolved_);
   if (step == Step::Failed) return d_.lastError();
   // What is left bad: every triangle was checked when it was made, and a bad one queued; a
   // queued one was split (then it is gone, or it is among these), skipped, or is still
   // waiting. A pass over all the slots instead missed the cache for every one of them.
-  unresolved.insert(unresolved.end(), retry.begin(), retry.end());
-  bad_.drainInto(unresolved);
+  // (Those left by an earlier resume() that still hold are among them too.)
+  unresolved_.insert(unresolved_.end(), retry.begin(), retry.end());
+  bad_.drainInto(unresolved_);
   std::uint64_t left = 0;
   ++epoch_;
   stamp_.resize(topo_.slotCount(), 0);
-  forChunks(0, unresolved.size(), [&](std::size_t begin, std::size_t end) {
+  std::size_t kept = 0;
+  forChunks(0, unresolved_.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const BadTriangle& b = unresolved[i];
+      const BadTriangle& b = unresolved_[i];
       if (stamp_[b.slot] == epoch_ || !holds(b) || !inRegion(b.slot)) continue;
       stamp_[b.slot] = epoch_;
       const Shape s = shape(b.slot);
-      left += s.skinny(sin2_) || s.area > maxArea_;
+      const bool bad = s.skinny(sin2_) || s.area > maxArea_;
+      left += bad;
+      if (bad) unresolved_[kept++] = b;
     }
   });
+  unresolved_.resize(kept);
   winding_.resize(topo_.slotCount());
-  d_.stats.steinerPoints += added_;
+  d_.stats.steinerPoints += added_ - reported_;
+  reported_ = added_;
   d_.stats.refineSkipped = left;
   d_.stats.refineCapped = capped_;
   return Status::success();
+}
+
+void Refiner::noteInsertion(std::int32_t from, std::uint32_t a, std::uint32_t b,
+                            bool onSubsegment) {
+  const std::uint32_t v = topo_.tri[from];
+  if (onSubsegment) {
+    markOnSubsegment(v);
+    if (const EdgeSource* src = d_.constraints.find(a, v))
+      noteSegment(v, src->segment);  // the segment the split edge stood for
+    const auto hull = hullOf_.find(ConstraintStore::key(a, b));
+    if (hull != hullOf_.end()) {
+      const std::uint32_t original = hull->second;
+      hullOf_.erase(hull);
+      hullOf_[ConstraintStore::key(a, v)] = original;
+      hullOf_[ConstraintStore::key(v, b)] = original;
+    }
+  }
+  afterInsert(from);
 }
 
 }  // namespace refinement

@@ -226,6 +226,15 @@ std::int32_t GreedyMesher::edgeBetween(std::uint32_t a, std::uint32_t b) const {
 
 bool GreedyMesher::insertPixel(std::size_t pixel, const Hit& h) {
   const std::uint32_t v = d_.vertexCount();
+  // The edge split, for the listener: its ends, and whether it was constrained or on the hull.
+  std::uint32_t a = kGhost, b = kGhost;
+  bool onSubsegment = false;
+  if (h.kind == Hit::Kind::Edge) {
+    a = topo_.tri[h.edge];
+    b = topo_.tri[nextEdge(h.edge)];
+    onSubsegment =
+        topo_.fixed[h.edge] || topo_.isGhost(h.edge / 3) || topo_.isGhost(topo_.adj[h.edge] / 3);
+  }
   d_.xy.push_back(static_cast<double>(pixel % raster_.width()));
   d_.xy.push_back(static_cast<double>(pixel / raster_.width()));
   z_.push_back(raster_.at(pixel));
@@ -236,13 +245,14 @@ bool GreedyMesher::insertPixel(std::size_t pixel, const Hit& h) {
     return false;
   }
   ++stats_.insertions;
-  afterInsert(v);
+  const std::int32_t from = afterInsert(v);
+  if (listener_.inserted) listener_.inserted(listener_.context, from, a, b, onSubsegment);
   return true;
 }
 
 // The triangles around v are the ones the insertion changed: each takes its winding from the
 // unchanged triangle beyond its outer edge, tells its corners where they are, and is measured.
-void GreedyMesher::afterInsert(std::uint32_t v) {
+std::int32_t GreedyMesher::afterInsert(std::uint32_t v) {
   grow();
   const std::int32_t last = d_.lastTriangle();
   std::int32_t from = 3 * last;
@@ -269,6 +279,7 @@ void GreedyMesher::afterInsert(std::uint32_t v) {
   }
   vertexEdge_[v] = from;
   for (const std::int32_t h : star_) measureTriangle(h / 3);
+  return from;
 }
 
 double GreedyMesher::maxError() const {

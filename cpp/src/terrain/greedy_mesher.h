@@ -44,6 +44,16 @@ class GreedyMesher {
   // Returns the number inserted; a failure of the core is in d.lastError() (returns false).
   bool run(std::uint64_t& inserted);
 
+  // Told of every insertion, after it: from, a half-edge out of the new vertex; a, b the ends
+  // of the edge it split (kGhost for none) and whether that was a constrained or hull edge.
+  // Refinement in rounds listens, to keep its own record of the mesh.
+  struct Listener {
+    void (*inserted)(void* context, std::int32_t from, std::uint32_t a, std::uint32_t b,
+                     bool onSubsegment) = nullptr;
+    void* context = nullptr;
+  };
+  void listen(const Listener& listener) { listener_ = listener; }
+
   // The largest error left over every pixel the mesh covers.
   double maxError() const;
   std::uint64_t triangleCount() const { return triangles_; }
@@ -59,7 +69,8 @@ class GreedyMesher {
   bool insertPixel(std::size_t pixel, const Hit& h);
   Hit locateIn(std::int32_t t, double x, double y);
   std::int32_t edgeBetween(std::uint32_t a, std::uint32_t b) const;
-  void afterInsert(std::uint32_t v);
+  // Returns a half-edge out of v.
+  std::int32_t afterInsert(std::uint32_t v);
   bool insertTriangleCandidate(std::int32_t t);
   bool insertSegmentCandidate(std::uint32_t s);
   void grow();
@@ -70,6 +81,7 @@ class GreedyMesher {
   std::vector<double>& z_;
   bool rings_;
   MesherLimits limits_;
+  Listener listener_;
   MesherStats stats_;
   std::uint64_t triangles_ = 0;  // real triangles of the mesh (inside the rings)
   // Per pixel: 1 for vertices and the border's pixels, which no triangle proposes.
