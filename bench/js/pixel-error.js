@@ -15,7 +15,11 @@ export function maxPixelError({ xy, triangles, z }, { heights, width, height }) 
     const cx = xy[2 * c], cy = xy[2 * c + 1];
     const za = heightOf(a), zb = heightOf(b), zc = heightOf(c);
     const area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-    if (area === 0) continue;
+    // A sliver (three vertices on a breakline, a crossing ulps off it) gives its weights no
+    // digits: its pixels lie on its long edge, which a proper triangle shares.
+    const longest = Math.max((bx - ax) ** 2 + (by - ay) ** 2, (cx - ax) ** 2 + (cy - ay) ** 2,
+      (cx - bx) ** 2 + (cy - by) ** 2);
+    if (!(Math.abs(area) > 1e-9 * longest)) continue;
     const sign = area > 0 ? 1 : -1;
     // Off pixel positions (breakline and Steiner vertices) the weights round: a pixel on an
     // edge within that rounding counts as in.

@@ -31,6 +31,12 @@ function pixelErrors(r, { heights, width, height }) {
     const v = [r.triangles[t], r.triangles[t + 1], r.triangles[t + 2]];
     const x = v.map((k) => p[2 * k]), y = v.map((k) => p[2 * k + 1]);
     const z = v.map((k) => r.values[k]);
+    // A sliver (vertices on a breakline, a crossing ulps off it) gives its weights no digits:
+    // its pixels lie on its long edge, which a proper triangle shares.
+    const area = orient(x[0], y[0], x[1], y[1], x[2], y[2]);
+    const longest = Math.max(...[0, 1, 2].map((k) => (x[(k + 1) % 3] - x[k]) ** 2
+      + (y[(k + 1) % 3] - y[k]) ** 2));
+    if (!(area > 1e-9 * longest)) continue;
     for (let j = Math.max(0, Math.ceil(Math.min(...y))); j <= Math.min(height - 1,
       Math.floor(Math.max(...y))); j++) {
       for (let i = Math.max(0, Math.ceil(Math.min(...x))); i <= Math.min(width - 1,
