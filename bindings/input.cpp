@@ -31,6 +31,21 @@ bool Input::resize(double pointCount, double linePointCount, double lineCount, d
       .ok();
 }
 
+bool Input::resizeRaster(double pixels) {
+  std::vector<double>().swap(raster);
+  if (8 * pixels >= 4294967296.0) return false;
+  // The heights, and a byte a pixel and the mesh the call makes: at most two triangles a pixel.
+  reserveHeap(8 * pixels + 1 * pixels + kReservePerPoint * pixels / 2);
+  try {
+    raster.resize(static_cast<std::size_t>(pixels));
+  } catch (const std::bad_alloc&) {
+    return false;
+  } catch (const std::length_error&) {
+    return false;
+  }
+  return true;
+}
+
 double Input::badOffset() const {
   if (lineOffsets.empty()) return -1;
   if (lineOffsets[0] != 0) return 0;
@@ -69,6 +84,7 @@ void Input::clear() {
   clearCoordinates();
   std::vector<std::uint32_t>().swap(polygonOffsets);
   std::vector<double>().swap(values);
+  std::vector<double>().swap(raster);
 }
 
 void Input::clearCoordinates() {

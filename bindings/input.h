@@ -24,6 +24,8 @@ class Input {
   std::vector<std::uint32_t> polygonOffsets;
   // Values: valuesPerPoint per input point (the points, then the polylines' points), or empty.
   std::vector<double> values;
+  // The heights of triangulateRaster()'s raster, row by row.
+  std::vector<double> raster;
 
   // Sizes the arrays for JS to fill (the numbers arrive as doubles: JS may ask for more than
   // size_t holds); polygonCount -1: no polygons. false when memory runs out; everything is
@@ -35,6 +37,9 @@ class Input {
   std::uintptr_t lineOffsetsAddress() const { return address(lineOffsets); }
   std::uintptr_t polygonOffsetsAddress() const { return address(polygonOffsets); }
   std::uintptr_t valuesAddress() const { return address(values); }
+  // Sizes the raster's heights (after resize(), which frees them); false when memory runs out.
+  bool resizeRaster(double pixels);
+  std::uintptr_t rasterAddress() const { return address(raster); }
 
   // The first i where lineOffsets breaks the layout, or -1: lineOffsets[0] is 0, no offset is
   // below the one before it, and the last one is the number of points in lineCoords.

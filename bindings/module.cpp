@@ -12,6 +12,7 @@
 #include "one_shot.h"
 #include "output.h"
 #include "polygons.h"
+#include "terrain.h"
 
 namespace geocdt::wasm {
 namespace {
@@ -70,6 +71,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("index", &Output::index)
       .function("segment", &Output::segment)
       .function("stats", &Output::statsObject)
+      .function("terrainStats", &Output::terrainStats)
       .function("clear", &Output::clear);
 
   class_<Input>("Input")
@@ -80,6 +82,8 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("lineOffsetsAddress", &Input::lineOffsetsAddress)
       .function("polygonOffsetsAddress", &Input::polygonOffsetsAddress)
       .function("valuesAddress", &Input::valuesAddress)
+      .function("resizeRaster", &Input::resizeRaster)
+      .function("rasterAddress", &Input::rasterAddress)
       .function("badOffset", &Input::badOffset)
       .function("badPolygonOffset", &Input::badPolygonOffset)
       .function("clear", &Input::clear);
@@ -112,7 +116,21 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("segment", &PolygonCall::segment)
       .function("stats", &PolygonCall::stats);
 
+  value_object<RasterOptions>("RasterOptions")
+      .field("maxError", &RasterOptions::maxError)
+      .field("maxTriangles", &RasterOptions::maxTriangles)
+      .field("maxVertices", &RasterOptions::maxVertices)
+      .field("hasNoData", &RasterOptions::hasNoData)
+      .field("noData", &RasterOptions::noData)
+      .field("minAngle", &RasterOptions::minAngle)
+      .field("hasBbox", &RasterOptions::hasBbox)
+      .field("minX", &RasterOptions::minX)
+      .field("minY", &RasterOptions::minY)
+      .field("maxX", &RasterOptions::maxX)
+      .field("maxY", &RasterOptions::maxY);
+
   function("triangulateInto", &triangulateInto);
+  function("triangulateRasterInto", &triangulateRasterInto);
   function("allocatedBytes", &allocatedBytes);
   function("peakBytes", &peakBytes);
 }

@@ -174,6 +174,16 @@ emscripten::val statsObject(const Stats& stats) {
 
 emscripten::val Output::statsObject() const { return wasm::statsObject(stats); }
 
+emscripten::val Output::terrainStats() const {
+  emscripten::val object = emscripten::val::object();
+  object.set("maxError", terrain.maxError);
+  object.set("insertions", static_cast<double>(terrain.insertions));
+  object.set("scannedPixels", static_cast<double>(terrain.scannedPixels));
+  object.set("steinerPoints", static_cast<double>(terrain.steinerPoints));
+  object.set("refineRounds", static_cast<double>(terrain.refineRounds));
+  return object;
+}
+
 void Output::clear() {
   release(mesh.points);
   release(mesh.triangles);
@@ -196,6 +206,7 @@ void Output::clear() {
   release(vertexIds);
   status = Status::success();
   stats = Stats{};
+  terrain = TerrainStats{};
 }
 
 }  // namespace geocdt::wasm

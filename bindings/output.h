@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geocdt/status.h"
+#include "geocdt/terrain.h"
 #include "geocdt/triangulation.h"
 
 namespace geocdt::wasm {
@@ -53,6 +54,7 @@ class Output {
   std::vector<std::uint32_t> vertexIds;  // of the last incremental insertion
   Status status;
   Stats stats;
+  TerrainStats terrain;  // of triangulateRaster()
 
   // Byte address and element count of one array in the wasm heap (field: a Field's number).
   std::uintptr_t data(int field) const;
@@ -65,6 +67,8 @@ class Output {
   double segment() const;
   // The statistics as a JS object, one property per counter.
   emscripten::val statsObject() const;
+  // triangulateRaster()'s measurements as a JS object.
+  emscripten::val terrainStats() const;
 
   void clear();  // frees every array: the heap returns to where it was before the call
 };

@@ -4,13 +4,15 @@ import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
 import { buildAllDatasets } from './scripts/bundle-data.mjs';
 import { buildTileData } from './scripts/bundle-tiles.mjs';
+import { buildTerrainData } from './scripts/bundle-dem.mjs';
 
 const here = (path) => fileURLToPath(new URL(path, import.meta.url));
 
 // The binary datasets are made from npm packages at build time, never stored in the tree.
 function bundledData() {
   let files = null;
-  const all = () => (files ??= { ...buildAllDatasets(), ...buildTileData() });
+  const all = () =>
+    (files ??= { ...buildAllDatasets(), ...buildTileData(), ...buildTerrainData() });
   return {
     name: 'geocdt-demo-data',
     configureServer(server) {
@@ -43,8 +45,14 @@ export default defineConfig({
     emptyOutDir: true,
     target: 'es2022',
     chunkSizeWarningLimit: 1024,
-    // Two pages: the map demo and the vector tiles filled by triangulatePolygons().
-    rollupOptions: { input: { main: here('index.html'), tiles: here('tiles.html') } },
+    // The map demo, the vector tiles filled by triangulatePolygons(), and the terrain page.
+    rollupOptions: {
+      input: {
+        main: here('index.html'),
+        tiles: here('tiles.html'),
+        terrain: here('terrain.html'),
+      },
+    },
   },
   plugins: [bundledData()],
 });

@@ -15,6 +15,7 @@ const LAYERS = [
   ['delaunay'],
   ['constraints', 'labels', 'values'],
   ['parallel', 'refine'],
+  ['terrain'],
   ['.'],
   ['polygons'],
 ];

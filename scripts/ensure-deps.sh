@@ -8,6 +8,8 @@
 #   sh scripts/ensure-deps.sh cpp    # `npm run test:cpp`: CMake, make, g++, GoogleTest, GMP
 #   sh scripts/ensure-deps.sh js     # `npm run test:js`: as demo
 #   sh scripts/ensure-deps.sh        # `npm test`: all of those, clang, clang-format, Chromium
+# Every profile needs the USGS elevation models (python-matplotlib-data) of the terrain page,
+# tests and bench.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 . "$root/scripts/versions.sh"
@@ -25,6 +27,9 @@ need_file() { [ -e "$1" ] || missing="$missing $2"; }
 need_command cmake cmake
 need_command make make
 if wants "demo js test"; then need_command em++ emscripten; fi
+# The USGS DEMs (Jacksboro fault, topobathy) that the terrain tests, bench and demo read.
+need_file /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz \
+  python-matplotlib-data
 if wants "cpp test"; then
   need_command g++ g++
   need_file /usr/include/gtest/gtest.h libgtest-dev

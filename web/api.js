@@ -3,7 +3,8 @@
 import { Kernel } from './kernel.js';
 import { GeocdtError } from './errors.js';
 import {
-  checkCoordinates, checkEarcutInput, checkInput, checkOffsets, checkPolygons, checkRaster,
+  checkCoordinates, checkEarcutInput, checkHeightmap, checkInput, checkOffsets, checkPolygons,
+  checkRaster, checkRasterOptions,
   checkValues, checkValuesPerPoint, describe, threadsError,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
@@ -73,6 +74,16 @@ export function createApi(instantiate) {
     const checked = checkInput(input, valuesPerPoint);
     const r = k.refineOptions(options?.refine);
     return finish(k.triangulate(checked, o, valuesPerPoint, options?.onProgress, r), started);
+  }
+
+  // A TIN from a heightmap: vertices on pixel positions (or the bbox's frame), heights in
+  // values, every pixel within options.maxError of the surface.
+  function triangulateRaster(raster, options) {
+    const started = now();
+    const k = ready();
+    const checked = checkHeightmap(raster);
+    const mesh = k.triangulateRaster(checked, checkRasterOptions(options));
+    return finish(mesh, started);
   }
 
   function triangulateGeoJSON(geojson, options) {
@@ -234,7 +245,7 @@ export function createApi(instantiate) {
   }
 
   return {
-    init, triangulate, triangulatePolygons, earcut, triangulateGeoJSON, memoryUsage,
-    Triangulation,
+    init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON,
+    memoryUsage, Triangulation,
   };
 }

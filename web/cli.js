@@ -1,14 +1,17 @@
 #!/usr/bin/env node
 // geocdt in.geojson -o out.geojson [--keep inside] [--stats]
+// geocdt dem.asc -o tin.geojson --max-error 1 [--min-angle 20] [--breaklines lines.geojson]
 import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
-import { geoJSONToInput, init, triangulate } from './index.node.js';
+import { geoJSONToInput, init, triangulate, triangulateRaster } from './index.node.js';
 import { geoJSONResult } from './geojson.js';
 import { writeGeoJSON } from './geojson-writer.js';
 import { ProgressDisplay } from './progress-display.js';
+import { isRasterFile, readRasterFile } from './raster-file.js';
 
 const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
+       geocdt <dem.asc | dem.npy | dem.npz> [-o out.geojson] [terrain options]
 
 Triangulates a GeoJSON file: Point/MultiPoint become vertices, LineString/MultiLineString
 become constrained edges, Polygon/MultiPolygon rings become constrained edges that bound
@@ -29,7 +32,19 @@ Options:
   --stats                    print statistics to stderr
   --quiet                    no progress (a bar on a terminal, lines otherwise)
   -h, --help                 show this help
-  -v, --version              show the version`;
+  -v, --version              show the version
+
+Terrain: a heightmap (an ESRI ASCII grid, or a NumPy array of rows) becomes a triangulated
+irregular network whose every cell centre is within --max-error of it: triangles with x, y, z
+positions (an ASCII grid's coordinates, else --bbox, else column and row).
+  --max-error <height>       the largest error allowed at any cell (default 0)
+  --max-triangles <count>    stop before more triangles, largest errors first
+  --max-vertices <count>     stop before more vertices, largest errors first
+  --no-data <height>         cells of this height (and NaN) are left out (an ASCII grid's
+                             NODATA_value by default)
+  --breaklines <file>        GeoJSON lines kept as edges (their z, where given, as heights)
+  --bbox <minX,minY,maxX,maxY>  where the first and last cell centres lie
+  --min-angle <degrees>      refine to this smallest angle, heights read from the raster`;
 
 // Inputs at least this big report progress on stderr: a bar on a terminal, lines otherwise.
 const BIG_INPUT_POINTS = 200_000;
@@ -39,7 +54,14 @@ class UsageError extends Error {}
 function parseArgs(argv) {
   const args = {
     input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false,
-    stats: false, quiet: false, refine: null, threads: 1,
+    stats: false, quiet: false, refine: null, threads: 1, terrain: {}, breaklines: null,
+  };
+  const terrainNumber = (what, text, flag) => {
+    const v = Number(text);
+    if (text.trim() === '' || Number.isNaN(v) && text.toLowerCase() !== 'nan') {
+      throw new UsageError(`${flag} must be a number, not ${text}`);
+    }
+    args.terrain[what] = v;
   };
   const refine = (what, text) => {
     args.refine ??= {};
@@ -61,6 +83,16 @@ function parseArgs(argv) {
     else if (a === '--max-area') refine('maxArea', value(i++, a));
     else if (a === '--max-steiner') refine('maxSteinerPoints', value(i++, a));
     else if (a === '--threads') args.threads = value(i++, a);
+    else if (a === '--max-error') terrainNumber('maxError', value(i++, a), a);
+    else if (a === '--max-triangles') terrainNumber('maxTriangles', value(i++, a), a);
+    else if (a === '--max-vertices') terrainNumber('maxVertices', value(i++, a), a);
+    else if (a === '--no-data') terrainNumber('noData', value(i++, a), a);
+    else if (a === '--breaklines') args.breaklines = value(i++, a);
+    else if (a === '--bbox') {
+      const bbox = value(i++, a).split(',').map(Number);
+      if (bbox.length !== 4) throw new UsageError('--bbox takes minX,minY,maxX,maxY');
+      args.terrain.bbox = bbox;
+    }
     else if (a === '--stats') args.stats = true;
     else if (a === '--quiet') args.quiet = true;
     else if (a.startsWith('-') && a !== '-') throw new UsageError(`unknown option ${a}`);
@@ -102,6 +134,10 @@ async function main(argv) {
   if (args.version) {
     const pkg = JSON.parse(await readFile(new URL('../package.json', import.meta.url), 'utf8'));
     console.log(pkg.version);
+    return;
+  }
+  if (isRasterFile(args.input)) {
+    await terrain(args);
     return;
   }
   const started = performance.now();
@@ -150,11 +186,40 @@ async function main(argv) {
   }
   say(`done in ${elapsed()}`);
 
-  if (args.stats) {
-    const lines = Object.entries(mesh.stats).map(([k, v]) =>
-      `  ${k.padEnd(16)} ${Number.isInteger(v) ? n(v) : v.toFixed(1)}`);
-    process.stderr.write(`geocdt statistics:\n${lines.join('\n')}\n`);
+  if (args.stats) printStats(mesh.stats);
+}
+
+function printStats(stats) {
+  const lines = Object.entries(stats).map(([k, v]) =>
+    `  ${k.padEnd(16)} ${Number.isInteger(v) ? n(v) : v.toFixed(1)}`);
+  process.stderr.write(`geocdt statistics:\n${lines.join('\n')}\n`);
+}
+
+// A heightmap in, a TIN out: triangles with x, y, z positions.
+async function terrain(args) {
+  const loaded = init({ threads: args.threads });
+  loaded.catch(() => {});
+  const raster = readRasterFile(await readFile(args.input), args.input);
+  const options = { ...args.terrain };
+  if (options.noData === undefined && raster.noData !== undefined) options.noData = raster.noData;
+  if (options.bbox === undefined && raster.bbox !== undefined) options.bbox = raster.bbox;
+  if (args.refine?.minAngle !== undefined) options.minAngle = args.refine.minAngle;
+  if (args.breaklines !== null) {
+    const lines = geoJSONToInput(JSON.parse(await readFile(args.breaklines, 'utf8')));
+    options.breaklines = lines.polylines;
+    if (lines.values !== undefined) {
+      options.breaklineHeights = lines.values.subarray(lines.points.length / 2);
+    }
   }
+  await loaded;
+  const mesh = triangulateRaster(raster, options);
+  const stream = args.output ? createWriteStream(args.output) : process.stdout;
+  await writeGeoJSON(mesh, stream, () => {});
+  if (stream !== process.stdout) {
+    stream.end();
+    await once(stream, 'finish');
+  }
+  if (args.stats) printStats(mesh.stats);
 }
 
 main(process.argv.slice(2)).catch((error) => {

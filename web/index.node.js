@@ -99,5 +99,6 @@ async function instantiate(options) {
 }
 
 export const {
-  init, triangulate, triangulatePolygons, earcut, triangulateGeoJSON, memoryUsage, Triangulation,
+  init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON,
+  memoryUsage, Triangulation,
 } = createApi(instantiate);

@@ -32,7 +32,7 @@ export function isNumericTypedArray(value) {
 // structuredClone) reads as empty; said as such, not as an empty input or an engine error
 // from the copy. Only an empty view can be detached, and only a detached buffer refuses
 // slice().
-function checkAttached(value, name) {
+export function checkAttached(value, name) {
   if (!ArrayBuffer.isView(value) || value.byteLength !== 0) return;
   try {
     value.buffer.slice(0, 0);
@@ -78,10 +78,33 @@ export function checkOffsets(offsets, name, things, parts) {
 }
 
 // The flat polylines form: { coords, offsets } in GeoArrow's layout.
-function checkFlatPolylines({ coords, offsets }) {
-  checkCoordinates(coords, 'polylines.coords');
-  checkOffsets(offsets, 'polylines.offsets', 'polylines', 'vertex');
+function checkFlatPolylines({ coords, offsets }, name) {
+  checkCoordinates(coords, `${name}.coords`);
+  checkOffsets(offsets, `${name}.offsets`, 'polylines', 'vertex');
   return { coords, offsets, count: offsets.length - 1, points: coords.length / 2 };
+}
+
+// Polylines as an array of arrays, or { coords, offsets }, named `name` in errors ->
+// { arrays, count, points } or { coords, offsets, count, points }.
+export function checkPolylines(polylines, name = 'polylines') {
+  if (polylines == null) return { arrays: [], count: 0, points: 0 };
+  if (typeof polylines === 'object' && !Array.isArray(polylines)
+    && !ArrayBuffer.isView(polylines) && 'coords' in polylines) {
+    return checkFlatPolylines(polylines, name);
+  }
+  if (!Array.isArray(polylines)) {
+    throw new TypeError(`geocdt: ${name} must be an array of Float64Array or number[] (one `
+      + `per polyline), or { coords, offsets }; got ${describe(polylines)}`);
+  }
+  if (typeof polylines[0] === 'number') {
+    throw new TypeError(`geocdt: ${name} must be an array of polylines (Float64Array or `
+      + `number[] each), got numbers: for one polyline, pass [line]`);
+  }
+  let total = 0;
+  for (let i = 0; i < polylines.length; i++) {
+    total += checkCoordinates(polylines[i], `${name}[${i}]`).length;
+  }
+  return { arrays: polylines, count: polylines.length, points: total / 2 };
 }
 
 // options.valuesPerPoint: a whole number from 1 (the default) up.
@@ -156,26 +179,7 @@ export function checkInput(input, valuesPerPoint = 1) {
   }
   const points = input.points == null ? new Float64Array(0)
     : checkCoordinates(input.points, 'points');
-  const polylines = input.polylines;
-  let lines = { arrays: [], count: 0, points: 0 };
-  if (polylines != null && typeof polylines === 'object' && !Array.isArray(polylines)
-    && !ArrayBuffer.isView(polylines) && 'coords' in polylines) {
-    lines = checkFlatPolylines(polylines);
-  } else if (polylines != null) {
-    if (!Array.isArray(polylines)) {
-      throw new TypeError('geocdt: polylines must be an array of Float64Array or number[] (one '
-        + `per polyline), or { coords, offsets }; got ${describe(polylines)}`);
-    }
-    if (typeof polylines[0] === 'number') {
-      throw new TypeError('geocdt: polylines must be an array of polylines (Float64Array or '
-        + `number[] each), got numbers: for one polyline, pass [line]`);
-    }
-    let total = 0;
-    for (let i = 0; i < polylines.length; i++) {
-      total += checkCoordinates(polylines[i], `polylines[${i}]`).length;
-    }
-    lines = { arrays: polylines, count: polylines.length, points: total / 2 };
-  }
+  const lines = checkPolylines(input.polylines);
   const polygons = input.polygons == null ? undefined
     : checkOffsets(input.polygons, 'polygons', 'polygons', 'polyline');
   if (input.z != null) {
@@ -287,15 +291,16 @@ export function polygonOffsetError(polygons, i, polylines, name) {
   return new RangeError(`geocdt: ${name}[${i}] is ${v}: ${why}`);
 }
 
-// The RangeError for offsets[i], the first that breaks the flat layout.
-export function offsetError({ offsets, points }, i) {
+// The RangeError for offsets[i], the first that breaks the flat layout of polylines named
+// `name`.
+export function offsetError({ offsets, points }, i, name = 'polylines') {
   const v = offsets[i];
   let why;
   if (i === 0 && v !== 0) why = 'the first offset must be 0';
   else if (i > 0 && v < offsets[i - 1]) why = `below offsets[${i - 1}] = ${offsets[i - 1]}`;
-  else if (v > points) why = `past the ${points} points of polylines.coords`;
-  else why = `the last offset must be the number of points in polylines.coords (${points})`;
-  return new RangeError(`geocdt: polylines.offsets[${i}] is ${v}: ${why}`);
+  else if (v > points) why = `past the ${points} points of ${name}.coords`;
+  else why = `the last offset must be the number of points in ${name}.coords (${points})`;
+  return new RangeError(`geocdt: ${name}.offsets[${i}] is ${v}: ${why}`);
 }
 
 // The most threads init() and createWorker() take.
@@ -314,4 +319,89 @@ export function threadsError(threads) {
       `geocdt: options.threads must be an integer from 1 to ${kMaxThreads}, got ${threads}`);
   }
   return null;
+}
+
+// triangulateRaster()'s raster: { heights, width, height }, heights row by row in any numeric
+// typed array or an array of numbers (NaN is checked by the core, which knows noData).
+export function checkHeightmap(raster) {
+  if (raster === null || typeof raster !== 'object' || Array.isArray(raster)
+    || ArrayBuffer.isView(raster)) {
+    throw new TypeError('geocdt: triangulateRaster() takes { heights, width, height }, got '
+      + `${describe(raster)}`);
+  }
+  const { heights, width, height } = raster;
+  if (!Array.isArray(heights) && !isNumericTypedArray(heights)) {
+    throw new TypeError('geocdt: raster.heights must be a numeric typed array (Float32Array, '
+      + `Int16Array, ...) or an array of numbers, row by row; got ${describe(heights)}`);
+  }
+  checkAttached(heights, 'raster.heights');
+  for (const [name, v] of [['width', width], ['height', height]]) {
+    if (!Number.isInteger(v) || v < 1) {
+      throw new RangeError(`geocdt: raster.${name} must be a whole number from 1 up, got `
+        + `${typeof v === 'number' ? v : describe(v)}`);
+    }
+  }
+  if (heights.length !== width * height) {
+    throw new RangeError(`geocdt: raster.heights has ${heights.length} numbers, but a ${width} `
+      + `x ${height} raster has ${width * height}`);
+  }
+  if (width * height >= 2 ** 31) {
+    throw new RangeError(`geocdt: a ${width} x ${height} raster has 2^31 pixels or more: cut `
+      + 'it into tiles');
+  }
+  return { heights, width, height };
+}
+
+// triangulateRaster()'s options, checked: numbers for the binding (0 for no limit), and the
+// breaklines as checkInput() gives polylines.
+export function checkRasterOptions(options) {
+  if (options != null && typeof options !== 'object') {
+    throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
+  }
+  const {
+    maxError = 0, maxTriangles, maxVertices, noData, minAngle = 0, bbox, breaklines,
+    breaklineHeights,
+  } = options ?? {};
+  const number = (name, v) => {
+    if (typeof v !== 'number') {
+      throw new TypeError(`geocdt: options.${name} must be a number, got ${describe(v)}`);
+    }
+  };
+  number('maxError', maxError);
+  if (!(maxError >= 0) || maxError === Infinity) {
+    throw new RangeError(`geocdt: options.maxError must be a finite number from 0 up, got ${
+      maxError}`);
+  }
+  const count = (name, v) => {
+    if (v === undefined) return 0;
+    number(name, v);
+    if (!Number.isInteger(v) || v < 1) {
+      throw new RangeError(`geocdt: options.${name} must be a whole number from 1 up, got ${v}`);
+    }
+    return v;
+  };
+  if (noData !== undefined) number('noData', noData);
+  number('minAngle', minAngle);
+  if (!(minAngle >= 0 && minAngle < 60)) {
+    throw new RangeError('geocdt: options.minAngle must be a number of degrees from 0 to less '
+      + `than 60, got ${minAngle}`);
+  }
+  const checked = {
+    maxError,
+    maxTriangles: count('maxTriangles', maxTriangles),
+    maxVertices: count('maxVertices', maxVertices),
+    hasNoData: noData !== undefined,
+    noData: noData ?? 0,
+    minAngle,
+    hasBbox: bbox !== undefined,
+    minX: 0, minY: 0, maxX: 0, maxY: 0,
+  };
+  if (bbox !== undefined) {
+    const b = checkRaster({ bbox, width: 1, height: 1 }, 1).bbox;
+    [checked.minX, checked.minY, checked.maxX, checked.maxY] = b;
+  }
+  const lines = checkPolylines(breaklines, 'options.breaklines');
+  const heights = breaklineHeights == null ? undefined
+    : checkValues(breaklineHeights, lines.points, 1, 'options.breaklineHeights');
+  return { options: checked, lines, heights };
 }

@@ -127,7 +127,7 @@ export class Kernel {
   // polylineCount: what the polygons may index (this call's polylines, or a Triangulation's);
   // polygonsName: where the polygons were given, for errors; valuesName: the values'.
   writeInput({ points, lines, polygons, values }, polylineCount = lines.count,
-    polygonsName = 'polygons', valuesName = 'values') {
+    polygonsName = 'polygons', valuesName = 'values', linesName = 'polylines') {
     const input = this.input;
     const polygonCount = polygons === undefined ? -1 : polygons.length - 1;
     const valueCount = values === undefined ? 0 : values.length;
@@ -148,16 +148,16 @@ export class Kernel {
     let at = input.lineCoordsAddress() / 8;
     const offsets = input.lineOffsetsAddress() / 4;
     if (lines.arrays === undefined) {
-      copyNumbers(f64, at, lines.coords, 'polylines.coords');
-      copyOffsets(u32, offsets, lines.offsets, 'polylines.offsets');
+      copyNumbers(f64, at, lines.coords, `${linesName}.coords`);
+      copyOffsets(u32, offsets, lines.offsets, `${linesName}.offsets`);
       const bad = input.badOffset();
-      if (bad >= 0) throw offsetError(lines, bad);
+      if (bad >= 0) throw offsetError(lines, bad, linesName);
       return;
     }
     u32[offsets] = 0;
     for (let i = 0; i < lines.arrays.length; i++) {
       const line = lines.arrays[i];
-      copyNumbers(f64, at, line, `polylines[${i}]`);
+      copyNumbers(f64, at, line, `${linesName}[${i}]`);
       at += line.length;
       u32[offsets + i + 1] = u32[offsets + i] + line.length / 2;
     }
@@ -451,6 +451,50 @@ export class Kernel {
     if (polygon >= 0) error.polygon = polygon;
     if (ring >= 0) error.ring = ring;
     return error;
+  }
+
+  // triangulateRaster(): checked is checkHeightmap()'s, r checkRasterOptions()'s.
+  triangulateRaster({ heights, width, height }, { options, lines, heights: lineHeights }) {
+    this.enter();
+    let ok;
+    let coreMilliseconds;
+    try {
+      const name = 'options.breaklines';
+      this.writeInput({ points: [], lines, values: lineHeights }, lines.count, 'polygons',
+        'options.breaklineHeights', name);
+      if (!this.input.resizeRaster(width * height)) {
+        throw outOfMemoryError(`the raster alone needs ${8 * width * height} bytes`);
+      }
+      copyNumbers(this.heap().HEAPF64, this.input.rasterAddress() / 8, heights, 'raster.heights');
+      const started = now();
+      ok = this.wasm.triangulateRasterInto(this.output, this.input, width, height, options);
+      coreMilliseconds = now() - started;
+    } finally {
+      this.input.clear();
+      this.leave();
+    }
+    this.check(ok, (line, point) => (line < 0 ? null : lines.arrays === undefined
+      ? coordinateError(lines.coords, 'options.breaklines.coords', 2 * lines.offsets[line], point,
+        ` of breakline ${line}`)
+      : coordinateError(lines.arrays[line], `options.breaklines[${line}]`, 0, point,
+        ` of breakline ${line}`)));
+    try {
+      const mesh = {
+        points: this.read('points'),
+        triangles: this.read('triangles'),
+        halfedges: this.read('halfedges'),
+        constrained: this.readConstrained(),
+        constraintEdges: this.read('constraintEdges'),
+        sourceOffsets: this.read('sourceOffsets'),
+        sources: this.read('sources'),
+        values: this.read('values'),
+      };
+      mesh.stats = this.output.terrainStats();
+      mesh.stats.coreMilliseconds = coreMilliseconds;
+      return mesh;
+    } finally {
+      this.output.clear();
+    }
   }
 
   createIncremental(valuesPerPoint) {

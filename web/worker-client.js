@@ -4,7 +4,8 @@
 // the heap.
 import { GeocdtError, reviveError } from './errors.js';
 import {
-  checkCoordinates, checkEarcutInput, checkInput, checkOffsets, checkPolygons, checkRaster,
+  checkCoordinates, checkEarcutInput, checkHeightmap, checkInput, checkOffsets, checkPolygons,
+  checkRaster, checkRasterOptions,
   checkValues, checkValuesPerPoint, describe,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
@@ -133,6 +134,29 @@ export class GeocdtWorker {
     const { triangles, extraPoints } = await this.request('earcut', [data, holes, dim]);
     triangles.extraPoints = extraPoints;
     return triangles;
+  }
+
+  // The heights (and the breaklines' arrays) go to the worker as triangulate()'s points do:
+  // transferred unless options.transfer is false.
+  async triangulateRaster(raster, options) {
+    const { transfer = true, ...rest } = options ?? {};
+    const { heights, width, height } = checkHeightmap(raster);
+    const { lines } = checkRasterOptions(rest);
+    const buffers = new Set();
+    const sent = { ...rest };
+    if (rest.breaklines != null) {
+      sent.breaklines = lines.arrays !== undefined
+        ? lines.arrays.map((line) => transferable(line, transfer, buffers))
+        : {
+          coords: transferable(lines.coords, transfer, buffers),
+          offsets: transferable(lines.offsets, transfer, buffers),
+        };
+    }
+    if (rest.breaklineHeights != null) {
+      sent.breaklineHeights = transferable(rest.breaklineHeights, transfer, buffers);
+    }
+    const input = { heights: transferable(heights, transfer, buffers), width, height };
+    return this.request('triangulateRaster', [input, sent], [...buffers]);
   }
 
   // The GeoJSON is read on this thread (it cannot be transferred); the coordinates go to the

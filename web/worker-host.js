@@ -38,6 +38,7 @@ export function createHost(api, post) {
       const triangles = api.earcut(data, holeIndices, dim);
       return { triangles, extraPoints: triangles.extraPoints };
     },
+    triangulateRaster: (_, raster, options) => api.triangulateRaster(raster, options),
     memoryUsage: () => api.memoryUsage(),
     create: (_, id, options) => { triangulations.set(id, new api.Triangulation(options)); },
     insertPoints: (onProgress, id, xy, values) =>

@@ -6,7 +6,8 @@ import type {
   InterpolateOptions, Location, MemoryUsage, Mesh, MeshOptions, Offsets, PolygonBatch,
   PolygonTriangles, ProgressOptions, RasterOptions, RefineOptions, ResultsOptions,
   TriangleFeatureCollection, TriangulateInput, TriangulateOptions, TriangulatePolygonsOptions,
-  TriangulateResult, TriangulationOptions, Keep, FillRule,
+  TriangulateResult, TriangulationOptions, Keep, FillRule, Heightmap, RasterMesh,
+  RasterMeshOptions,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -41,6 +42,9 @@ export class GeocdtWorker {
     options?: TriangulatePolygonsOptions & TransferOptions): Promise<PolygonTriangles>;
   earcut(
     data: Coordinates, holeIndices?: Offsets | null, dim?: number): Promise<EarcutTriangles>;
+  /** The heights and breaklines are transferred as triangulate()'s points are. */
+  triangulateRaster(
+    raster: Heightmap, options?: RasterMeshOptions & TransferOptions): Promise<RasterMesh>;
   memoryUsage(): Promise<MemoryUsage>;
   /** A Triangulation that lives in the worker. */
   createTriangulation(options?: TriangulationOptions): RemoteTriangulation;

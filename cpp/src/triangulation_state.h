@@ -34,6 +34,11 @@ struct Triangulation::State {
   }
 };
 
+// The state of a Triangulation, for the facade's functions that build on one (terrain).
+struct StateAccess {
+  static Triangulation::State& of(Triangulation& t) { return *t.state_; }
+};
+
 // Builds the caller's arrays from the internal slots: ghost triangles dropped. With
 // consume, the arrays are moved out and compacted in place, leaving delaunay to be cleared.
 // windings, unless empty, are every slot's (see slotWindings), known already.

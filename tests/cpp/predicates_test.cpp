@@ -437,6 +437,32 @@ TEST(Predicates, ExactlyDegenerateAtPowersOfTwo) {
   EXPECT_EQ(t.zero, 0);
 }
 
+// Lattice points (pixels, tile coordinates): integers below 2^25 take a shortcut past the
+// expansions when their determinant was exact in doubles. Small grids make many cocircular and
+// collinear cases; wide ones reach the bound where the permanent passes 2^53 and the shortcut
+// must give way.
+TEST(Predicates, SmallIntegerLattices) {
+  for (const int range : {4, 64, 1 << 12, 1 << 20, (1 << 25) - 1}) {
+    SCOPED_TRACE(range);
+    const auto lattice = [range](Rng& r) {
+      return static_cast<double>(pick(r, 2 * range + 1)) - range;
+    };
+    auto t =
+        check_orient2d(20000, 40 + range % 7, [&](Rng& r, double* v) { fill(r, v, 6, lattice); });
+    if (range == 4) EXPECT_GT(t.zero, 1000);
+    t = check_incircle(20000, 50 + range % 7, [&](Rng& r, double* v) { fill(r, v, 8, lattice); });
+    if (range == 4) EXPECT_GT(t.zero, 1000);
+    // Exactly cocircular, and then one point moved by one.
+    t = check_incircle(5000, 60, [&](Rng& r, double* v) { exact_circle(r, v, 0); });
+    EXPECT_EQ(t.zero, t.cases);
+    t = check_incircle(5000, 61, [&](Rng& r, double* v) {
+      exact_circle(r, v, 0);
+      v[pick(r, 8)] += pick(r, 2) ? 1 : -1;
+    });
+    EXPECT_EQ(t.zero, 0);
+  }
+}
+
 TEST(Predicates, ExactlyDegenerateWithRoundedDifferences) {
   auto t = check_orient2d(20000, 25, collinear_through_origin);
   EXPECT_EQ(t.zero, t.cases);

@@ -112,6 +112,55 @@ TEST(Refinement, MaximumArea) {
   EXPECT_GT(a.mesh.steiner.size(), 100u);
 }
 
+// maxArea holds on every triangle, in corners of small input angles too (as Triangle's -a):
+// there a triangle keeps its small angle, but not its size. Fans of segments from one vertex
+// at 2 to 15 degrees, and two segments crossing at 3 degrees, inside a square.
+TEST(Refinement, MaximumAreaInSmallAngleCorners) {
+  for (const double degrees : {2.0, 5.0, 10.0, 15.0}) {
+    SCOPED_TRACE(degrees);
+    Polylines lines = {{0, 0, 100, 0, 100, 100, 0, 100, 0, 0}};
+    const double step = degrees * 3.14159265358979323846 / 180;
+    for (int k = 1; k <= 3; ++k)
+      lines.push_back({10, 10, 10 + 80 * std::cos(k * step), 10 + 80 * std::sin(k * step)});
+    lines.push_back({5, 60, 95, 60 + 90 * std::tan(3 * 3.14159265358979323846 / 180)});
+    for (const double angle : {20.0, 30.0}) {
+      RefineOptions ro;
+      ro.minAngle = angle;
+      ro.maxArea = 2;
+      ro.keep = Keep::Inside;
+      const Refined r = refine({}, lines, ro);
+      ASSERT_TRUE(r.status.ok()) << r.status.message;
+      EXPECT_FALSE(r.stats.refineCapped);
+      EXPECT_GT(r.stats.refineSkipped, 0u) << "the corners keep their small angles";
+      EXPECT_EQ(testing::countBadTriangles(r.mesh, 0, ro.maxArea, true), 0u) << angle;
+      EXPECT_EQ(testing::checkRefined(r.mesh, {}, lines, r.ids, angle, ro.maxArea, true,
+                                      r.stats.refineSkipped),
+                "")
+          << angle;
+    }
+  }
+}
+
+// A triangle too large whose circumcentre lies across a subsegment that may not be split (an
+// input segment ulps away runs along it: overlapping_segments.h) is split at its centroid:
+// before, such triangles stayed larger than maxArea (5 of them here; 2 on the Natural Earth
+// 50m rings at 30 degrees and 0.05 square degrees).
+TEST(Refinement, MaximumAreaWhereTheCircumcentreIsBlocked) {
+  for (const double apart : {1e-15, 4e-15, 1e-14}) {
+    SCOPED_TRACE(apart);
+    const Polylines lines = {
+        {-5, -5, 15, -5, 15, 5, -5, 5, -5, -5}, {0, 0, 10, 0}, {0, 0, 10, apart}};
+    RefineOptions ro;
+    ro.minAngle = 20;
+    ro.maxArea = 0.5;
+    ro.keep = Keep::Inside;
+    const Refined r = refine({5, -0.5}, lines, ro);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_EQ(testing::countBadTriangles(r.mesh, 0, ro.maxArea, true), 0u);
+    EXPECT_EQ(testing::countBadTriangles(r.mesh, ro.minAngle, 0, true), r.stats.refineSkipped);
+  }
+}
+
 TEST(Refinement, LatticesAndRandomPoints) {
   const Polylines box = {{-1, -1, 64, -1, 64, 64, -1, 64, -1, -1}};
   for (const auto& points : {testing::latticePoints(24), testing::uniformPoints(2000, 3),

@@ -115,8 +115,8 @@ struct MeshOptions {
 inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
 
 // Delaunay refinement (Triangulation::refine): Steiner vertices are added until every
-// triangle of the refined part has all its angles at least minAngle and its area at most
-// maxArea, except where the input does not allow it (see Stats::refineSkipped).
+// triangle of the refined part has its area at most maxArea and all its angles at least
+// minAngle, except the angles the input does not allow (see Stats::refineSkipped).
 struct RefineOptions {
   // Degrees, in [0, 60). Up to about 20.7 degrees refinement provably ends; beyond it the
   // cap ends it when nothing else does (30 degrees ends on real data, 34 mostly does).
@@ -236,8 +236,9 @@ struct Stats {
   std::uint64_t valueDisagreements = 0;
   // Refinement, over all refine() calls: Steiner vertices added; triangles of the refined
   // part that miss minAngle or maxArea when the last call ended (where two input segments
-  // meet at a smaller angle than minAngle, the triangles in that corner keep it; when the cap
-  // ended the call, what was left too); and whether the cap ended the last call.
+  // meet at a smaller angle than minAngle, the triangles in that corner keep it, though not
+  // a size beyond maxArea; when the cap ended the call, what was left too); and whether the
+  // cap ended the last call.
   std::uint64_t steinerPoints = 0;
   std::uint64_t refineSkipped = 0;
   bool refineCapped = false;
@@ -343,6 +344,7 @@ class Triangulation {
   struct State;  // internal: named here so that the implementation's helpers can take it
 
  private:
+  friend struct StateAccess;  // the facade's helpers that work on the state (terrain)
   std::unique_ptr<State> state_;
 };
 

@@ -2,6 +2,7 @@
 #include "geocdt/predicates.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "exact/expansion.h"
 #include "exact/predicates_bigint.h"
@@ -163,6 +164,43 @@ Sign incircle_expansion(const double* v) {
   return incircle_from_coordinates(v);
 }
 
+// Whether every v[i] is an integer of magnitude below 2^25 (lattice points: pixels, tile
+// coordinates). Their differences are then integers below 2^26, and their products below
+// 2^52: exact in doubles.
+bool small_integers(const double* v, int n) {
+  bool all = true;
+  for (int i = 0; i < n; ++i) {
+    const double x = v[i];
+    all &= x > -0x1p25 && x < 0x1p25 && static_cast<double>(static_cast<std::int32_t>(x)) == x;
+  }
+  return all;
+}
+
+// The in-circle determinant of small integers as the filter forms it (small_integers holds),
+// and whether it is exact: when the permanent is below 2^53, every partial product and sum is
+// an integer no larger than it, so nothing rounded. (A computed permanent below 2^53 means the
+// true one is: rounding is monotonic.) Cocircular lattice points make the filter give up
+// with a determinant of exactly zero; this answers them without expansions.
+bool incircle_small_integers(const double* v, Sign& sign) {
+  const double adx = v[0] - v[6], ady = v[1] - v[7];
+  const double bdx = v[2] - v[6], bdy = v[3] - v[7];
+  const double cdx = v[4] - v[6], cdy = v[5] - v[7];
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double permanent = alift * (std::fabs(bdxcdy) + std::fabs(cdxbdy)) +
+                           blift * (std::fabs(cdxady) + std::fabs(adxcdy)) +
+                           clift * (std::fabs(adxbdy) + std::fabs(bdxady));
+  if (!(permanent < 0x1p53)) return false;
+  const double det =
+      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  sign = det > 0 ? Sign::Positive : det < 0 ? Sign::Negative : Sign::Zero;
+  return true;
+}
+
 }  // namespace
 
 Sign orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy) {
@@ -172,6 +210,11 @@ Sign orient2d_exact(double ax, double ay, double bx, double by, double cx, doubl
   // expansion needed. (NaN compares unequal and goes on to the range check.)
   if ((ax == cx || by == cy) && (ay == cy || bx == cx)) return Sign::Zero;
   double v[6] = {ax, ay, bx, by, cx, cy};
+  // Small integers: the filter's products and their difference were exact (small_integers).
+  if (small_integers(v, 6)) {
+    const double det = (ax - cx) * (by - cy) - (ay - cy) * (bx - cx);
+    return det > 0 ? Sign::Positive : det < 0 ? Sign::Negative : Sign::Zero;
+  }
   const RangeCheck range = check_range<kOrient2dLsbFloor, kOrient2dExponentCeiling>(v, 6);
   switch (range.range) {
     case Range::NotFinite:
@@ -186,6 +229,8 @@ Sign orient2d_exact(double ax, double ay, double bx, double by, double cx, doubl
 Sign incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                     double dy) {
   double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+  Sign sign;
+  if (small_integers(v, 8) && incircle_small_integers(v, sign)) return sign;
   const RangeCheck range = check_range<kIncircleLsbFloor, kIncircleExponentCeiling>(v, 8);
   switch (range.range) {
     case Range::NotFinite:

@@ -76,7 +76,13 @@ std::int32_t Refiner::findEdge(std::uint32_t u, std::uint32_t v) const {
 }
 
 void Refiner::rebuild() {
-  winding_ = slotWindings(d_);
+  // Without rings every slot winds 0 (open polylines wind nothing): no flood needed.
+  const std::vector<std::uint8_t>& ring = d_.constraints.ring;
+  if (std::find(ring.begin(), ring.end(), std::uint8_t{1}) == ring.end()) {
+    winding_.assign(static_cast<std::size_t>(topo_.slotCount()), 0);
+  } else {
+    winding_ = slotWindings(d_);
+  }
   vertexEdge_.assign(d_.vertexCount(), -1);
   onSubsegment_.assign(d_.vertexCount(), 0);
   // One pass: a half-edge out of each vertex (the last one), and the ends of subsegments
@@ -241,8 +247,9 @@ void Refiner::weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], dou
 //         p----m----q
 //
 // False when the triangle is left as it is: skinny between two subsegments at a small input
-// angle, or a candidate out of range.
-inline bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy) const {
+// angle, or a candidate out of range. large: the triangle exceeds maxArea.
+inline bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy,
+                               bool& large) const {
   const bool skinny = bad.skinny;
   // The shortest edge p -> q, the third corner r on its left.
   std::uint32_t corner[3] = {bad.a, bad.b, bad.c};
@@ -254,10 +261,15 @@ inline bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy) c
     if (l < best) best = l, k0 = k;
   }
   const std::uint32_t p = corner[k0], q = corner[(k0 + 1) % 3], r = corner[(k0 + 2) % 3];
-  // Most triangles have an end of their shortest edge on no subsegment. One too large (and
-  // not skinny) is split wherever it lies: an input angle is no reason to leave it.
-  if (skinny && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q)) return false;
   const double qx = x(q) - x(p), qy = y(q) - y(p), rx = x(r) - x(p), ry = y(r) - y(p);
+  // maxArea holds on every triangle, as Triangle's -a does: one too large is split even where
+  // its angle is left (below) or its candidate cannot go (then at its centroid).
+  large = 0.5 * std::fabs(qx * ry - qy * rx) > maxArea_;
+  // A skinny triangle whose shortest edge joins two subsegments meeting at a small input
+  // angle is left: its angle cannot be mended there. Most triangles have an end of their
+  // shortest edge on no subsegment.
+  if (skinny && !large && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q))
+    return false;
   const double twice = 2 * (qx * ry - qy * rx);
   const double q2 = qx * qx + qy * qy, r2 = rx * rx + ry * ry;
   cx = (ry * q2 - qy * r2) / twice, cy = (qx * r2 - rx * q2) / twice;  // from p
@@ -429,10 +441,19 @@ Outcome Refiner::insertWithFlips(std::int32_t cur, std::uint32_t v, double cx, d
 
 Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   double cx = 0, cy = 0;
-  if (!candidate(bad, cx, cy)) return Outcome::Skipped;
+  bool large = false;
+  if (!candidate(bad, cx, cy, large)) return Outcome::Skipped;
   std::int32_t cur = bad.slot;
   bool onEdge = false;
-  if (const std::optional<Outcome> stopped = walkToCandidate(cx, cy, cur, onEdge)) return *stopped;
+  std::optional<Outcome> stopped = walkToCandidate(cx, cy, cur, onEdge);
+  if (large && stopped == Outcome::Skipped) {
+    // Too large, and its candidate cannot go in: its centroid, which lies inside it.
+    cx = (x(bad.a) + x(bad.b) + x(bad.c)) / 3;
+    cy = (y(bad.a) + y(bad.b) + y(bad.c)) / 3;
+    cur = bad.slot;
+    stopped = walkToCandidate(cx, cy, cur, onEdge);
+  }
+  if (stopped) return *stopped;
   if (findCavity(cur, cx, cy)) return Outcome::Retry;
   return insertCandidate(cur, onEdge, cx, cy);
 }
@@ -473,6 +494,11 @@ Refiner::Step Refiner::refineSteps(std::vector<BadTriangle>& retry,
 
 Status Refiner::run() {
   if (!d_.built()) return Status::success();
+  start();
+  return resume();
+}
+
+void Refiner::start() {
   // Steiner vertices take ids past the constraint store's id-ordered slots (EdgeSlot).
   d_.constraints.scatter();
   rebuild();
@@ -498,7 +524,8 @@ Status Refiner::run() {
     hull_.push_back({x(a), y(a), x(b), y(b)});
   }
   // The scan and the loop's steps in chunks (chunks.h): run() is called once, and with both
-  // inlined a first call ran it in baseline code throughout (bench/EXPERIMENTS.md, F21).
+  // inlined it was 18 KB of wasm that a first call ran in its baseline code throughout
+  // (bench/EXPERIMENTS.md, first call 21).
   forChunks(
       0, static_cast<std::size_t>(topo_.slotCount()), [&](std::size_t begin, std::size_t end) {
         for (auto t = static_cast<std::int32_t>(begin); t < static_cast<std::int32_t>(end); ++t) {
@@ -510,33 +537,59 @@ Status Refiner::run() {
           }
         }
       });
+}
+
+Status Refiner::resume() {
   std::vector<BadTriangle> retry;
-  std::vector<BadTriangle> unresolved;  // taken from the queue and left as they were
   Step step = Step::Go;
-  while (step == Step::Go) step = refineSteps(retry, unresolved);
+  while (step == Step::Go) step = refineSteps(retry, unresolved_);
   if (step == Step::Failed) return d_.lastError();
   // What is left bad: every triangle was checked when it was made, and a bad one queued; a
   // queued one was split (then it is gone, or it is among these), skipped, or is still
   // waiting. A pass over all the slots instead missed the cache for every one of them.
-  unresolved.insert(unresolved.end(), retry.begin(), retry.end());
-  bad_.drainInto(unresolved);
+  // (Those left by an earlier resume() that still hold are among them too.)
+  unresolved_.insert(unresolved_.end(), retry.begin(), retry.end());
+  bad_.drainInto(unresolved_);
   std::uint64_t left = 0;
   ++epoch_;
   stamp_.resize(topo_.slotCount(), 0);
-  forChunks(0, unresolved.size(), [&](std::size_t begin, std::size_t end) {
+  std::size_t kept = 0;
+  forChunks(0, unresolved_.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const BadTriangle& b = unresolved[i];
+      const BadTriangle& b = unresolved_[i];
       if (stamp_[b.slot] == epoch_ || !holds(b) || !inRegion(b.slot)) continue;
       stamp_[b.slot] = epoch_;
       const Shape s = shape(b.slot);
-      left += s.skinny(sin2_) || s.area > maxArea_;
+      const bool bad = s.skinny(sin2_) || s.area > maxArea_;
+      left += bad;
+      if (bad) unresolved_[kept++] = b;
     }
   });
+  unresolved_.resize(kept);
   winding_.resize(topo_.slotCount());
-  d_.stats.steinerPoints += added_;
+  d_.stats.steinerPoints += added_ - reported_;
+  reported_ = added_;
   d_.stats.refineSkipped = left;
   d_.stats.refineCapped = capped_;
   return Status::success();
+}
+
+void Refiner::noteInsertion(std::int32_t from, std::uint32_t a, std::uint32_t b,
+                            bool onSubsegment) {
+  const std::uint32_t v = topo_.tri[from];
+  if (onSubsegment) {
+    markOnSubsegment(v);
+    if (const EdgeSource* src = d_.constraints.find(a, v))
+      noteSegment(v, src->segment);  // the segment the split edge stood for
+    const auto hull = hullOf_.find(ConstraintStore::key(a, b));
+    if (hull != hullOf_.end()) {
+      const std::uint32_t original = hull->second;
+      hullOf_.erase(hull);
+      hullOf_[ConstraintStore::key(a, v)] = original;
+      hullOf_[ConstraintStore::key(v, b)] = original;
+    }
+  }
+  afterInsert(from);
 }
 
 }  // namespace refinement

@@ -153,7 +153,17 @@ class Refiner {
     cap_ = o.maxSteinerPoints;
   }
 
-  Status run();
+  Status run();  // start(), then resume()
+  // A refinement in rounds, between which the caller inserts vertices of its own (terrain
+  // meshes, whose pixels go back in where refinement left them beyond their error bound):
+  // start() sets the refiner up once, and each resume() refines what is bad now. Each
+  // insertion of the caller's is told with noteInsertion(): from, a half-edge out of the new
+  // vertex; a, b the ends of the edge it split (kGhost for none), a subsegment or not.
+  void start();
+  Status resume();
+  void noteInsertion(std::int32_t from, std::uint32_t a, std::uint32_t b, bool onSubsegment);
+  // Every slot's winding number, kept up to date (resize to the slots after insertions).
+  const std::vector<std::int32_t>& windings() const { return winding_; }
   // The slots' windings after run(), kept up to date through it; empty if run() had nothing
   // to refine.
   void takeWindings(std::vector<std::int32_t>& out) {
@@ -233,7 +243,8 @@ class Refiner {
   // A bad triangle split at its candidate (circumcentre or off-centre), in these steps; each
   // runs once a split, inlined as one function was (its calls cost 0.4% of refinement).
   Outcome splitTriangle(const BadTriangle& bad);
-  GEOCDT_ALWAYS_INLINE bool candidate(const BadTriangle& bad, double& cx, double& cy) const;
+  GEOCDT_ALWAYS_INLINE bool candidate(const BadTriangle& bad, double& cx, double& cy,
+                                      bool& large) const;
   GEOCDT_ALWAYS_INLINE std::optional<Outcome> walkToCandidate(double cx, double cy,
                                                               std::int32_t& cur, bool& onEdge);
   GEOCDT_ALWAYS_INLINE bool findCavity(std::int32_t cur, double cx, double cy);
@@ -285,7 +296,7 @@ class Refiner {
   bool keepAll_;
   FillRule fill_;
   double maxArea_, minAngle_, sin2_ = 0, offCentre_ = 0;
-  std::uint64_t cap_ = 0, added_ = 0;
+  std::uint64_t cap_ = 0, added_ = 0, reported_ = 0;  // reported_: added_ in Stats so far
   bool capped_ = false;
   std::vector<std::int32_t> winding_;      // per slot
   std::vector<std::int32_t> vertexEdge_;   // per vertex: a half-edge out of it
@@ -297,6 +308,7 @@ class Refiner {
   std::vector<std::uint32_t> stamp_;  // per slot: the large cavity search (or count) that saw it
   std::uint32_t epoch_ = 0;
   std::vector<Subsegment> subsegments_;
+  std::vector<BadTriangle> unresolved_;  // taken from the queue and left as they were
   BadQueue bad_;
   std::unordered_set<std::uint64_t> unsplittable_;
   // With keep all, the hull's edges are segments too: each hull subsegment's original edge.

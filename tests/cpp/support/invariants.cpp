@@ -64,13 +64,13 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options) {
   // The boundary is one closed loop without reflex turns: the convex hull.
   std::vector<std::int64_t> outgoing(vertices, -1);
   std::size_t boundary = 0;
-  for (std::size_t e = 0; e < he.size(); ++e) {
+  for (std::size_t e = 0; e < he.size() && options.hull; ++e) {
     if (he[e] >= 0) continue;
     ++boundary;
     if (outgoing[tri[e]] >= 0) return describe("vertex ", tri[e], " has two boundary edges out");
     outgoing[tri[e]] = static_cast<std::int64_t>(e);
   }
-  if (triangles > 0) {
+  if (triangles > 0 && options.hull) {
     // Walking the boundary from one edge must come back after exactly `boundary` edges
     // (one loop, not several), turning left or going straight at every vertex.
     std::size_t start = 0;
@@ -122,7 +122,7 @@ std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options) {
   }
 
   // Euler: T = 2V - h - 2 over the vertices the triangles use.
-  if (triangles > 0) {
+  if (triangles > 0 && options.hull) {
     std::vector<std::uint8_t> used(vertices, 0);
     for (const std::uint32_t v : tri) used[v] = 1;
     std::size_t v = 0;

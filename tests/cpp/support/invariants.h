@@ -15,6 +15,9 @@ struct CheckOptions {
   const std::vector<double>* inputXY = nullptr;
   const std::vector<std::uint32_t>* inputToVertex = nullptr;
   bool delaunay = true;  // check local Delaunay of unconstrained interior edges
+  // The boundary is the convex hull (one convex loop, Euler's count); false for a mesh of
+  // part of it (keep inside, a terrain's area with data), whose boundary is not checked.
+  bool hull = true;
 };
 
 std::string checkTriangulation(const Mesh& mesh, const CheckOptions& options = {});

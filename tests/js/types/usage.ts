@@ -1,9 +1,10 @@
 // Compiled with tsc --noEmit by types.test.js: the declarations must accept real use and
 // reject wrong use (the @ts-expect-error lines fail the build if they stop being errors).
 import {
-  init, triangulate, triangulatePolygons, earcut, triangulateGeoJSON, geoJSONToInput,
-  Triangulation, memoryUsage, GeocdtError, type TriangulateResult, type ProgressEvent,
-  type GeocdtErrorCode, type Position, type PolygonTriangles,
+  init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON,
+  geoJSONToInput, Triangulation, memoryUsage, GeocdtError, type TriangulateResult,
+  type ProgressEvent, type GeocdtErrorCode, type Position, type PolygonTriangles,
+  type RasterMesh,
 } from 'geocdt';
 import { createWorker } from 'geocdt/worker';
 
@@ -83,7 +84,19 @@ async function main(): Promise<void> {
     }
   }
 
+  // Terrain: any numeric heights, breaklines in either form, heights in values.
+  const tin: RasterMesh = triangulateRaster(
+    { heights: new Int16Array(12), width: 4, height: 3 },
+    { maxError: 1, noData: -9999, minAngle: 20, bbox: [0, 0, 3, 2], breaklines: [[0, 0, 3, 2]],
+      breaklineHeights: [NaN, 5] });
+  const tinHeights: Float64Array = tin.values;
+  const tinError: number = tin.stats.maxError;
+  triangulateRaster({ heights: [1, 2, 3, 4], width: 2, height: 2 },
+    { breaklines: { coords: new Float32Array(4), offsets: [0, 2] }, maxTriangles: 10 });
+
   const worker = createWorker();
+  const remoteTin: RasterMesh = await worker.triangulateRaster(
+    { heights: new Float32Array(4), width: 2, height: 2 }, { transfer: false });
   const remote = await worker.triangulate({ points: [0, 0, 1, 0, 0, 1] },
     { transfer: false, onProgress: ({ fraction }) => void fraction });
   const rt = worker.createTriangulation();
@@ -119,11 +132,15 @@ async function main(): Promise<void> {
   triangulatePolygons({ coords: [0, 0], polygonOffsets: [0, 0] });
   // @ts-expect-error no such fill rule
   triangulatePolygons({ coords: [], ringOffsets: [0], polygonOffsets: [0] }, { fillRule: 'all' });
+  // @ts-expect-error a heightmap needs its width and height
+  triangulateRaster({ heights: new Float32Array(4) });
+  // @ts-expect-error maxError is a number
+  triangulateRaster({ heights: [0], width: 1, height: 1 }, { maxError: '1' });
 
   void [t, h, inside, ms, flat, phases, firstRing, ids, perRing, offsets, v, kind, flips, heap,
     remote, located, phase, id, name, regionOf, featureOf, heights, regions, meshRegions, at,
     grid, perPoint, remoteAt, remoteGrid, fillIndices, extra, perPolygon, general, earIndices,
-    earExtra, remoteFill, remoteEar];
+    earExtra, remoteFill, remoteEar, tinHeights, tinError, remoteTin];
 }
 
 main();

@@ -1,0 +1,296 @@
+// Terrain meshes from the USGS Jacksboro fault DEM (403 x 344 int16 metres, Debian's
+// python-matplotlib-data): geocdt's triangulateRaster (wasm) against delatin (greedy
+// Delaunay insertion) and @mapbox/martini (RTIN, on the top-left 257 x 257 crop, the size it
+// needs), alternating in one process, medians of wall and main-thread CPU time. Each mesh's
+// largest error is measured over every pixel, the same way for all (pixel-error.js). Then
+// breaklines and minAngle 20 against geocdt's plain mesh. Prints the targets, met or missed.
+// With --chromium, the comparisons also run in a headless Chromium page (wall time there).
+//   node --expose-gc bench/js/terrain.js [--rounds N] [--quick] [--chromium]
+import { createServer } from 'node:http';
+import { readFileSync } from 'node:fs';
+import { extname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import Delatin from 'delatin';
+import Martini from '@mapbox/martini';
+import { init, triangulateRaster } from 'geocdt';
+import { crop, jacksboro } from '../../scripts/usgs-dems.mjs';
+import { maxPixelError } from './pixel-error.js';
+import { median, threadCpuClock } from './timing.js';
+
+const option = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i >= 0 ? Number(process.argv[i + 1]) : fallback;
+};
+const quick = process.argv.includes('--quick');
+const rounds = option('--rounds', quick ? 3 : 7);
+const errors = quick ? [5, 20] : [1, 5, 10, 20];
+const n = (x) => x.toLocaleString('en-US');
+const ms = (x) => (x < 10 ? x.toFixed(2) : x.toFixed(1));
+const ratio = (x) => `${x.toFixed(2)}×`;
+
+await init();
+const cpuClock = threadCpuClock();
+
+// Runs the contenders in alternation, round after round; each returns a mesh summary
+// { triangles, maxError }, measured after the timing from the last run's output.
+function alternate(contenders) {
+  const results = contenders.map(() => ({ wall: [], cpu: [], output: null }));
+  for (let round = 0; round < rounds; round++) {
+    for (let k = 0; k < contenders.length; k++) {
+      const i = (k + round) % contenders.length;
+      globalThis.gc?.();
+      const started = performance.now();
+      const cpuStarted = cpuClock?.();
+      const output = contenders[i].run();
+      results[i].wall.push(performance.now() - started);
+      if (cpuClock) results[i].cpu.push(cpuClock() - cpuStarted);
+      results[i].output = output;
+    }
+  }
+  return results.map((r, i) => ({
+    name: contenders[i].name,
+    wall: median(r.wall),
+    cpu: cpuClock ? median(r.cpu) : NaN,
+    ...contenders[i].measure(r.output),
+  }));
+}
+
+const dem = jacksboro();
+const small = crop(dem, 257);
+const martini = new Martini(257);
+const smallFloat = Float32Array.from(small.heights);
+
+const geocdt = (raster, maxError, extra = {}) => ({
+  name: 'geocdt',
+  run: () => triangulateRaster(raster, { maxError, ...extra }),
+  measure: (r) => ({
+    triangles: r.triangles.length / 3,
+    ...maxPixelError({ xy: r.points, triangles: r.triangles, z: r.values }, raster),
+  }),
+});
+const delatin = (raster, maxError) => ({
+  name: 'delatin',
+  run: () => {
+    const d = new Delatin(raster.heights, raster.width, raster.height);
+    d.run(maxError);
+    return d;
+  },
+  measure: (d) => ({
+    triangles: d.triangles.length / 3,
+    ...maxPixelError({ xy: d.coords, triangles: d.triangles }, raster),
+  }),
+});
+
+const targets = [];
+function target(text, met, detail) {
+  targets.push(`- ${met ? 'met' : 'MISSED'}: ${text} (${detail})`);
+}
+
+function table(rows) {
+  console.log('| max error | library | triangles | wall ms | CPU ms | largest error '
+    + 'over every pixel | pixels in no triangle |');
+  console.log('|--:|---|--:|--:|--:|--:|--:|');
+  for (const { e, r } of rows) {
+    console.log(`| ${e} m | ${r.name} | ${n(r.triangles)} | ${ms(r.wall)} | ${ms(r.cpu)} | `
+      + `${r.maxError.toFixed(3)} | ${r.uncovered} |`);
+  }
+  console.log();
+}
+
+// The main targets: against delatin on the whole DEM.
+console.log(`## Jacksboro DEM, ${dem.width} x ${dem.height}, ${rounds} rounds\n`);
+{
+  const rows = [];
+  for (const e of errors) {
+    const [g, d] = alternate([geocdt(dem, e), delatin(dem, e)]);
+    rows.push({ e, r: g }, { e, r: d });
+    const time = (cpuClock ? g.cpu / d.cpu : g.wall / d.wall);
+    target(`${e} m: at most 1.0× delatin's triangles`, g.triangles <= d.triangles,
+      `${n(g.triangles)} against ${n(d.triangles)}, ${ratio(g.triangles / d.triangles)}`);
+    target(`${e} m: at most 0.25× delatin's time`, time <= 0.25,
+      `${ratio(time)} (${cpuClock ? 'CPU' : 'wall'}: ${ms(cpuClock ? g.cpu : g.wall)} against `
+      + `${ms(cpuClock ? d.cpu : d.wall)} ms)`);
+    target(`${e} m: every pixel within the bound`, g.maxError <= e * (1 + 1e-9) && !g.uncovered,
+      `largest ${g.maxError.toFixed(3)}, ${g.uncovered} uncovered`);
+  }
+  table(rows);
+}
+
+// Against martini on the 257 x 257 crop it can take.
+console.log(`## The top-left 257 x 257 crop, ${rounds} rounds\n`);
+{
+  const rows = [];
+  const equal = [];
+  for (const e of errors) {
+    const m = {
+      name: 'martini',
+      run: () => martini.createTile(smallFloat).getMesh(e),
+      measure: ({ vertices, triangles }) => ({
+        triangles: triangles.length / 3,
+        ...maxPixelError({ xy: vertices, triangles }, small),
+      }),
+    };
+    const [g, mm, d] = alternate([geocdt(small, e), m, delatin(small, e)]);
+    rows.push({ e, r: g }, { e, r: mm }, { e, r: d });
+    // martini's maxError does not bound the error at every pixel: geocdt at the error
+    // martini's mesh reached, once, for the comparison at equal measured error.
+    const atMartinis = triangulateRaster(small, { maxError: mm.maxError });
+    equal.push(`| ${e} m | ${mm.maxError.toFixed(3)} m | ${n(mm.triangles)} | `
+      + `${n(atMartinis.triangles.length / 3)} | `
+      + `${ratio(atMartinis.triangles.length / 3 / mm.triangles)} |`);
+    const time = cpuClock ? g.cpu / mm.cpu : g.wall / mm.wall;
+    target(`crop, ${e} m: at most 0.6× martini's triangles`, g.triangles <= 0.6 * mm.triangles,
+      `${n(g.triangles)} against ${n(mm.triangles)}, ${ratio(g.triangles / mm.triangles)}`);
+    target(`crop, ${e} m (aim): martini's time`, time <= 1, `${ratio(time)}`);
+  }
+  table(rows);
+  console.log('At the error martini\'s mesh reached (measured over every pixel):\n');
+  console.log('| martini\'s maxError | its largest error | martini | geocdt at that error | '
+    + 'geocdt / martini |');
+  console.log('|--:|--:|--:|--:|--:|');
+  console.log(`${equal.join('\n')}\n`);
+}
+
+// Breaklines (three lines across the DEM, crossing each other and its edges, and a closed
+// one) and minAngle 20, against the plain mesh.
+const breaklines = [
+  [-10, 330, 120, 230, 260, 150, 415, 20],
+  [30, -5, 160, 120, 250, 200, 330, 350],
+  [0, 100, 402, 180],
+  [200, 60, 260, 60, 260, 110, 200, 110, 200, 60],
+];
+console.log(`## Breaklines and minAngle 20 at 5 m and 20 m, ${rounds} rounds\n`);
+{
+  console.log('| max error | mesh | triangles | Steiner points | wall ms | CPU ms | vs plain '
+    + '| largest error over every pixel |');
+  console.log('|--:|---|--:|--:|--:|--:|--:|--:|');
+  for (const e of quick ? [5] : [5, 20]) {
+    const variant = (name, extra) => ({
+      ...geocdt(dem, e, extra),
+      name,
+      measure: (r) => ({
+        triangles: r.triangles.length / 3,
+        steiner: r.stats.steinerPoints,
+        ...maxPixelError({ xy: r.points, triangles: r.triangles, z: r.values }, dem),
+      }),
+    });
+    const results = alternate([
+      variant('plain', {}),
+      variant('breaklines', { breaklines }),
+      variant('minAngle 20', { minAngle: 20 }),
+      variant('breaklines, minAngle 20', { breaklines, minAngle: 20 }),
+    ]);
+    const plain = results[0];
+    const time = (r) => (cpuClock ? r.cpu : r.wall);
+    for (const r of results) {
+      console.log(`| ${e} m | ${r.name} | ${n(r.triangles)} | ${n(r.steiner)} | ${ms(r.wall)} | `
+        + `${ms(r.cpu)} | ${ratio(time(r) / time(plain))} | ${r.maxError.toFixed(3)} |`);
+    }
+    const both = results[3];
+    target(`${e} m: breaklines and minAngle 20 at most 1.5× the plain mesh's time`,
+      time(both) <= 1.5 * time(plain), ratio(time(both) / time(plain)));
+  }
+  console.log();
+}
+
+// --- Chromium: the same alternations in a page, wall time. ---
+
+// Runs in the page: geocdt (the browser build), delatin and martini on the DEM's bytes.
+async function measureInPage(rounds, errors) {
+  const api = await import('/web/index.browser.js');
+  const { default: Delatin } = await import('/node_modules/delatin/index.js');
+  const { default: Martini } = await import('/node_modules/@mapbox/martini/index.js');
+  await api.init({ warmUp: false });
+  const bytes = await (await fetch('/dem')).arrayBuffer();
+  const [width, height] = new Uint32Array(bytes, 0, 2);
+  const heights = new Int16Array(bytes, 8, width * height);
+  const dem = { heights, width, height };
+  const small = new Int16Array(257 * 257);
+  for (let j = 0; j < 257; j++) small.set(heights.subarray(j * width, j * width + 257), j * 257);
+  const smallFloat = Float32Array.from(small);
+  const martini = new Martini(257);
+  const median = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
+  const time = (runs) => {
+    const t = runs.map(() => []);
+    const counts = [];
+    for (let round = 0; round < rounds; round++) {
+      for (let k = 0; k < runs.length; k++) {
+        const i = (k + round) % runs.length;
+        const started = performance.now();
+        counts[i] = runs[i]();
+        t[i].push(performance.now() - started);
+      }
+    }
+    return t.map((v, i) => ({ ms: median(v), triangles: counts[i] }));
+  };
+  const rows = [];
+  for (const e of errors) {
+    const [g, d] = time([
+      () => api.triangulateRaster(dem, { maxError: e }).triangles.length / 3,
+      () => {
+        const x = new Delatin(heights, width, height);
+        x.run(e);
+        return x.triangles.length / 3;
+      },
+    ]);
+    const [gc, m] = time([
+      () => api.triangulateRaster({ heights: small, width: 257, height: 257 },
+        { maxError: e }).triangles.length / 3,
+      () => martini.createTile(smallFloat).getMesh(e).triangles.length / 3,
+    ]);
+    rows.push({ e, g, d, gc, m });
+  }
+  return rows;
+}
+
+async function chromiumRun() {
+  const root = fileURLToPath(new URL('../../', import.meta.url));
+  const bytes = new Uint8Array(8 + 2 * dem.width * dem.height);
+  new Uint32Array(bytes.buffer, 0, 2).set([dem.width, dem.height]);
+  new Int16Array(bytes.buffer, 8).set(dem.heights);
+  const types = {
+    '.js': 'text/javascript', '.mjs': 'text/javascript', '.wasm': 'application/wasm',
+  };
+  const server = createServer((request, response) => {
+    const path = decodeURIComponent(new URL(request.url, 'http://x').pathname);
+    try {
+      const body = path === '/' ? '<!doctype html><p>terrain bench</p>'
+        : path === '/dem' ? bytes : readFileSync(join(root, path));
+      const type = path === '/' ? 'text/html' : types[extname(path)] ?? 'application/octet-stream';
+      response.writeHead(200, { 'Content-Type': type }).end(body);
+    } catch {
+      response.writeHead(404).end();
+    }
+  });
+  await new Promise((done) => server.listen(0, '127.0.0.1', done));
+  const { chromium } = await import('playwright-core');
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu'],
+  });
+  try {
+    const page = await browser.newPage();
+    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    const rows = await page.evaluate(async ([source, r, e]) =>
+      new Function(`return (${source})`)()(r, e), [measureInPage.toString(), rounds, errors]);
+    console.log(`## Chromium (${rounds} rounds, wall time medians)\n`);
+    console.log('| max error | geocdt | delatin | geocdt / delatin | geocdt, crop | martini, crop '
+      + '| crop triangles, geocdt / martini |');
+    console.log('|--:|--:|--:|--:|--:|--:|--:|');
+    for (const { e, g, d, gc, m } of rows) {
+      console.log(`| ${e} m | ${ms(g.ms)} ms | ${ms(d.ms)} ms | ${ratio(g.ms / d.ms)} | `
+        + `${ms(gc.ms)} ms | ${ms(m.ms)} ms | ${ratio(gc.triangles / m.triangles)} |`);
+      target(`Chromium, ${e} m: at most 0.25× delatin's time`, g.ms <= 0.25 * d.ms,
+        ratio(g.ms / d.ms));
+    }
+    console.log();
+  } finally {
+    await browser.close();
+    server.close();
+  }
+}
+
+if (process.argv.includes('--chromium')) await chromiumRun();
+
+console.log('## Targets\n');
+console.log(targets.join('\n'));

@@ -1,0 +1,293 @@
+#include "terrain/greedy_mesher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "geocdt/predicates.h"
+#include "labels/slot_windings.h"
+#include "terrain/triangle_scan.h"
+
+namespace geocdt::terrain {
+
+bool GreedyMesher::inside(std::int32_t t) const {
+  if (topo_.isGhost(t)) return false;
+  return !rings_ || insideByRule(winding_[t], FillRule::EvenOdd);
+}
+
+// Per-slot and per-vertex arrays follow the core's, grown by half again when short.
+void GreedyMesher::grow() {
+  const auto slots = static_cast<std::size_t>(topo_.slotCount());
+  if (error_.size() < slots) {
+    const std::size_t n = slots + slots / 2 + 16;
+    error_.resize(n, 0);
+    candidate_.resize(n, -1);
+    corners_.resize(3 * n, kGhost);
+    if (rings_) winding_.resize(n, 0);
+  }
+  const std::size_t vertices = d_.vertexCount();
+  if (vertexEdge_.size() < vertices) vertexEdge_.resize(vertices + vertices / 2 + 16, -1);
+}
+
+void GreedyMesher::measure(std::vector<std::int32_t> windings) {
+  // Vertices added on constrained edges take ids far past the store's id-ordered slots.
+  d_.constraints.scatter();
+  const std::int32_t slots = topo_.slotCount();
+  // What was measured before (and what it found) stays where the slot holds the same triangle.
+  const std::int32_t known = std::min(slots, static_cast<std::int32_t>(corners_.size() / 3));
+  vertexEdge_.clear();
+  grow();
+  if (corners_.size() < 3 * static_cast<std::size_t>(slots)) corners_.resize(3 * error_.size());
+  if (rings_) {
+    if (windings.size() != static_cast<std::size_t>(slots)) windings = slotWindings(d_);
+    std::copy(windings.begin(), windings.end(), winding_.begin());
+  }
+  const std::uint32_t* tri = topo_.tri.data();
+  for (std::int32_t e = 0; e < 3 * slots; ++e)
+    if (tri[e] != kGhost) vertexEdge_[tri[e]] = e;
+  // Vertices on pixels are never proposed again.
+  const std::uint32_t w = raster_.width(), h = raster_.height();
+  if (skip_.empty()) skip_.assign(static_cast<std::size_t>(w) * h, 0);
+  for (std::uint32_t v = skipped_; v < d_.vertexCount(); ++v) {
+    const double x = d_.xy[2 * v], y = d_.xy[2 * v + 1];
+    if (x == std::floor(x) && y == std::floor(y) && x >= 0 && y >= 0 && x < w && y < h)
+      skip_[raster_.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))] = 1;
+  }
+  skipped_ = d_.vertexCount();
+  markBoundary();
+  triangles_ = 0;
+  for (std::int32_t t = 0; t < slots; ++t) {
+    triangles_ += inside(t);
+    const std::uint32_t* c = &corners_[3 * t];
+    if (t < known && c[0] == tri[3 * t] && c[1] == tri[3 * t + 1] && c[2] == tri[3 * t + 2])
+      continue;
+    measureTriangle(t);
+  }
+}
+
+// The border segments: the edges between a triangle of the mesh and one outside it (a ghost,
+// or outside the rings). Their pixels are the border's, which triangles do not propose.
+// Without rings they are the hull's edges, found by a turn round the ghost vertex; with rings
+// every slot is looked at.
+void GreedyMesher::markBoundary() {
+  segments_.clear();
+  segmentQueue_.clear();
+  if (!rings_) {
+    std::int32_t start = 0;
+    const std::int32_t halfEdges = 3 * topo_.slotCount();
+    while (start < halfEdges && topo_.tri[start] != kGhost) ++start;
+    if (start == halfEdges) return;
+    // Each ghost triangle (g, a, b) has the hull edge a -> b; its twin b -> a is the mesh's.
+    std::int32_t e = start;
+    do {
+      const std::int32_t hull = nextEdge(e);
+      addBoundary(topo_.tri[topo_.adj[hull]], topo_.tri[nextEdge(topo_.adj[hull])]);
+      e = topo_.adj[prevEdge(e)];
+    } while (e != start);
+    return;
+  }
+  const std::int32_t slots = topo_.slotCount();
+  for (std::int32_t t = 0; t < slots; ++t) {
+    if (!inside(t)) continue;
+    for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e)
+      if (!inside(topo_.adj[e] / 3)) addBoundary(topo_.tri[e], topo_.tri[nextEdge(e)]);
+  }
+}
+
+// A border segment from a to b, measured, its pixels marked.
+void GreedyMesher::addBoundary(std::uint32_t a, std::uint32_t b) {
+  measureSegment(segments_.add(a, b));
+  // Its pixels, strictly between its ends (it runs along a row or a column).
+  const double* xy = d_.xy.data();
+  const double ax = xy[2 * a], ay = xy[2 * a + 1], bx = xy[2 * b], by = xy[2 * b + 1];
+  const bool horizontal = ay == by;
+  const double lo = horizontal ? std::min(ax, bx) : std::min(ay, by);
+  const double hi = horizontal ? std::max(ax, bx) : std::max(ay, by);
+  const double fixed = horizontal ? ay : ax;
+  if (fixed != std::floor(fixed) || (ax != bx && ay != by)) return;
+  for (double p = std::floor(lo) + 1; p < hi; ++p) {
+    const double x = horizontal ? p : fixed, y = horizontal ? fixed : p;
+    if (x < 0 || y < 0 || x >= raster_.width() || y >= raster_.height()) continue;
+    skip_[raster_.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))] = 1;
+  }
+}
+
+void GreedyMesher::measureTriangle(std::int32_t t) {
+  std::copy(&topo_.tri[3 * t], &topo_.tri[3 * t] + 3, &corners_[3 * t]);
+  if (!inside(t)) {
+    error_[t] = 0;
+    candidate_[t] = -1;
+    triangleQueue_.remove(static_cast<std::uint32_t>(t));
+    return;
+  }
+  const std::uint32_t* c = &topo_.tri[3 * t];
+  const double* xy = d_.xy.data();
+  const auto corner = [&](std::uint32_t v) { return Corner{xy[2 * v], xy[2 * v + 1], z_[v]}; };
+  const ScanResult r =
+      scanTriangle(corner(c[0]), corner(c[1]), corner(c[2]), raster_, skip_.data());
+  stats_.scannedPixels += r.scanned;
+  error_[t] = r.error;
+  candidate_[t] = r.pixel;
+  if (r.pixel >= 0 && r.error > limits_.maxError) {
+    triangleQueue_.set(static_cast<std::uint32_t>(t), r.error);
+  } else {
+    triangleQueue_.remove(static_cast<std::uint32_t>(t));
+  }
+}
+
+void GreedyMesher::measureSegment(std::uint32_t s) {
+  stats_.scannedPixels += segments_.scan(s, d_.xy.data(), z_.data(), raster_);
+  const BorderSegment& seg = segments_[s];
+  if (seg.pixel >= 0 && seg.error > limits_.maxError) {
+    segmentQueue_.set(s, seg.error);
+  } else {
+    segmentQueue_.remove(s);
+  }
+}
+
+bool GreedyMesher::run(std::uint64_t& inserted) {
+  inserted = 0;
+  for (;;) {
+    const bool triangle = !triangleQueue_.empty(), segment = !segmentQueue_.empty();
+    if (!triangle && !segment) break;
+    const bool takeSegment =
+        segment && (!triangle || segmentQueue_.topError() >= triangleQueue_.topError());
+    // A point on the border adds one triangle, one inside adds two.
+    const std::uint64_t added = takeSegment ? 1 : 2;
+    if (limits_.maxTriangles > 0 && triangles_ + added > limits_.maxTriangles) break;
+    if (limits_.maxVertices > 0 && d_.vertexCount() + std::uint64_t{1} > limits_.maxVertices) break;
+    const bool ok = takeSegment
+                        ? insertSegmentCandidate(segmentQueue_.top())
+                        : insertTriangleCandidate(static_cast<std::int32_t>(triangleQueue_.top()));
+    if (!ok) return false;
+    ++inserted;
+  }
+  return true;
+}
+
+// Where (x, y), a pixel the scan of triangle t found in it, lies: decided exactly against
+// t's edges; a pixel that rounding put in t from just outside is located by a walk from t.
+Hit GreedyMesher::locateIn(std::int32_t t, double x, double y) {
+  const std::uint32_t* c = &topo_.tri[3 * t];
+  const double* xy = d_.xy.data();
+  int zeros = 0, zeroEdge = -1;
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t a = c[k], b = c[k == 2 ? 0 : k + 1];
+    const Sign s = orient2d(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1], x, y);
+    if (s == Sign::Negative) {
+      d_.setLastTriangle(t);
+      return d_.locate(x, y, false);
+    }
+    if (s == Sign::Zero) {
+      ++zeros;
+      zeroEdge = k;
+    }
+  }
+  if (zeros == 0) return {Hit::Kind::Face, 3 * t};
+  if (zeros == 1) return {Hit::Kind::Edge, 3 * t + zeroEdge};
+  return {Hit::Kind::Vertex, -1};
+}
+
+bool GreedyMesher::insertTriangleCandidate(std::int32_t t) {
+  const auto pixel = static_cast<std::size_t>(candidate_[t]);
+  const double x = static_cast<double>(pixel % raster_.width());
+  const double y = static_cast<double>(pixel / raster_.width());
+  const Hit h = locateIn(t, x, y);
+  if (h.kind == Hit::Kind::Vertex) {  // a vertex not made from this pixel sits on it
+    skip_[pixel] = 1;
+    measureTriangle(t);
+    return true;
+  }
+  if (h.kind != Hit::Kind::Face && h.kind != Hit::Kind::Edge) return false;
+  triangles_ += 2;
+  return insertPixel(pixel, h);
+}
+
+bool GreedyMesher::insertSegmentCandidate(std::uint32_t s) {
+  const std::uint32_t a = segments_[s].a, b = segments_[s].b;
+  const auto pixel = static_cast<std::size_t>(segments_[s].pixel);
+  const std::int32_t e = edgeBetween(a, b);
+  if (e < 0) return false;
+  triangles_ += 1;
+  if (!insertPixel(pixel, {Hit::Kind::Edge, e})) return false;
+  const std::uint32_t v = d_.vertexCount() - 1;
+  segments_[s].b = v;
+  const std::uint32_t next = segments_.add(v, b);
+  measureSegment(s);
+  measureSegment(next);
+  return true;
+}
+
+std::int32_t GreedyMesher::edgeBetween(std::uint32_t a, std::uint32_t b) const {
+  const std::int32_t e = topo_.edgeAround(vertexEdge_[a], b);
+  if (e >= 0) return e;
+  return topo_.edgeAround(vertexEdge_[b], a);
+}
+
+bool GreedyMesher::insertPixel(std::size_t pixel, const Hit& h) {
+  const std::uint32_t v = d_.vertexCount();
+  // The edge split, for the listener: its ends, and whether it was constrained or on the hull.
+  std::uint32_t a = kGhost, b = kGhost;
+  bool onSubsegment = false;
+  if (h.kind == Hit::Kind::Edge) {
+    a = topo_.tri[h.edge];
+    b = topo_.tri[nextEdge(h.edge)];
+    onSubsegment =
+        topo_.fixed[h.edge] || topo_.isGhost(h.edge / 3) || topo_.isGhost(topo_.adj[h.edge] / 3);
+  }
+  d_.xy.push_back(static_cast<double>(pixel % raster_.width()));
+  d_.xy.push_back(static_cast<double>(pixel / raster_.width()));
+  z_.push_back(raster_.at(pixel));
+  skip_[pixel] = 1;
+  if (d_.insertLocated(h, v) != v) {
+    d_.xy.resize(d_.xy.size() - 2);
+    z_.pop_back();
+    return false;
+  }
+  ++stats_.insertions;
+  const std::int32_t from = afterInsert(v);
+  if (listener_.inserted) listener_.inserted(listener_.context, from, a, b, onSubsegment);
+  return true;
+}
+
+// The triangles around v are the ones the insertion changed: each takes its winding from the
+// unchanged triangle beyond its outer edge, tells its corners where they are, and is measured.
+std::int32_t GreedyMesher::afterInsert(std::uint32_t v) {
+  grow();
+  const std::int32_t last = d_.lastTriangle();
+  std::int32_t from = 3 * last;
+  while (topo_.tri[from] != v) ++from;
+  star_.clear();
+  std::int32_t e = from;
+  do {
+    star_.push_back(e);
+    e = topo_.adj[prevEdge(e)];
+  } while (e != from);
+  for (const std::int32_t h : star_) {
+    const std::int32_t t = h / 3, outer = nextEdge(h);
+    if (rings_) {
+      if (topo_.isGhost(t)) {
+        winding_[t] = 0;
+      } else {
+        const std::int32_t g = topo_.adj[outer];
+        winding_[t] = winding_[g / 3];
+        if (topo_.fixed[outer])
+          winding_[t] += d_.constraints.windingAcross(topo_.tri[g], topo_.tri[nextEdge(g)]);
+      }
+    }
+    if (topo_.tri[outer] != kGhost) vertexEdge_[topo_.tri[outer]] = outer;
+  }
+  vertexEdge_[v] = from;
+  for (const std::int32_t h : star_) measureTriangle(h / 3);
+  return from;
+}
+
+double GreedyMesher::maxError() const {
+  double worst = 0;
+  for (std::int32_t t = 0; t < topo_.slotCount(); ++t)
+    if (inside(t)) worst = std::max(worst, error_[t]);
+  for (std::size_t s = 0; s < segments_.size(); ++s) worst = std::max(worst, segments_[s].error);
+  return worst;
+}
+
+}  // namespace geocdt::terrain

@@ -1,0 +1,101 @@
+#pragma once
+// Greedy insertion (Garland and Heckbert, "Fast polygonal approximation of terrains and
+// height fields", 1995): every triangle and border segment knows its pixel farthest from the
+// surface; the largest of them all goes in next, through the exact incremental core (split,
+// then Lawson flips). Every triangle an insertion changes has the new vertex as a corner, so
+// only the new vertex's star is scanned again: each pixel is measured again only when its
+// triangle changed.
+#include <cstdint>
+#include <vector>
+
+#include "delaunay/delaunay.h"
+#include "terrain/border_segments.h"
+#include "terrain/candidate_queue.h"
+#include "terrain/raster_sampler.h"
+
+namespace geocdt::terrain {
+
+struct MesherLimits {
+  double maxError = 0;
+  std::uint64_t maxTriangles = 0;  // 0: none
+  std::uint64_t maxVertices = 0;
+};
+
+struct MesherStats {
+  std::uint64_t insertions = 0;
+  std::uint64_t scannedPixels = 0;
+};
+
+class GreedyMesher {
+ public:
+  // z: one height per vertex of d, kept up to date for the vertices the mesher adds.
+  // rings: whether the mesh is bounded by rings (the area with data), whose inside (by the
+  // even-odd rule) is the mesh; otherwise every real triangle is.
+  GreedyMesher(Delaunay& d, const RasterSampler& raster, std::vector<double>& z, bool rings,
+               const MesherLimits& limits)
+      : d_(d), topo_(d.topo), raster_(raster), z_(z), rings_(rings), limits_(limits) {}
+
+  // Measures every triangle and border segment of the mesh as it is now: at the start, and
+  // after anything else changed it (refinement), when only the slots that hold another
+  // triangle than they did are measured again. windings: every slot's, when the caller has
+  // them (refinement hands them back), else computed here.
+  void measure(std::vector<std::int32_t> windings = {});
+  // Inserts pixels, largest error first, until none is above maxError or a limit stops it.
+  // Returns the number inserted; a failure of the core is in d.lastError() (returns false).
+  bool run(std::uint64_t& inserted);
+
+  // Told of every insertion, after it: from, a half-edge out of the new vertex; a, b the ends
+  // of the edge it split (kGhost for none) and whether that was a constrained or hull edge.
+  // Refinement in rounds listens, to keep its own record of the mesh.
+  struct Listener {
+    void (*inserted)(void* context, std::int32_t from, std::uint32_t a, std::uint32_t b,
+                     bool onSubsegment) = nullptr;
+    void* context = nullptr;
+  };
+  void listen(const Listener& listener) { listener_ = listener; }
+
+  // The largest error left over every pixel the mesh covers.
+  double maxError() const;
+  std::uint64_t triangleCount() const { return triangles_; }
+  const MesherStats& stats() const { return stats_; }
+
+ private:
+  bool inside(std::int32_t t) const;
+  void measureTriangle(std::int32_t t);
+  void measureSegment(std::uint32_t s);
+  void markBoundary();
+  void addBoundary(std::uint32_t a, std::uint32_t b);
+  // Inserts the pixel at (i, j) as vertex, located by h; false on a failure of the core.
+  bool insertPixel(std::size_t pixel, const Hit& h);
+  Hit locateIn(std::int32_t t, double x, double y);
+  std::int32_t edgeBetween(std::uint32_t a, std::uint32_t b) const;
+  // Returns a half-edge out of v.
+  std::int32_t afterInsert(std::uint32_t v);
+  bool insertTriangleCandidate(std::int32_t t);
+  bool insertSegmentCandidate(std::uint32_t s);
+  void grow();
+
+  Delaunay& d_;
+  Topology& topo_;
+  const RasterSampler& raster_;
+  std::vector<double>& z_;
+  bool rings_;
+  MesherLimits limits_;
+  Listener listener_;
+  MesherStats stats_;
+  std::uint64_t triangles_ = 0;  // real triangles of the mesh (inside the rings)
+  // Per pixel: 1 for vertices and the border's pixels, which no triangle proposes.
+  std::vector<std::uint8_t> skip_;
+  std::uint32_t skipped_ = 0;  // the vertices whose pixels skip_ has
+  // Per slot: its error and candidate pixel, and (with rings) its winding number.
+  std::vector<double> error_;
+  std::vector<std::int64_t> candidate_;
+  std::vector<std::uint32_t> corners_;  // per slot: the triangle its measurement is of
+  std::vector<std::int32_t> winding_;
+  std::vector<std::int32_t> vertexEdge_;  // per vertex: a half-edge out of it
+  std::vector<std::int32_t> star_;
+  CandidateQueue triangleQueue_, segmentQueue_;
+  BorderSegments segments_;
+};
+
+}  // namespace geocdt::terrain

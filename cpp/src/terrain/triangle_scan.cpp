@@ -1,0 +1,119 @@
+#include "terrain/triangle_scan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace geocdt::terrain {
+
+namespace {
+
+bool below(const Corner& p, const Corner& q) { return p.y < q.y || (p.y == q.y && p.x < q.x); }
+
+// ceil and floor of x >= -1 (a pixel position, give or take rounding) as integers: a
+// conversion and a compare, where std::ceil is a library call on x86-64's baseline.
+std::int32_t ceilOf(double x) {
+  const auto i = static_cast<std::int32_t>(x);
+  return i + (x > static_cast<double>(i));
+}
+std::int32_t floorOf(double x) {
+  const auto i = static_cast<std::int32_t>(x);
+  return i - (x < static_cast<double>(i));
+}
+
+// Where an edge crosses row y: p.x + (y - p.y) * slope, from its end p lower in (y, x) order.
+struct Edge {
+  double px, py, slope;
+  double at(double y) const { return px + (y - py) * slope; }
+};
+
+Edge edge(const Corner& p, const Corner& q) {
+  return {p.x, p.y, p.y < q.y ? (q.x - p.x) / (q.y - p.y) : 0.0};
+}
+
+// Spans reach this far (in pixels) past their edges' computed crossings: a pixel on an edge,
+// which rounding may put a little outside both triangles beside it (a sliver's two edges can
+// cross a row in the wrong order), is then scanned by both. Rounding errs far less (a few
+// ulps of the raster's size), and a pixel that close to an edge is on it: the plane it is
+// measured against is the neighbour's, extended by nothing that shows.
+constexpr double kReach = 0x1p-20;
+
+// The pixels of rows first..last between two edges, `left` of `right` all the way (their
+// crossings with a row, widened by kReach and rounded inwards). The triangle lies inside the
+// raster, but a widened span may reach past its first or last column: clamped.
+struct Rows {
+  const double* heights;
+  const std::uint8_t* skip;
+  std::size_t width;
+  double base, gx, gy;  // the plane: z = base + gx x + gy y
+};
+
+void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t first,
+              std::int64_t last, ScanResult& out) {
+  double best = out.error;
+  std::int64_t bestPixel = out.pixel;
+  std::uint64_t scanned = 0;
+  const auto lastColumn = static_cast<std::int64_t>(r.width) - 1;
+  for (std::int64_t j = first; j <= last; ++j) {
+    const auto y = static_cast<double>(j);
+    const std::int64_t i0 = std::max<std::int64_t>(0, ceilOf(left.at(y) - kReach));
+    const std::int64_t i1 = std::min(lastColumn, std::int64_t{floorOf(right.at(y) + kReach)});
+    if (i1 < i0) continue;
+    scanned += static_cast<std::uint64_t>(i1 - i0 + 1);
+    const std::size_t rowStart = static_cast<std::size_t>(j) * r.width;
+    const double* row = r.heights + rowStart;
+    const double rowBase = r.base + r.gy * y;
+    double x = static_cast<double>(i0);
+    for (std::int64_t i = i0; i <= i1; ++i, x += 1) {
+      const double e = std::fabs(row[i] - (rowBase + r.gx * x));
+      if (e > best && !r.skip[rowStart + static_cast<std::size_t>(i)]) {
+        best = e;
+        bestPixel = static_cast<std::int64_t>(rowStart) + i;
+      }
+    }
+  }
+  out.error = best;
+  out.pixel = bestPixel;
+  out.scanned += scanned;
+}
+
+}  // namespace
+
+ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raster,
+                        const std::uint8_t* skip) {
+  // Sorted by (y, x): every edge then runs from its lower end, as the neighbour sees it too.
+  if (below(b, a)) std::swap(a, b);
+  if (below(c, b)) std::swap(b, c);
+  if (below(b, a)) std::swap(a, b);
+  ScanResult r;
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+  const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+  const double det = ux * vy - vx * uy;
+  if (!(det != 0)) return r;
+  // The plane z = a.z + gx (x - a.x) + gy (y - a.y).
+  const double inverse = 1 / det;
+  const double gx = (uz * vy - vz * uy) * inverse, gy = (ux * vz - vx * uz) * inverse;
+  const Rows rows{raster.heights(), skip, raster.width(), a.z - gx * a.x - gy * a.y, gx, gy};
+  // Rows below b lie between edges ac and ab, rows from b on between ac and bc; b is right
+  // of ac when det > 0. Rows within kReach of a corner's row count (rounding aside, a corner's
+  // row is an integer only when it is a pixel's).
+  const Edge ac = edge(a, c);
+  const auto lastRow = static_cast<std::int64_t>(raster.height()) - 1;
+  const std::int64_t first = std::max<std::int64_t>(0, ceilOf(a.y - kReach));
+  const std::int64_t middle = ceilOf(b.y);
+  const std::int64_t last = std::min(lastRow, std::int64_t{floorOf(c.y + kReach)});
+  const bool bRight = det > 0;
+  if (middle > first) {
+    const Edge ab = edge(a, b);
+    const std::int64_t end = std::min(middle - 1, last);
+    scanRows(rows, bRight ? ac : ab, bRight ? ab : ac, first, end, r);
+  }
+  if (last >= middle) {
+    // A horizontal bc (b.y == c.y) is only row c.y, whose span ends at b: a zero slope does.
+    const Edge bc = b.y < c.y ? edge(b, c) : Edge{b.x, b.y, 0.0};
+    scanRows(rows, bRight ? ac : bc, bRight ? bc : ac, std::max(middle, first), last, r);
+  }
+  return r;
+}
+
+}  // namespace geocdt::terrain

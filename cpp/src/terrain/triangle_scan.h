@@ -1,0 +1,30 @@
+#pragma once
+// The pixel of a triangle farthest from the triangle's plane: the candidate that greedy
+// insertion puts in next. A row at a time, from edge to edge: each pixel costs a load, a
+// multiply-add and a compare.
+#include <cstdint>
+
+#include "terrain/raster_sampler.h"
+
+namespace geocdt::terrain {
+
+struct Corner {
+  double x, y, z;
+};
+
+struct ScanResult {
+  double error = 0;         // |height - plane| at pixel, 0 when no pixel differs
+  std::int64_t pixel = -1;  // the first such pixel in row order, or -1
+  std::uint64_t scanned = 0;
+};
+
+// Scans the pixels in the closed triangle abc (any orientation, not degenerate), skipping
+// those whose byte in skip is set (vertices, and pixels of the mesh's boundary, which
+// border segments take care of). Where an edge passes exactly through pixels, both
+// triangles beside it scan them. An edge is intersected with a row from its end lower in
+// (y, x) order whichever triangle asks, so that a pixel that rounding puts just outside one
+// of the two is inside the other: every pixel the mesh covers is scanned by some triangle.
+ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raster,
+                        const std::uint8_t* skip);
+
+}  // namespace geocdt::terrain

@@ -1,0 +1,26 @@
+#pragma once
+// Checks of a terrain mesh (triangulateRaster's, in pixel positions: no bbox) against its
+// raster, independent of the mesher: every pixel is found in the triangles by exact
+// orientation tests and interpolated barycentrically in long double.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geocdt/triangulation.h"
+
+namespace geocdt::testing {
+
+struct RasterErrors {
+  double maxError = 0;          // over the pixels some triangle holds
+  std::uint64_t uncovered = 0;  // pixels with data that should be covered and are not
+  std::uint64_t pixels = 0;     // pixels checked
+  std::string problem;          // the first uncovered pixel, or a triangle outside the data
+};
+
+// valid: one byte per pixel (1: data), or empty for all. With no-data pixels, the mesh must
+// cover exactly the grid cells whose four corners have data: each pixel of such a cell must be
+// in a triangle, and each triangle's centroid in such a cell.
+RasterErrors rasterErrors(const Mesh& mesh, const std::vector<double>& heights, std::uint32_t width,
+                          std::uint32_t height, const std::vector<std::uint8_t>& valid = {});
+
+}  // namespace geocdt::testing

@@ -1,0 +1,460 @@
+// triangulateRaster: the error bound over every pixel (checked independently of the mesher),
+// the mesh's invariants, breaklines, no-data holes, tiles that match along their borders,
+// limits, refinement, degenerate rasters and bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+#include <vector>
+
+#include "constraint_invariants.h"
+#include "geocdt/predicates.h"
+#include "geocdt/terrain.h"
+#include "invariants.h"
+#include "point_generators.h"
+#include "raster_file.h"
+#include "terrain_checks.h"
+
+namespace geocdt {
+namespace {
+
+using testing::RasterFile;
+
+// Rough hills: a few waves and deterministic noise, in metres.
+RasterFile hills(std::uint32_t width, std::uint32_t height, std::uint64_t seed) {
+  testing::Random random(seed);
+  RasterFile r;
+  r.width = width;
+  r.height = height;
+  r.heights.resize(static_cast<std::size_t>(width) * height);
+  for (std::uint32_t j = 0; j < height; ++j)
+    for (std::uint32_t i = 0; i < width; ++i)
+      r.heights[static_cast<std::size_t>(j) * width + i] =
+          40 * std::sin(i * 0.11) * std::cos(j * 0.07) + 15 * std::sin((i + 2.0 * j) * 0.05) +
+          3 * random.uniform();
+  return r;
+}
+
+RasterFile jacksboro() {
+  const RasterFile r = testing::readRaster(std::string(GEOCDT_REAL_DATA_DIR) + "/jacksboro.grs");
+  EXPECT_EQ(r.width, 403u) << "the DEM comes from Debian's python-matplotlib-data "
+                              "(scripts/ensure-deps.sh installs it)";
+  return r;
+}
+
+Mesh mesh(const RasterFile& r, const TerrainOptions& o,
+          const std::vector<std::vector<double>>& lines = {}, const double* lineHeights = nullptr,
+          TerrainStats* stats = nullptr) {
+  std::vector<PolylineView> views;
+  for (const auto& l : lines) views.push_back({l.data(), l.size() / 2});
+  Mesh m;
+  const Status s = triangulateRaster({r.heights.data(), r.width, r.height}, views.data(),
+                                     views.size(), lineHeights, o, m, stats);
+  EXPECT_TRUE(s.ok()) << s.message;
+  return m;
+}
+
+TerrainOptions withError(double e) {
+  TerrainOptions o;
+  o.maxError = e;
+  return o;
+}
+
+void expectWithinBound(const Mesh& m, const RasterFile& r, double maxError,
+                       const std::vector<std::uint8_t>& valid = {}) {
+  const testing::RasterErrors e = testing::rasterErrors(m, r.heights, r.width, r.height, valid);
+  EXPECT_EQ(e.problem, "");
+  EXPECT_EQ(e.uncovered, 0u);
+  EXPECT_LE(e.maxError, maxError * (1 + 1e-12) + 1e-9);
+}
+
+double smallestAngle(const Mesh& m, std::size_t t) {
+  double smallest = 180;
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t a = m.triangles[t + k], b = m.triangles[t + (k + 1) % 3],
+                        c = m.triangles[t + (k + 2) % 3];
+    const double ux = m.points[2 * b] - m.points[2 * a],
+                 uy = m.points[2 * b + 1] - m.points[2 * a + 1];
+    const double vx = m.points[2 * c] - m.points[2 * a],
+                 vy = m.points[2 * c + 1] - m.points[2 * a + 1];
+    smallest = std::min(smallest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) *
+                                      180 / 3.14159265358979323846);
+  }
+  return smallest;
+}
+
+TEST(Terrain, FlatRasterIsTwoTriangles) {
+  RasterFile r;
+  r.width = 50;
+  r.height = 40;
+  r.heights.assign(2000, 123.5);
+  const Mesh m = mesh(r, {});
+  EXPECT_EQ(m.triangles.size(), 6u);
+  EXPECT_EQ(m.points.size(), 8u);
+  EXPECT_EQ(testing::checkTriangulation(m), "");
+  expectWithinBound(m, r, 0);
+}
+
+TEST(Terrain, PlanesAreTwoTrianglesDespiteRounding) {
+  RasterFile r;
+  r.width = 64;
+  r.height = 33;
+  for (std::uint32_t j = 0; j < r.height; ++j)
+    for (std::uint32_t i = 0; i < r.width; ++i) r.heights.push_back(0.1 * i - 0.37 * j + 1000.3);
+  const Mesh m = mesh(r, {});
+  EXPECT_EQ(m.triangles.size(), 6u);
+  expectWithinBound(m, r, 1e-9);
+}
+
+TEST(Terrain, ErrorBoundHoldsOverEveryPixelOfTheJacksboroDem) {
+  const RasterFile r = jacksboro();
+  ASSERT_EQ(r.width, 403u);
+  for (const double e : {1.0, 5.0, 10.0, 20.0}) {
+    SCOPED_TRACE(e);
+    TerrainStats stats;
+    const Mesh m = mesh(r, withError(e), {}, nullptr, &stats);
+    EXPECT_EQ(testing::checkTriangulation(m), "");
+    expectWithinBound(m, r, e);
+    EXPECT_LE(stats.maxError, e);
+    EXPECT_GT(stats.maxError, 0.5 * e);
+    // Greedy insertion keeps about what delatin keeps: a sanity bound, the bench compares
+    // them.
+    const std::map<double, std::size_t> delatin = {
+        {1.0, 227342}, {5.0, 112427}, {10.0, 56520}, {20.0, 23845}};
+    EXPECT_LT(m.triangles.size() / 3, delatin.at(e) * 21 / 20);
+  }
+}
+
+TEST(Terrain, ErrorBoundHoldsOnRoughHills) {
+  const RasterFile r = hills(157, 91, 7);
+  for (const double e : {0.0, 0.5, 2.0, 8.0}) {
+    SCOPED_TRACE(e);
+    const Mesh m = mesh(r, withError(e));
+    EXPECT_EQ(testing::checkTriangulation(m), "");
+    expectWithinBound(m, r, e);
+  }
+}
+
+TEST(Terrain, BboxMapsPixelsAndKeepsTrianglesCounterClockwise) {
+  const RasterFile r = hills(40, 30, 3);
+  TerrainOptions o = withError(1);
+  const Mesh plain = mesh(r, o);
+  o.hasBbox = true;
+  o.minX = 10, o.minY = -5, o.maxX = 49, o.maxY = 24;  // one unit a pixel, rows northward
+  const Mesh mapped = mesh(r, o);
+  ASSERT_EQ(mapped.points.size(), plain.points.size());
+  for (std::size_t v = 0; v < plain.points.size() / 2; ++v) {
+    EXPECT_NEAR(mapped.points[2 * v], plain.points[2 * v] + 10, 1e-12);
+    EXPECT_NEAR(mapped.points[2 * v + 1], 24 - plain.points[2 * v + 1], 1e-12);
+  }
+  // Counter-clockwise on the map (rounding there may break cocircular ties: no Delaunay check),
+  // and the same triangles.
+  EXPECT_EQ(testing::checkTriangulation(mapped, {nullptr, nullptr, false}), "");
+  const auto unordered = [](const Mesh& m) {
+    std::set<std::array<std::uint32_t, 3>> out;
+    for (std::size_t t = 0; t < m.triangles.size(); t += 3) {
+      std::array<std::uint32_t, 3> v = {m.triangles[t], m.triangles[t + 1], m.triangles[t + 2]};
+      std::sort(v.begin(), v.end());
+      out.insert(v);
+    }
+    return out;
+  };
+  EXPECT_EQ(unordered(mapped), unordered(plain));
+}
+
+TEST(Terrain, SingleRowIsItsSimplifiedProfile) {
+  RasterFile r = hills(300, 1, 11);
+  TerrainStats stats;
+  const Mesh m = mesh(r, withError(1.5), {}, nullptr, &stats);
+  EXPECT_TRUE(m.triangles.empty());
+  const std::size_t n = m.points.size() / 2;
+  ASSERT_GE(n, 2u);
+  EXPECT_EQ(m.points[0], 0);
+  EXPECT_EQ(m.points[2 * (n - 1)], 299);
+  // Every pixel within the bound of the line through its neighbouring vertices.
+  for (std::size_t v = 0; v + 1 < n; ++v) {
+    const double x0 = m.points[2 * v], x1 = m.points[2 * v + 2];
+    EXPECT_LT(x0, x1);
+    EXPECT_EQ(m.values[v], r.heights[static_cast<std::size_t>(x0)]);
+    for (double x = x0 + 1; x < x1; ++x) {
+      const double z = m.values[v] + (m.values[v + 1] - m.values[v]) * (x - x0) / (x1 - x0);
+      EXPECT_LE(std::fabs(z - r.heights[static_cast<std::size_t>(x)]), 1.5 + 1e-12);
+    }
+  }
+  RasterFile column = r;
+  column.width = 1;
+  column.height = 300;
+  const Mesh c = mesh(column, withError(1.5));
+  ASSERT_EQ(c.points.size(), m.points.size());
+  for (std::size_t v = 0; v < n; ++v) EXPECT_EQ(c.points[2 * v + 1], m.points[2 * v]);
+}
+
+TEST(Terrain, OnePixel) {
+  RasterFile r;
+  r.width = r.height = 1;
+  r.heights = {42};
+  const Mesh m = mesh(r, {});
+  EXPECT_TRUE(m.triangles.empty());
+  EXPECT_EQ(m.points, (std::vector<double>{0, 0}));
+  EXPECT_EQ(m.values, (std::vector<double>{42}));
+}
+
+TEST(Terrain, NoDataHolesAreLeftOut) {
+  RasterFile r = hills(120, 80, 5);
+  std::vector<std::uint8_t> valid(r.heights.size(), 1);
+  const double noData = -9999;
+  for (std::uint32_t j = 0; j < r.height; ++j)
+    for (std::uint32_t i = 0; i < r.width; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * r.width + i;
+      const double dx = i - 40.0, dy = j - 35.0;
+      const bool hole = dx * dx + dy * dy < 150;        // a round lake
+      const bool edge = i + j < 20 || i > 110 - j / 4;  // ragged no-data corners
+      const bool speck = (i * 7 + j * 13) % 97 == 0;    // isolated pixels
+      const bool nan = i == 90 && j > 10 && j < 60;     // a NaN seam
+      if (hole || edge || speck) r.heights[p] = noData;
+      if (nan) r.heights[p] = std::nan("");
+      valid[p] = !(hole || edge || speck || nan);
+    }
+  TerrainOptions o = withError(1);
+  o.hasNoData = true;
+  o.noDataValue = noData;
+  const Mesh m = mesh(r, o);
+  EXPECT_EQ(testing::checkTriangulation(m, {nullptr, nullptr, true, false}), "");
+  expectWithinBound(m, r, 1, valid);
+  // The boundary of the area with data is constrained, nothing else (no breaklines).
+  std::size_t boundary = 0;
+  for (std::size_t e = 0; e < m.halfedges.size(); ++e) {
+    const bool onBoundary = m.halfedges[e] < 0;
+    EXPECT_EQ(m.constrained[e] != 0, onBoundary) << e;
+    boundary += onBoundary;
+  }
+  EXPECT_GT(boundary, 100u);
+  // Every vertex has data and a triangle.
+  std::vector<std::uint8_t> used(m.points.size() / 2, 0);
+  for (const std::uint32_t v : m.triangles) used[v] = 1;
+  for (std::size_t v = 0; v < used.size(); ++v) {
+    EXPECT_TRUE(used[v]);
+    EXPECT_TRUE(std::isfinite(m.values[v]));
+  }
+}
+
+TEST(Terrain, NoDataEverywhereGivesNothing) {
+  RasterFile r = hills(20, 20, 1);
+  for (std::size_t p = 0; p < r.heights.size(); p += 2) r.heights[p] = -1;  // no full cell
+  TerrainOptions o;
+  o.hasNoData = true;
+  o.noDataValue = -1;
+  const Mesh m = mesh(r, o);
+  EXPECT_TRUE(m.triangles.empty());
+  EXPECT_TRUE(m.points.empty());
+}
+
+// The vertex at (x, y), which must exist.
+std::uint32_t vertexAt(const Mesh& m, double x, double y) {
+  for (std::size_t v = 0; v < m.points.size() / 2; ++v)
+    if (m.points[2 * v] == x && m.points[2 * v + 1] == y) return static_cast<std::uint32_t>(v);
+  ADD_FAILURE() << "no vertex at (" << x << ", " << y << ")";
+  return 0;
+}
+
+TEST(Terrain, BreaklinesCrossEachOtherAndTheRastersEdges) {
+  const RasterFile r = hills(100, 70, 9);
+  const std::vector<std::vector<double>> lines = {
+      {-20, 10, 50.5, 45.25, 130, 60},   // in through x = 0, out through x = 99
+      {10.5, 60.5, 80.25, 3.75},         // crosses the first
+      {30, 20, 60, 20, 60, 50, 30, 20},  // closed: it must bound nothing
+      {200, 200, 300, 250},              // outside: dropped
+      {5.5, 5.5, 94.5, 64.5},            // given heights, crosses the others
+  };
+  // One height a point (3 + 2 + 4 + 2 + 2): NaN reads it from the raster.
+  std::vector<double> heights(13, std::nan(""));
+  heights[11] = 500;
+  heights[12] = 600;
+  const Mesh m = mesh(r, withError(2), lines, heights.data());
+  EXPECT_EQ(testing::checkTriangulation(m), "");
+  expectWithinBound(m, r, 2);
+  // The first line enters at x = 0 and leaves at x = 99: find those vertices and check the
+  // chains of all the lines that stay inside, and of the first one's part inside.
+  double enterY = -1, leaveY = -1;
+  for (std::size_t v = 0; v < m.points.size() / 2; ++v) {
+    const double x = m.points[2 * v], y = m.points[2 * v + 1];
+    if (x == 0 && std::fabs(y - (10 + 20 * 35.25 / 70.5)) < 1e-9) enterY = y;
+    if (x == 99 && std::fabs(y - (45.25 + (99 - 50.5) * 14.75 / 79.5)) < 1e-9) leaveY = y;
+  }
+  ASSERT_GE(enterY, 0);
+  ASSERT_GE(leaveY, 0);
+  // In the breaklines' numbering, which the mesh's sources use (line 3 is outside).
+  const testing::Polylines inside = {
+      {0, enterY, 50.5, 45.25, 99, leaveY}, lines[1], lines[2], {}, lines[4]};
+  std::vector<std::uint32_t> ids;
+  for (const auto& l : inside)
+    for (std::size_t k = 0; k < l.size(); k += 2) ids.push_back(vertexAt(m, l[k], l[k + 1]));
+  EXPECT_EQ(testing::checkConstraints(m, inside, ids), "");
+  // Heights: given ones as given, the others read from the raster (bilinear).
+  EXPECT_EQ(m.values[vertexAt(m, 5.5, 5.5)], 500);
+  EXPECT_EQ(m.values[vertexAt(m, 94.5, 64.5)], 600);
+  // Crossings on the line with given heights take its heights, the others the raster's.
+  std::size_t crossings = 0;
+  for (std::size_t v = 0; v < m.points.size() / 2; ++v) {
+    const double x = m.points[2 * v], y = m.points[2 * v + 1];
+    if (x == std::floor(x) && y == std::floor(y)) continue;  // a pixel
+    const double t = (x - 5.5) / 89;
+    if (std::fabs(5.5 + 59 * t - y) > 1e-9 || t <= 0 || t >= 1) continue;
+    EXPECT_NEAR(m.values[v], 500 + 100 * t, 1e-6);
+    ++crossings;
+  }
+  EXPECT_EQ(crossings, 4u);
+  const auto bilinear = [&](double x, double y) {
+    const auto i = static_cast<std::size_t>(x), j = static_cast<std::size_t>(y);
+    const double tx = x - i, ty = y - j;
+    const auto at = [&](std::size_t a, std::size_t b) { return r.heights[b * r.width + a]; };
+    return (1 - tx) * (1 - ty) * at(i, j) + tx * (1 - ty) * at(i + 1, j) +
+           (1 - tx) * ty * at(i, j + 1) + tx * ty * at(i + 1, j + 1);
+  };
+  EXPECT_NEAR(m.values[vertexAt(m, 50.5, 45.25)], bilinear(50.5, 45.25), 1e-9);
+  EXPECT_NEAR(m.values[vertexAt(m, 80.25, 3.75)], bilinear(80.25, 3.75), 1e-9);
+  // Sources name the breaklines: 0, 1, 2 and 4, never 3.
+  std::set<std::uint32_t> named(m.sources.begin(), m.sources.end());
+  EXPECT_EQ(named, (std::set<std::uint32_t>{0, 1, 2, 4}));
+}
+
+// Breaklines across the DEM, crossing each other and its edges, and a closed one: pixels lie
+// exactly on some of them, beside slivers between a breakline and the pixels on it (which once
+// left such a pixel unscanned by both triangles beside it: 53.5 m off at 5 m).
+TEST(Terrain, BreaklinesKeepTheBoundOnTheJacksboroDem) {
+  const RasterFile r = jacksboro();
+  ASSERT_EQ(r.width, 403u);
+  const std::vector<std::vector<double>> lines = {
+      {-10, 330, 120, 230, 260, 150, 415, 20},
+      {30, -5, 160, 120, 250, 200, 330, 350},
+      {0, 100, 402, 180},
+      {200, 60, 260, 60, 260, 110, 200, 110, 200, 60},
+  };
+  for (const double e : {1.0, 5.0, 20.0}) {
+    SCOPED_TRACE(e);
+    TerrainStats stats;
+    const Mesh m = mesh(r, withError(e), lines, nullptr, &stats);
+    EXPECT_EQ(testing::checkTriangulation(m), "");
+    expectWithinBound(m, r, e);
+    EXPECT_LE(stats.maxError, e);
+  }
+}
+
+// Vertices on a shared border, in map coordinates with their heights.
+using BorderVertices = std::set<std::tuple<double, double, double>>;
+
+BorderVertices onLine(const Mesh& m, int axis, double at) {
+  BorderVertices out;
+  for (std::size_t v = 0; v < m.points.size() / 2; ++v)
+    if (m.points[2 * v + axis] == at)
+      out.insert({m.points[2 * v], m.points[2 * v + 1], m.values[v]});
+  return out;
+}
+
+TEST(Terrain, TilesMatchAlongTheirSharedBorders) {
+  const RasterFile dem = jacksboro();
+  ASSERT_EQ(dem.width, 403u);
+  // Four tiles sharing column 200 and row 171; map x = column, y = -row.
+  const std::uint32_t cut[2][2] = {{0, 200}, {0, 171}};
+  const std::uint32_t size[2][2] = {{201, 203}, {172, 173}};
+  for (const double e : {1.0, 5.0, 20.0}) {
+    SCOPED_TRACE(e);
+    Mesh tiles[2][2];
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) {
+        const RasterFile t = testing::cropRaster(dem, cut[0][a], cut[1][b], size[0][a], size[1][b]);
+        TerrainOptions o = withError(e);
+        o.hasBbox = true;
+        o.minX = cut[0][a];
+        o.maxX = cut[0][a] + size[0][a] - 1.0;
+        o.maxY = -static_cast<double>(cut[1][b]);
+        o.minY = o.maxY - (size[1][b] - 1.0);
+        tiles[a][b] = mesh(t, o);
+      }
+    for (int b = 0; b < 2; ++b) {
+      const BorderVertices left = onLine(tiles[0][b], 0, 200), right = onLine(tiles[1][b], 0, 200);
+      EXPECT_GT(left.size(), 2u);
+      EXPECT_EQ(left, right);
+    }
+    for (int a = 0; a < 2; ++a) {
+      const BorderVertices top = onLine(tiles[a][0], 1, -171),
+                           bottom = onLine(tiles[a][1], 1, -171);
+      EXPECT_GT(top.size(), 2u);
+      EXPECT_EQ(top, bottom);
+    }
+  }
+}
+
+TEST(Terrain, LimitsStopAtTheLargestErrorFirst) {
+  const RasterFile r = hills(150, 120, 4);
+  TerrainOptions o;
+  o.maxTriangles = 1000;
+  TerrainStats byTriangles;
+  const Mesh a = mesh(r, o, {}, nullptr, &byTriangles);
+  EXPECT_LE(a.triangles.size() / 3, 1000u);
+  EXPECT_GE(a.triangles.size() / 3, 998u);
+  o = {};
+  o.maxVertices = 300;
+  TerrainStats byVertices;
+  const Mesh b = mesh(r, o, {}, nullptr, &byVertices);
+  EXPECT_EQ(b.points.size() / 2, 300u);
+  expectWithinBound(b, r, byVertices.maxError);
+  // The error left is what a bound would have stopped at: no vertex more is needed for it.
+  const Mesh c = mesh(r, withError(byVertices.maxError));
+  EXPECT_LE(c.points.size() / 2, 300u);
+}
+
+TEST(Terrain, MinAngleRefinesAndKeepsTheBound) {
+  const RasterFile r = hills(120, 90, 6);
+  TerrainOptions o = withError(1);
+  o.minAngle = 20;
+  TerrainStats stats;
+  const Mesh m = mesh(r, o, {}, nullptr, &stats);
+  EXPECT_GT(stats.steinerPoints, 0u);
+  EXPECT_GE(stats.refineRounds, 1u);
+  EXPECT_EQ(testing::checkTriangulation(m), "");
+  expectWithinBound(m, r, 1);
+  double worst = 180;
+  for (std::size_t t = 0; t < m.triangles.size(); t += 3)
+    worst = std::min(worst, smallestAngle(m, t));
+  EXPECT_GE(worst, 20.0 - 1e-9);
+}
+
+TEST(Terrain, BadInputIsRefused) {
+  RasterFile r = hills(10, 10, 2);
+  Mesh m;
+  const RasterView view{r.heights.data(), 10, 10};
+  TerrainOptions o;
+  o.maxError = -1;
+  EXPECT_EQ(triangulateRaster(view, nullptr, 0, nullptr, o, m).code, StatusCode::InvalidArgument);
+  o.maxError = NAN;
+  EXPECT_EQ(triangulateRaster(view, nullptr, 0, nullptr, o, m).code, StatusCode::InvalidArgument);
+  o = {};
+  o.minAngle = 60;
+  EXPECT_EQ(triangulateRaster(view, nullptr, 0, nullptr, o, m).code, StatusCode::InvalidArgument);
+  o = {};
+  o.hasBbox = true;
+  o.minX = 1, o.maxX = 0, o.minY = 0, o.maxY = 1;
+  EXPECT_EQ(triangulateRaster(view, nullptr, 0, nullptr, o, m).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(triangulateRaster({r.heights.data(), 0, 10}, nullptr, 0, nullptr, {}, m).code,
+            StatusCode::InvalidArgument);
+  r.heights[23] = std::nan("");
+  Status s = triangulateRaster(view, nullptr, 0, nullptr, {}, m);
+  EXPECT_EQ(s.code, StatusCode::InvalidCoordinate);
+  EXPECT_EQ(s.index, 23u);
+  EXPECT_NE(s.message.find("column 3, row 2"), std::string::npos) << s.message;
+  r.heights[23] = 1;
+  const double line[4] = {1, 1, NAN, 3};
+  const PolylineView bad{line, 2};
+  s = triangulateRaster(view, &bad, 1, nullptr, {}, m);
+  EXPECT_EQ(s.code, StatusCode::InvalidCoordinate);
+  EXPECT_EQ(s.index, 0u);
+  EXPECT_EQ(s.segment, 1u);
+}
+
+}  // namespace
+}  // namespace geocdt
