@@ -248,8 +248,7 @@ void Refiner::weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], dou
 //
 // False when the triangle is left as it is: skinny between two subsegments at a small input
 // angle, or a candidate out of range. large: the triangle exceeds maxArea.
-inline bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy,
-                               bool& large) const {
+inline bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy, bool& large) const {
   const bool skinny = bad.skinny;
   // The shortest edge p -> q, the third corner r on its left.
   std::uint32_t corner[3] = {bad.a, bad.b, bad.c};
@@ -268,8 +267,7 @@ inline bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy,
   // A skinny triangle whose shortest edge joins two subsegments meeting at a small input
   // angle is left: its angle cannot be mended there. Most triangles have an end of their
   // shortest edge on no subsegment.
-  if (skinny && !large && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q))
-    return false;
+  if (skinny && !large && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q)) return false;
   const double twice = 2 * (qx * ry - qy * rx);
   const double q2 = qx * qx + qy * qy, r2 = rx * rx + ry * ry;
   cx = (ry * q2 - qy * r2) / twice, cy = (qx * r2 - rx * q2) / twice;  // from p
