@@ -148,6 +148,11 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   }
   const double t = ta + (tb - ta) * f;
   double px = (1 - t) * s.ax + t * s.bx, py = (1 - t) * s.ay + t * s.by;
+  // On a segment along a grid line (a coordinate the same at both ends) the point keeps that
+  // coordinate exactly, where the sum above may round it off by an ulp: a raster's boundary
+  // stays on its grid line, and its pixels on it (terrain meshes).
+  if (s.ax == s.bx) px = s.ax;
+  if (s.ay == s.by) py = s.ay;
   const bool hull = topo_.isGhost(topo_.adj[e] / 3);
   const auto strictlyBetween = [&](const InputSegment& on, double qx, double qy) {
     const int along = signAlong(on, x(a), y(a), x(b), y(b));
