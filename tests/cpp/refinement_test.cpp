@@ -226,6 +226,34 @@ TEST(Refinement, TinyInputAnglesEndAndAreCounted) {
   }
 }
 
+// Small input angles where one segment ends on another (a T-junction: a breakline ending on
+// a raster's border) or two cross, so that the apex is not an end of both: refinement leaves
+// the angle, owns up to it, and ends with a few Steiner points.
+TEST(Refinement, TinyAnglesAtJunctionsAndCrossingsEnd) {
+  const Polylines box = {{-50, -50, 150, -50, 150, 150, -50, 150, -50, -50}};
+  const std::vector<Polylines> cases = {
+      {{0, -20, 0, 100}, {0.9, 0, 0, 50}},               // ends on the other, 1 degree
+      {{0, -20, 0, 100}, {0.0096, 17, 0, 18}},           // ends on the other, 0.55 degrees
+      {{0, -20, 0, 100}, {-0.9, -40, 0.9, 60}},          // crosses it, 1 degree
+      {{-40, -40, 140, 140}, {-40.5, -40, 140.5, 140}},  // crosses it, 0.3 degrees
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    SCOPED_TRACE(i);
+    Polylines lines = box;
+    lines.insert(lines.end(), cases[i].begin(), cases[i].end());
+    RefineOptions ro;
+    ro.minAngle = 20;
+    const Refined r = refine({}, lines, ro);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_FALSE(r.stats.refineCapped);
+    EXPECT_GT(r.stats.refineSkipped, 0u);
+    // 91, 48, 208 and 1001 points; 3808, 5826, 7279 and unending before the crossings counted
+    EXPECT_LT(r.stats.steinerPoints, 2000u);
+    EXPECT_EQ(testing::checkRefined(r.mesh, {}, lines, r.ids, 20, 0, false, r.stats.refineSkipped),
+              "");
+  }
+}
+
 TEST(Refinement, TheCapStopsItAndSaysSo) {
   RefineOptions ro;
   ro.minAngle = 30;

@@ -424,6 +424,61 @@ TEST(Terrain, MinAngleRefinesAndKeepsTheBound) {
   EXPECT_GE(worst, 20.0 - 1e-9);
 }
 
+// Small random rasters (plateaus, steps and noise), random no-data masks and random
+// breaklines (on pixel positions, along grid lines, on the border, repeated points, leaving
+// the raster), random bounds, sometimes minAngle: always a valid mesh within the bound, every
+// pixel with data covered. (Seed 3096 once refined for ever: a breakline ending on the border
+// half a degree off it; seed 275 left a border pixel uncovered, a split an ulp off its line.)
+TEST(Terrain, RandomRastersBreaklinesAndHoles) {
+  for (std::uint64_t seed = 1; seed <= 4000; ++seed) {
+    SCOPED_TRACE(seed);
+    testing::Random random(seed);
+    const auto pick = [&](int n) { return static_cast<int>(random.uniform() * n); };
+    RasterFile r;
+    r.width = 2 + pick(30);
+    r.height = 2 + pick(30);
+    for (std::uint32_t j = 0; j < r.height; ++j)
+      for (std::uint32_t i = 0; i < r.width; ++i)
+        r.heights.push_back(pick(3) == 0 ? 5.0 : std::floor(10 * random.uniform()) + (i > j));
+    TerrainOptions o;
+    o.maxError = pick(4) == 0 ? 0 : 3 * random.uniform();
+    std::vector<std::uint8_t> valid;
+    if (pick(3) == 0) {
+      o.hasNoData = true;
+      o.noDataValue = -1;
+      valid.assign(r.heights.size(), 1);
+      for (std::size_t p = 0; p < r.heights.size(); ++p)
+        if (pick(6) == 0) {
+          r.heights[p] = pick(2) ? -1 : std::nan("");
+          valid[p] = 0;
+        }
+    }
+    std::vector<std::vector<double>> lines;
+    for (int k = pick(4); k > 0; --k) {
+      std::vector<double> line;
+      for (int n = 2 + pick(4); n > 0; --n) {
+        const bool onPixel = pick(2) == 0;
+        double x = (r.width + 4) * random.uniform() - 2, y = (r.height + 4) * random.uniform() - 2;
+        if (onPixel) x = std::round(x), y = std::round(y);
+        if (pick(5) == 0 && !line.empty()) x = line[line.size() - 2];  // along a column
+        line.push_back(x);
+        line.push_back(y);
+        if (pick(6) == 0) line.insert(line.end(), {x, y});  // a repeated point
+      }
+      lines.push_back(line);
+    }
+    if (pick(4) == 0) o.minAngle = 15 + 10 * random.uniform();
+    TerrainStats stats;
+    const Mesh m = mesh(r, o, lines, nullptr, &stats);
+    EXPECT_EQ(testing::checkTriangulation(m, {nullptr, nullptr, true, valid.empty()}), "");
+    const testing::RasterErrors e = testing::rasterErrors(m, r.heights, r.width, r.height, valid);
+    EXPECT_EQ(e.problem, "");
+    EXPECT_LE(e.maxError, std::max(o.maxError, 1e-9) * (1 + 1e-12) + 1e-9);
+    EXPECT_LE(stats.maxError, std::max(o.maxError, 1e-9));
+    if (HasFailure()) break;
+  }
+}
+
 TEST(Terrain, BadInputIsRefused) {
   RasterFile r = hills(10, 10, 2);
   Mesh m;

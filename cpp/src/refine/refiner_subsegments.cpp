@@ -60,9 +60,11 @@ int Refiner::constrainedDegree(std::uint32_t u) const {
 }
 
 // Whether a triangle's shortest edge p, q (both on subsegments) joins two points on two input
-// segments that meet at an input vertex, at equal distances from it: the concentric shells put them
+// segments that meet at a vertex, at equal distances from it: the concentric shells put them
 // there, and the angle between the segments is then the triangle's. Splitting it would go on for
-// ever.
+// ever. The segments meet at a shared end, or where one ends on the other (a breakline ending
+// on a raster's border) or crosses it: there the vertex is their lines' rounded crossing,
+// within both chains' bound of both segments.
 bool Refiner::smallInputAngle(std::uint32_t p, std::uint32_t q) const {
   // The segments through a vertex, from its subsegments (a few).
   struct Through {
@@ -86,6 +88,11 @@ bool Refiner::smallInputAngle(std::uint32_t p, std::uint32_t q) const {
     } while (e != start);
     return n;
   };
+  const auto equallyFar = [&](double zx, double zy) {
+    const double dp = euclideanNorm(x(p) - zx, y(p) - zy);
+    const double dq = euclideanNorm(x(q) - zx, y(q) - zy);
+    return dp < 1.001 * dq && dq < 1.001 * dp;
+  };
   Through sp[8], sq[8];
   const int np = segmentsAt(p, sp);
   const int nq = segmentsAt(q, sq);
@@ -95,13 +102,18 @@ bool Refiner::smallInputAngle(std::uint32_t p, std::uint32_t q) const {
       const InputSegment& a = sp[i].s;
       const InputSegment& b = sq[j].s;
       const double ends[2][2] = {{a.ax, a.ay}, {a.bx, a.by}};
+      bool sharedEnd = false;
       for (const auto& z : ends) {
         const bool shared = (z[0] == b.ax && z[1] == b.ay) || (z[0] == b.bx && z[1] == b.by);
         if (!shared) continue;
-        const double dp = euclideanNorm(x(p) - z[0], y(p) - z[1]);
-        const double dq = euclideanNorm(x(q) - z[0], y(q) - z[1]);
-        if (dp < 1.001 * dq && dq < 1.001 * dp) return true;
+        sharedEnd = true;
+        if (equallyFar(z[0], z[1])) return true;
       }
+      double zx, zy;
+      if (!sharedEnd && roundedLineCrossing(a, b, zx, zy) &&
+          withinDistance(a, zx, zy, chainBoundExponent(a)) &&
+          withinDistance(b, zx, zy, chainBoundExponent(b)) && equallyFar(zx, zy))
+        return true;
     }
   return false;
 }
@@ -146,6 +158,11 @@ void Refiner::splitPoint(const SplitSite& site, double& px, double& py) const {
   const double t = ta + (tb - ta) * f;
   px = (1 - t) * s.ax + t * s.bx;
   py = (1 - t) * s.ay + t * s.by;
+  // On a segment along a grid line (a coordinate the same at both ends) the point keeps that
+  // coordinate exactly, where the sum above may round it off by an ulp: a raster's boundary
+  // stays on its grid line, and its pixels on it (terrain meshes).
+  if (s.ax == s.bx) px = s.ax;
+  if (s.ay == s.by) py = s.ay;
 }
 
 bool Refiner::strictlyBetween(const SplitSite& site, const InputSegment& on, double qx,

@@ -51,20 +51,36 @@ RasterErrors rasterErrors(const Mesh& mesh, const std::vector<double>& heights, 
       for (std::int64_t i = i0; i <= i1; ++i) {
         const double px = static_cast<double>(i), py = static_cast<double>(j);
         bool in = true;
-        for (int k = 0; k < 3 && in; ++k)
-          in = orient2d(x[k], y[k], x[(k + 1) % 3], y[(k + 1) % 3], px, py) != Sign::Negative;
-        if (!in) continue;
-        // Barycentric weights as sub-triangle areas, in long double.
-        long double w[3], sum = 0, value = 0;
-        for (int k = 0; k < 3; ++k) {
-          const int a = (k + 1) % 3, b = (k + 2) % 3;
-          w[k] = (static_cast<long double>(x[b]) - x[a]) * (py - y[a]) -
-                 (static_cast<long double>(y[b]) - y[a]) * (px - x[a]);
-          sum += w[k];
+        int onEdge = -1;  // the edge k -> k + 1 the pixel lies on, exactly
+        for (int k = 0; k < 3 && in; ++k) {
+          const Sign side = orient2d(x[k], y[k], x[(k + 1) % 3], y[(k + 1) % 3], px, py);
+          in = side != Sign::Negative;
+          if (side == Sign::Zero) onEdge = k;
         }
-        for (int k = 0; k < 3; ++k) value += w[k] * z[k];
+        if (!in) continue;
+        long double value;
+        if (onEdge >= 0) {
+          // On an edge the surface is the edge's own interpolation; barycentric weights would
+          // have no digits there in a sliver (a crossing ulps off a breakline).
+          const int a = onEdge, b = (onEdge + 1) % 3;
+          const long double ex = static_cast<long double>(x[b]) - x[a];
+          const long double ey = static_cast<long double>(y[b]) - y[a];
+          const long double f = ((px - x[a]) * ex + (py - y[a]) * ey) / (ex * ex + ey * ey);
+          value = (1 - f) * z[a] + f * z[b];
+        } else {
+          // Barycentric weights as sub-triangle areas, in long double.
+          long double w[3], sum = 0, weighted = 0;
+          for (int k = 0; k < 3; ++k) {
+            const int a = (k + 1) % 3, b = (k + 2) % 3;
+            w[k] = (static_cast<long double>(x[b]) - x[a]) * (py - y[a]) -
+                   (static_cast<long double>(y[b]) - y[a]) * (px - x[a]);
+            sum += w[k];
+          }
+          for (int k = 0; k < 3; ++k) weighted += w[k] * z[k];
+          value = weighted / sum;
+        }
         const std::size_t pixel = static_cast<std::size_t>(j) * width + static_cast<std::size_t>(i);
-        const double e = static_cast<double>(std::fabs(value / sum - heights[pixel]));
+        const double e = static_cast<double>(std::fabs(value - heights[pixel]));
         r.maxError = std::max(r.maxError, e);
         covered[pixel] = 1;
       }

@@ -1,7 +1,8 @@
 #pragma once
 // Checks of a terrain mesh (triangulateRaster's, in pixel positions: no bbox) against its
 // raster, independent of the mesher: every pixel is found in the triangles by exact
-// orientation tests and interpolated barycentrically in long double.
+// orientation tests and interpolated barycentrically in long double (along the edge, for a
+// pixel exactly on one).
 #include <cstdint>
 #include <string>
 #include <vector>
