@@ -1,0 +1,30 @@
+#pragma once
+// Writes every site's cell into the GeoArrow arrays, in input order: a clipped cell as its
+// assembly made it, a cell that the boundary does not enter as the ring of its corners when
+// they are inside the domain (nothing when outside), and nothing for a site equal to an earlier
+// one. Sizes first, then offsets, then the points, each written once in place.
+#include <cstdint>
+#include <vector>
+
+#include "geocdt/voronoi.h"
+#include "voronoi/cell_polygons.h"
+#include "voronoi/site_diagram.h"
+
+namespace geocdt {
+
+struct ClippedCells {
+  CellPolygons polygons;
+  // Per real site: its first polygon in `polygons` and one past its last (equal when none),
+  // or -1 for a cell the boundary does not enter.
+  std::vector<std::int32_t> first, last;
+};
+
+// windings: the inside of each Voronoi vertex (vertex_windings.h); out's coords and offsets
+// are filled.
+void writeCells(const SiteDiagram& diagram, const std::vector<std::int8_t>& windings,
+                const ClippedCells& clipped, VoronoiCells& out);
+
+// Every cell empty (an empty domain).
+void writeEmptyCells(std::size_t sites, VoronoiCells& out);
+
+}  // namespace geocdt

@@ -1,0 +1,60 @@
+#include "voronoi/crossing_point.h"
+
+#include <cmath>
+
+#include "exact/bounded.h"
+#include "exact/double_double.h"
+
+namespace geocdt {
+namespace {
+
+constexpr double kUnit = bounded::kUnit;
+
+// f(c, t, x) in double-double from exact differences: off by a few 2^-106 of `magnitude`.
+DoubleDouble bisectorValue(XY c, XY t, XY x, double& magnitude) {
+  const DoubleDouble gx = exactDifference(t.x, c.x), gy = exactDifference(t.y, c.y);
+  const DoubleDouble hx = exactDifference(x.x, c.x) + exactDifference(x.x, t.x);
+  const DoubleDouble hy = exactDifference(x.y, c.y) + exactDifference(x.y, t.y);
+  magnitude = std::fabs(gx.hi * hx.hi) + std::fabs(gy.hi * hy.hi);
+  return gx * hx + gy * hy;
+}
+
+}  // namespace
+
+// In double-double, lambda is good to a few 2^-106 relative to the conditioning of the crossing
+// (f's magnitudes over |f(p) - f(q)|), so the rounded point is within about an ulp of its
+// coordinate plus an ulp of the segment's length, at any angle between segment and bisector.
+CrossingPoint crossingPoint(XY c, XY t, XY p, XY q) {
+  if (bisectorSide(c, t, p) == Sign::Zero) return {p, 0};
+  if (bisectorSide(c, t, q) == Sign::Zero) return {q, 0};
+  double magnitudeA, magnitudeB;
+  const DoubleDouble a = bisectorValue(c, t, p, magnitudeA);
+  const DoubleDouble b = bisectorValue(c, t, q, magnitudeB);
+  const DoubleDouble span = a - b;
+  const DoubleDouble lambda = a / span;
+  const DoubleDouble wx = exactDifference(q.x, p.x), wy = exactDifference(q.y, p.y);
+  // From the nearer end, so that the point stays on the segment's line at either end.
+  const bool fromP = lambda.hi <= 0.5;
+  const DoubleDouble part = fromP ? lambda : b / (b - a);
+  const double sign = fromP ? 1 : -1;
+  const XY from = fromP ? p : q;
+  const DoubleDouble x = DoubleDouble{from.x} + DoubleDouble{sign * part.hi, sign * part.lo} * wx;
+  const DoubleDouble y = DoubleDouble{from.y} + DoubleDouble{sign * part.hi, sign * part.lo} * wy;
+  // Within the segment's box: a coordinate along which it does not move stays exact.
+  const XY at{std::fmin(std::fmax(x.hi, std::fmin(p.x, q.x)), std::fmax(p.x, q.x)),
+              std::fmin(std::fmax(y.hi, std::fmin(p.y, q.y)), std::fmax(p.y, q.y))};
+  // A bound for sorting: lambda's error (a's and b's over the span squared, and the roundings)
+  // times the segment's extent, plus the final rounding.
+  const double errorA = 32 * kUnit * kUnit * magnitudeA, errorB = 32 * kUnit * kUnit * magnitudeB;
+  const double room = std::fabs(span.hi) - errorA - errorB;
+  const double spread = room > 0 ? (std::fabs(b.hi) * errorA + std::fabs(a.hi) * errorB) /
+                                       (std::fabs(span.hi) * room)
+                                 : INFINITY;
+  const int axis = bisectorAxis(c, t);
+  const double w = std::fabs(axis == 0 ? wx.hi : wy.hi);
+  const double coordinate = std::fabs(axis == 0 ? at.x : at.y);
+  const double error = (spread + 16 * kUnit * kUnit) * w + kUnit * coordinate + 0x1p-1070;
+  return {at, std::isfinite(error) ? 2 * error : INFINITY};
+}
+
+}  // namespace geocdt

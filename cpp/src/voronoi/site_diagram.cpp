@@ -1,0 +1,110 @@
+#include "voronoi/site_diagram.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/chunks.h"
+#include "exact/circumcenter.h"
+#include "voronoi/perturbation.h"
+
+namespace geocdt {
+
+Status SiteDiagram::build(const double* sites, std::uint32_t count, double minX, double minY,
+                          double maxX, double maxY, std::uint32_t threads) {
+  Options options;
+  options.threads = threads;
+  delaunay_ = std::make_unique<Delaunay>(options);
+  siteVertex_.assign(count, 0);
+  const Status s = delaunay_->insertBatch(sites, count, siteVertex_.data());
+  if (!s.ok()) return s;
+  realVertices_ = delaunay_->vertexCount();
+  recordHull();
+  const Status guarded = addGuards(minX, minY, maxX, maxY);
+  if (!guarded.ok()) return guarded;
+  const std::vector<std::uint32_t>& tri = delaunay_->topo.tri;
+  outEdge_.assign(realVertices_, -1);
+  std::int32_t* out = outEdge_.data();
+  const std::uint32_t real = realVertices_;
+  forChunks(0, tri.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e)
+      if (tri[e] < real) out[tri[e]] = static_cast<std::int32_t>(e);
+  });
+  computeCenters();
+  return Status::success();
+}
+
+// The hull edges are the real half-edges whose twins lie in ghost triangles, counter-clockwise
+// with the real triangle on their left.
+void SiteDiagram::recordHull() {
+  hull_.clear();
+  if (!delaunay_->built()) return;
+  const Topology& topo = delaunay_->topo;
+  std::vector<std::uint32_t> after(realVertices_, kGhost);
+  std::uint32_t start = kGhost;
+  for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
+    if (topo.isGhost(t)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t e = 3 * t + k;
+      if (!topo.isGhost(topo.adj[e] / 3)) continue;
+      after[topo.tri[e]] = topo.tri[nextEdge(e)];
+      start = topo.tri[e];
+    }
+  }
+  std::uint32_t v = start;
+  do {
+    hull_.push_back(point(v));
+    v = after[v];
+  } while (v != start && v != kGhost && hull_.size() <= realVertices_);
+}
+
+// Three sites 8 L from the centre of the region (L its larger side): a point of the region is
+// within sqrt(2) L of every real site and at least 7.5 L from every guard, so no guard's cell
+// reaches it, and the guards' triangle holds the region, so every real cell is bounded.
+Status SiteDiagram::addGuards(double minX, double minY, double maxX, double maxY) {
+  const double cx = 0.5 * minX + 0.5 * maxX, cy = 0.5 * minY + 0.5 * maxY;
+  double side = std::max(maxX - minX, maxY - minY);
+  if (!(side > 0)) side = 1 + std::fabs(cx) + std::fabs(cy);
+  const double far = 8 * side;
+  const double guards[6] = {cx - far, cy - far, cx + far, cy - far, cx, cy + far};
+  std::uint32_t ids[3];
+  return delaunay_->insertBatch(guards, 3, ids);
+}
+
+void SiteDiagram::computeCenters() {
+  const Topology& topo = delaunay_->topo;
+  const std::int32_t slots = topo.slotCount();
+  centers_.assign(slots, XY{NAN, NAN});
+  XY* centers = centers_.data();
+  const std::uint32_t* tri = topo.tri.data();
+  forChunks(0, static_cast<std::size_t>(slots), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) {
+      const std::uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
+      if (a == kGhost || b == kGhost || c == kGhost) continue;
+      centers[t] = circumcenter(point(a), point(b), point(c));
+    }
+  });
+}
+
+std::int32_t SiteDiagram::nearest(XY p) {
+  const Hit h = delaunay_->locate(p.x, p.y, true);
+  std::int32_t e = h.edge >= 0 ? h.edge : outEdge_[0];
+  if (origin(e) == kGhost) e = nextEdge(e);
+  bool moved = true;
+  while (moved) {
+    moved = false;
+    const XY c = point(origin(e));
+    std::int32_t f = e;
+    do {
+      const std::uint32_t t = target(f);
+      if (t != kGhost && nearerTo(c, point(t), p)) {
+        e = twin(f);
+        moved = true;
+        break;
+      }
+      f = turn(f);
+    } while (f != e);
+  }
+  return e;
+}
+
+}  // namespace geocdt
