@@ -27,9 +27,17 @@ DoubleDouble bisectorValue(XY c, XY t, XY x, double& magnitude) {
 CrossingPoint crossingPoint(XY c, XY t, XY p, XY q) {
   if (bisectorSide(c, t, p) == Sign::Zero) return {p, 0};
   if (bisectorSide(c, t, q) == Sign::Zero) return {q, 0};
+  // lambda does not change when every point is scaled by a power of two: scaled so that the
+  // largest coordinate is near 1, f's products neither underflow nor overflow.
+  const double largest = std::fmax(std::fmax(std::fmax(std::fabs(c.x), std::fabs(c.y)),
+                                             std::fmax(std::fabs(t.x), std::fabs(t.y))),
+                                   std::fmax(std::fmax(std::fabs(p.x), std::fabs(p.y)),
+                                             std::fmax(std::fabs(q.x), std::fabs(q.y))));
+  const int shift = -std::ilogb(largest);
+  const auto scaled = [shift](XY v) { return XY{std::ldexp(v.x, shift), std::ldexp(v.y, shift)}; };
   double magnitudeA, magnitudeB;
-  const DoubleDouble a = bisectorValue(c, t, p, magnitudeA);
-  const DoubleDouble b = bisectorValue(c, t, q, magnitudeB);
+  const DoubleDouble a = bisectorValue(scaled(c), scaled(t), scaled(p), magnitudeA);
+  const DoubleDouble b = bisectorValue(scaled(c), scaled(t), scaled(q), magnitudeB);
   const DoubleDouble span = a - b;
   const DoubleDouble lambda = a / span;
   const DoubleDouble wx = exactDifference(q.x, p.x), wy = exactDifference(q.y, p.y);
@@ -45,7 +53,9 @@ CrossingPoint crossingPoint(XY c, XY t, XY p, XY q) {
               std::fmin(std::fmax(y.hi, std::fmin(p.y, q.y)), std::fmax(p.y, q.y))};
   // A bound for sorting: lambda's error (a's and b's over the span squared, and the roundings)
   // times the segment's extent, plus the final rounding.
-  const double errorA = 32 * kUnit * kUnit * magnitudeA, errorB = 32 * kUnit * kUnit * magnitudeB;
+  // (Coordinates below 2^-1022 of the largest underflow when scaled: 2^-1060 covers them.)
+  const double errorA = 32 * kUnit * kUnit * magnitudeA + 0x1p-1060;
+  const double errorB = 32 * kUnit * kUnit * magnitudeB + 0x1p-1060;
   const double room = std::fabs(span.hi) - errorA - errorB;
   const double spread = room > 0 ? (std::fabs(b.hi) * errorA + std::fabs(a.hi) * errorB) /
                                        (std::fabs(span.hi) * room)

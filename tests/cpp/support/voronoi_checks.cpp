@@ -227,7 +227,7 @@ std::string checkLayout(const VoronoiCells& c, std::size_t sites, VoronoiReport&
   for (std::size_t p = 0; p + 1 < c.polygonOffsets.size(); ++p)
     for (std::uint32_t r = c.polygonOffsets[p]; r < c.polygonOffsets[p + 1]; ++r) {
       const long double a = ringArea(c, r);
-      report.cellArea += static_cast<double>(a);
+      report.cellArea += a;
       if (r == c.polygonOffsets[p] ? a <= 0 : a >= 0)
         return "ring " + std::to_string(r) + " winds the wrong way";
     }
@@ -369,7 +369,7 @@ CheckDomain boxCheckDomain(const double box[4]) {
   CheckDomain d;
   d.segments = {{box[0], box[1], box[2], box[1]}, {box[2], box[1], box[2], box[3]},
                 {box[2], box[3], box[0], box[3]}, {box[0], box[3], box[0], box[1]}};
-  d.area = (box[2] - box[0]) * (box[3] - box[1]);
+  d.area = static_cast<long double>(box[2] - box[0]) * (box[3] - box[1]);
   d.isBox = true;
   boundsOfSegments(d);
   return d;
@@ -389,8 +389,10 @@ CheckDomain ringCheckDomain(const std::vector<PolylineView>& rings, FillRule fil
     const std::uint32_t a = m.triangles[e], b = m.triangles[next];
     if (e % 3 == 0 && m.inside[e / 3]) {
       const std::uint32_t c = m.triangles[e + 2];
-      d.area += 0.5 * ((m.points[2 * b] - m.points[2 * a]) * (m.points[2 * c + 1] - m.points[2 * a + 1]) -
-                       (m.points[2 * b + 1] - m.points[2 * a + 1]) * (m.points[2 * c] - m.points[2 * a]));
+      const long double ux = m.points[2 * b] - m.points[2 * a];
+      const long double uy = m.points[2 * b + 1] - m.points[2 * a + 1];
+      d.area += (ux * (m.points[2 * c + 1] - m.points[2 * a + 1]) -
+                 uy * (m.points[2 * c] - m.points[2 * a])) / 2;
     }
     const std::int32_t twin = m.halfedges[e];
     if (m.inside[e / 3] && (twin < 0 || !m.inside[twin / 3]))
@@ -427,7 +429,8 @@ CheckDomain hullCheckDomain(const std::vector<double>& sites) {
       const auto& a = hull[i];
       const auto& b = hull[(i + 1) % hull.size()];
       d.segments.push_back({a.first, a.second, b.first, b.second});
-      d.area += 0.5 * (a.first * b.second - a.second * b.first);
+      const long double ax = a.first - hull[0].first, ay = a.second - hull[0].second;
+      d.area += (ax * (b.second - hull[0].second) - ay * (b.first - hull[0].first)) / 2;
     }
   boundsOfSegments(d);
   return d;
@@ -439,8 +442,8 @@ std::string checkVoronoi(const VoronoiCells& cells, const std::vector<double>& s
   VoronoiReport report;
   std::string error = checkLayout(cells, sites.size() / 2, report);
   if (error.empty() && std::fabs(report.cellArea - domain.area) > areaTolerance * domain.area)
-    error = "the cells' area " + std::to_string(report.cellArea) + " is not the domain's " +
-            std::to_string(domain.area);
+    error = "the cells' area " + std::to_string(static_cast<double>(report.cellArea)) +
+            " is not the domain's " + std::to_string(static_cast<double>(domain.area));
   if (error.empty() && domain.area == 0 && report.polygons > 0) error = "cells in an empty domain";
   if (error.empty() && !domain.segments.empty()) error = checkEdges(cells, domain, report);
   const SiteGrid near(sites);

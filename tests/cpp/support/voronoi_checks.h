@@ -17,7 +17,7 @@ namespace geocdt::testing {
 // The domain as the checks see it.
 struct CheckDomain {
   std::vector<std::array<double, 4>> segments;  // boundary, domain on the left: x0, y0, x1, y1
-  double area = 0;
+  long double area = 0;  // long double: tiny domains' areas underflow a double
   double minX = 0, minY = 0, maxX = 0, maxY = 0;
   // 1 inside, 0 outside, -1 on the boundary or undecided (not sampled).
   int inside(double x, double y) const;
@@ -38,7 +38,7 @@ CheckDomain hullCheckDomain(const std::vector<double>& sites);
 inline constexpr double kVertexSlack = 0x1p-45;
 
 struct VoronoiReport {
-  double cellArea = 0;           // of all cells, signed by ring orientation
+  long double cellArea = 0;  // of all cells, signed by ring orientation
   std::size_t polygons = 0, rings = 0, points = 0;
   std::size_t samples = 0;       // sample points checked against their nearest site
   std::size_t boundaryEdges = 0;  // cell edges that no other cell shares
