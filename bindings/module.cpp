@@ -11,6 +11,7 @@
 #include "names.h"
 #include "one_shot.h"
 #include "output.h"
+#include "voronoi.h"
 
 namespace geocdt::wasm {
 namespace {
@@ -55,6 +56,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
   registerEnum<FillRule>("FillRule");
   registerEnum<Phase>("Phase");
   registerEnum<Interpolation>("Interpolation");
+  registerEnum<VoronoiClip>("VoronoiClip");
   registerEnum<ElementType>("ElementType");
   function("fieldNames", &fieldNames);
   function("elementType", &fieldType);
@@ -69,6 +71,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("index", &Output::index)
       .function("segment", &Output::segment)
       .function("stats", &Output::statsObject)
+      .function("voronoiStats", &Output::voronoiStats)
       .function("clear", &Output::clear);
 
   class_<Input>("Input")
@@ -100,6 +103,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("polylineCount", &Incremental::polylineCount);
 
   function("triangulateInto", &triangulateInto);
+  function("voronoiInto", &voronoiInto);
   function("allocatedBytes", &allocatedBytes);
   function("peakBytes", &peakBytes);
 }

@@ -11,6 +11,7 @@
 
 #include "geocdt/status.h"
 #include "geocdt/triangulation.h"
+#include "geocdt/voronoi.h"
 
 namespace geocdt::wasm {
 
@@ -35,6 +36,12 @@ enum class Field : int {
   SteinerWeights,
   SegmentOffsets,
   SegmentSources,
+  // voronoi()'s cells, and its sites where Lloyd's relaxation moved them
+  Coords,
+  RingOffsets,
+  PolygonOffsets,
+  SiteOffsets,
+  Sites,
 };
 
 // Named after the JS typed array that holds such elements (Float64Array, ...).
@@ -51,6 +58,7 @@ class Output {
   std::vector<float> raster;  // of rasterize()
   std::vector<std::uint32_t> inputToVertex;
   std::vector<std::uint32_t> vertexIds;  // of the last incremental insertion
+  VoronoiCells cells;                    // of voronoi()
   Status status;
   Stats stats;
 
@@ -65,6 +73,8 @@ class Output {
   double segment() const;
   // The statistics as a JS object, one property per counter.
   emscripten::val statsObject() const;
+  // voronoi()'s statistics, the same way.
+  emscripten::val voronoiStats() const;
 
   void clear();  // frees every array: the heap returns to where it was before the call
 };

@@ -29,53 +29,21 @@ std::uint64_t bits(double v) {
   return v == 0 ? 0 : b;  // -0 and 0 are one point
 }
 
-// Nearest sites by a bucket grid; among equal sites the first index wins.
+// Nearest sites by a static k-d tree (any distribution, clustered ones too); among equal sites
+// the first index wins.
 class SiteGrid {
  public:
-  explicit SiteGrid(const std::vector<double>& xy) : xy_(xy) {
-    const std::size_t n = xy.size() / 2;
-    minX_ = maxX_ = xy[0];
-    minY_ = maxY_ = xy[1];
-    for (std::size_t i = 1; i < n; ++i) {
-      minX_ = std::min(minX_, xy[2 * i]);
-      maxX_ = std::max(maxX_, xy[2 * i]);
-      minY_ = std::min(minY_, xy[2 * i + 1]);
-      maxY_ = std::max(maxY_, xy[2 * i + 1]);
-    }
-    side_ = std::max<long>(1, static_cast<long>(std::sqrt(n / 2.0)));
-    cellW_ = (maxX_ > minX_ ? maxX_ - minX_ : 1.0) / side_;
-    cellH_ = (maxY_ > minY_ ? maxY_ - minY_ : 1.0) / side_;
-    start_.assign(side_ * side_ + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) ++start_[cellOf(i) + 1];
-    for (std::size_t c = 0; c < start_.size() - 1; ++c) start_[c + 1] += start_[c];
-    items_.resize(n);
-    std::vector<std::size_t> at(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) items_[at[cellOf(i)]++] = i;
+  explicit SiteGrid(const std::vector<double>& xy) : xy_(xy), order_(xy.size() / 2) {
+    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = i;
+    build(0, order_.size(), 0);
   }
 
   // The k nearest sites to (x, y), nearest first (ties: lower index first).
   std::vector<std::size_t> nearest(double x, double y, std::size_t k) const {
-    const long cx = column(x), cy = row(y);
-    std::vector<std::pair<double, std::size_t>> found;
-    // From the first ring of cells that reaches the grid.
-    const long first = std::max({0L, -cx, cx - (side_ - 1), -cy, cy - (side_ - 1)});
-    for (long r = first;; ++r) {
-      for (long j = std::max(0L, cy - r); j <= std::min(side_ - 1, cy + r); ++j)
-        for (long i = std::max(0L, cx - r); i <= std::min(side_ - 1, cx + r); ++i) {
-          if (std::max(std::labs(i - cx), std::labs(j - cy)) != r) continue;
-          for (std::size_t s = start_[j * side_ + i]; s < start_[j * side_ + i + 1]; ++s) {
-            const std::size_t site = items_[s];
-            found.push_back({distance(site, x, y), site});
-          }
-        }
-      std::sort(found.begin(), found.end());
-      const double reach = std::min({x - (minX_ + (cx - r) * cellW_), minX_ + (cx + r + 1) * cellW_ - x,
-                                     y - (minY_ + (cy - r) * cellH_), minY_ + (cy + r + 1) * cellH_ - y});
-      const bool all = cx - r <= 0 && cy - r <= 0 && cx + r >= side_ - 1 && cy + r >= side_ - 1;
-      if (all || (found.size() >= k && found[k - 1].first < reach)) break;
-    }
+    std::vector<std::pair<double, std::size_t>> best;
+    search(0, order_.size(), 0, x, y, k, best);
     std::vector<std::size_t> out;
-    for (std::size_t i = 0; i < found.size() && out.size() < k; ++i) out.push_back(found[i].second);
+    for (const auto& b : best) out.push_back(b.second);
     return out;
   }
 
@@ -84,22 +52,35 @@ class SiteGrid {
   }
 
  private:
-  long column(double x) const {
-    return std::clamp(static_cast<long>(std::floor((x - minX_) / cellW_)), -1L << 30, 1L << 30);
+  void build(std::size_t lo, std::size_t hi, int axis) {
+    if (hi - lo <= 1) return;
+    const std::size_t mid = lo + (hi - lo) / 2;
+    std::nth_element(order_.begin() + lo, order_.begin() + mid, order_.begin() + hi,
+                     [&](std::size_t a, std::size_t b) {
+                       return xy_[2 * a + axis] < xy_[2 * b + axis];
+                     });
+    build(lo, mid, 1 - axis);
+    build(mid + 1, hi, 1 - axis);
   }
-  long row(double y) const {
-    return std::clamp(static_cast<long>(std::floor((y - minY_) / cellH_)), -1L << 30, 1L << 30);
-  }
-  std::size_t cellOf(std::size_t i) const {
-    const long c = std::clamp(column(xy_[2 * i]), 0L, side_ - 1);
-    const long r = std::clamp(row(xy_[2 * i + 1]), 0L, side_ - 1);
-    return static_cast<std::size_t>(r * side_ + c);
+
+  void search(std::size_t lo, std::size_t hi, int axis, double x, double y, std::size_t k,
+              std::vector<std::pair<double, std::size_t>>& best) const {
+    if (lo >= hi) return;
+    const std::size_t mid = lo + (hi - lo) / 2, site = order_[mid];
+    const std::pair<double, std::size_t> candidate{distance(site, x, y), site};
+    if (best.size() < k || candidate < best.back()) {
+      best.insert(std::upper_bound(best.begin(), best.end(), candidate), candidate);
+      if (best.size() > k) best.pop_back();
+    }
+    const double split = xy_[2 * site + axis], q = axis == 0 ? x : y;
+    const bool left = q < split;
+    search(left ? lo : mid + 1, left ? mid : hi, 1 - axis, x, y, k, best);
+    if (best.size() < k || std::fabs(q - split) <= best.back().first)
+      search(left ? mid + 1 : lo, left ? hi : mid, 1 - axis, x, y, k, best);
   }
 
   const std::vector<double>& xy_;
-  double minX_, maxX_, minY_, maxY_, cellW_, cellH_;
-  long side_;
-  std::vector<std::size_t> start_, items_;
+  std::vector<std::size_t> order_;
 };
 
 // Exactly: |v - s|^2 <= |v - t|^2.
