@@ -7,6 +7,8 @@ import {
   describe, threadsError,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
+import { checkVoronoiOptions } from './voronoi-options.js';
+import { cellsToGeoJSON } from './voronoi-geojson.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
 
@@ -75,6 +77,36 @@ export function createApi(instantiate) {
     const { output, rest } = geoJSONOutput(options);
     const input = readGeoJSON(geojson);
     return geoJSONResult(triangulate(input, rest), input, output, rest);
+  }
+
+  // Each site's Voronoi cell clipped to the domain (the rings, the sites' hull or a box), as a
+  // GeoArrow MultiPolygon per site; options.lloyd relaxes the sites first.
+  function voronoi(input, options) {
+    const started = now();
+    const k = ready();
+    const { points, lines } = checkInput(input, 1, 'voronoi');
+    if (points.length === 0) {
+      throw new RangeError('geocdt: voronoi() needs at least one site in input.points');
+    }
+    const o = checkVoronoiOptions(options, points, lines.count);
+    const cells = k.voronoi({ points, lines }, o);
+    cells.stats.sites = points.length / 2;
+    cells.stats.polygons = cells.polygonOffsets.length - 1;
+    cells.stats.rings = cells.ringOffsets.length - 1;
+    cells.stats.milliseconds = now() - started;
+    return cells;
+  }
+
+  // The same from GeoJSON: Point and MultiPoint positions are the sites, Polygon and
+  // MultiPolygon rings bound the domain; a FeatureCollection of each site's cell with its
+  // feature's id and properties, or with { output: 'arrays' } voronoi()'s arrays and the
+  // sites' features.
+  function voronoiGeoJSON(geojson, options) {
+    const { output, rest } = geoJSONOutput(options);
+    const input = readGeoJSON(geojson, { pointFeatures: true });
+    const cells = voronoi({ points: input.points, polylines: input.polylines }, rest);
+    cells.siteFeatures = input.pointFeatures;
+    return output === 'arrays' ? cells : cellsToGeoJSON(cells);
   }
 
   // What the wasm heap holds: its size, the bytes allocated now, and the allocator's peak.
@@ -204,5 +236,7 @@ export function createApi(instantiate) {
     Triangulation.prototype[Symbol.dispose] = Triangulation.prototype.dispose;
   }
 
-  return { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation };
+  return {
+    init, triangulate, triangulateGeoJSON, voronoi, voronoiGeoJSON, memoryUsage, Triangulation,
+  };
 }

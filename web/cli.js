@@ -1,5 +1,6 @@
 #!/usr/bin/env node
 // geocdt in.geojson -o out.geojson [--keep inside] [--stats]
+// geocdt voronoi in.geojson -o out.geojson [--clip rings|hull|x0,y0,x1,y1] (cli-voronoi.js)
 import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
@@ -7,8 +8,10 @@ import { geoJSONToInput, init, triangulate } from './index.node.js';
 import { geoJSONResult } from './geojson.js';
 import { writeGeoJSON } from './geojson-writer.js';
 import { ProgressDisplay } from './progress-display.js';
+import { VoronoiUsageError, voronoiCommand } from './cli-voronoi.js';
 
 const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
+       geocdt voronoi <in.geojson | -> [-o out.geojson] [options]   (geocdt voronoi --help)
 
 Triangulates a GeoJSON file: Point/MultiPoint become vertices, LineString/MultiLineString
 become constrained edges, Polygon/MultiPolygon rings become constrained edges that bound
@@ -157,9 +160,12 @@ async function main(argv) {
   }
 }
 
-main(process.argv.slice(2)).catch((error) => {
-  const usage = error instanceof UsageError;
-  const hint = usage ? 'Try geocdt --help\n' : '';
+const argv = process.argv.slice(2);
+const command = argv[0] === 'voronoi' ? voronoiCommand(argv.slice(1)) : main(argv);
+command.catch((error) => {
+  const usage = error instanceof UsageError || error instanceof VoronoiUsageError;
+  const help = argv[0] === 'voronoi' ? 'geocdt voronoi --help' : 'geocdt --help';
+  const hint = usage ? `Try ${help}\n` : '';
   process.stderr.write(`geocdt: ${error.message.replace(/^geocdt: /, '')}\n${hint}`);
   process.exitCode = usage ? 2 : 1;
 });

@@ -5,6 +5,7 @@ import { createApi, kAutoThreads } from './api.js';
 import { instantiateCompiled, threadedSettings } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
+export { cellsToGeoJSON } from './voronoi-geojson.js';
 export { GeocdtError } from './errors.js';
 
 // Starts the warm-up (web/warm-up.js) on the compiled module; the worker closes itself when
@@ -90,5 +91,6 @@ async function instantiate(options) {
   return { wasm, threads: 1 };
 }
 
-export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =
-  createApi(instantiate);
+export const {
+  init, triangulate, triangulateGeoJSON, voronoi, voronoiGeoJSON, memoryUsage, Triangulation,
+} = createApi(instantiate);

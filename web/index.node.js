@@ -11,6 +11,7 @@ import { PthreadWorker } from './pthread-worker.node.js';
 import { instantiateCompiled, threadedSettings } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
+export { cellsToGeoJSON } from './voronoi-geojson.js';
 export { GeocdtError } from './errors.js';
 
 // The threads of this process (Linux), or null.
@@ -103,5 +104,6 @@ async function instantiate(options) {
   return { wasm, threads: 1 };
 }
 
-export const { init, triangulate, triangulateGeoJSON, memoryUsage, Triangulation } =
-  createApi(instantiate);
+export const {
+  init, triangulate, triangulateGeoJSON, voronoi, voronoiGeoJSON, memoryUsage, Triangulation,
+} = createApi(instantiate);

@@ -32,6 +32,7 @@ export function createHost(api, post) {
     init: () => undefined,
     triangulate: (onProgress, input, options) =>
       api.triangulate(input, { ...options, onProgress }),
+    voronoi: (_, input, options) => api.voronoi(input, options),
     memoryUsage: () => api.memoryUsage(),
     create: (_, id, options) => { triangulations.set(id, new api.Triangulation(options)); },
     insertPoints: (onProgress, id, xy, values) =>

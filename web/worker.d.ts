@@ -5,7 +5,8 @@ import type {
   Coordinates, CoreStats, GeoJSONInput, GeoJSONOptions, GeoJSONResult, InterpolateOptions,
   Location, MemoryUsage, Mesh, MeshOptions, ProgressOptions, RasterOptions, RefineOptions,
   ResultsOptions, TriangleFeatureCollection, TriangulateInput, TriangulateOptions,
-  TriangulateResult, TriangulationOptions, Keep, FillRule,
+  TriangulateResult, TriangulationOptions, Keep, FillRule, VoronoiInput, VoronoiOptions,
+  VoronoiCells, CellFeatureCollection, VoronoiGeoJSONResult, GeoJSONOutput,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -34,6 +35,18 @@ export class GeocdtWorker {
   triangulateGeoJSON(
     geojson: GeoJSONInput,
     options?: GeoJSONOptions): Promise<TriangleFeatureCollection | GeoJSONResult>;
+  voronoi(
+    input: VoronoiInput, options?: VoronoiOptions & TransferOptions): Promise<VoronoiCells>;
+  /** The GeoJSON is read on the calling thread; the cells are made in the worker. */
+  voronoiGeoJSON(
+    geojson: GeoJSONInput,
+    options?: VoronoiOptions & { output?: 'geojson' }): Promise<CellFeatureCollection>;
+  voronoiGeoJSON(
+    geojson: GeoJSONInput,
+    options: VoronoiOptions & { output: 'arrays' }): Promise<VoronoiGeoJSONResult>;
+  voronoiGeoJSON(
+    geojson: GeoJSONInput, options?: VoronoiOptions & { output?: GeoJSONOutput },
+  ): Promise<CellFeatureCollection | VoronoiGeoJSONResult>;
   memoryUsage(): Promise<MemoryUsage>;
   /** A Triangulation that lives in the worker. */
   createTriangulation(options?: TriangulationOptions): RemoteTriangulation;

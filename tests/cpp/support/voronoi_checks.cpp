@@ -242,7 +242,9 @@ std::string checkEdges(const VoronoiCells& c, const CheckDomain& d, VoronoiRepor
     std::memcpy(&y[1], &edge.d, 8);
     for (int e = 0; e < 2; ++e) {
       const double size = std::max(std::fabs(x[e]), std::fabs(y[e]));
-      const auto tolerance = [&](double length) { return kVertexSlack * (size + length); };
+      const auto tolerance = [&](double length) {
+        return kVertexSlack * (size + length) + kSubnormalSlack;
+      };
       if (grid.segmentAt(x[e], y[e], tolerance) < 0)
         return "an edge from (" + std::to_string(x[0]) + ", " + std::to_string(y[0]) + ") to (" +
                std::to_string(x[1]) + ", " + std::to_string(y[1]) +
@@ -275,10 +277,10 @@ std::string checkVertices(const VoronoiCells& c, const std::vector<double>& site
       const double size = std::max(std::fabs(x), std::fabs(y));
       const double own = std::hypot(x - sx, y - sy);
       const double along = std::max(0.0, grid.segmentAt(x, y, [&](double length) {
-        return kVertexSlack * (size + own + length);
+        return kVertexSlack * (size + own + length) + kSubnormalSlack;
       }));
       const double excess = own - std::hypot(x - tx, y - ty);
-      if (excess > kVertexSlack * (size + own + along))
+      if (excess > kVertexSlack * (size + own + along) + kSubnormalSlack)
         return "vertex (" + std::to_string(x) + ", " + std::to_string(y) + ") of site " +
                std::to_string(i) + " is " + std::to_string(excess) + " nearer site " +
                std::to_string(j);
@@ -422,7 +424,18 @@ std::string checkVoronoi(const VoronoiCells& cells, const std::vector<double>& s
                          VoronoiReport* out) {
   VoronoiReport report;
   std::string error = checkLayout(cells, sites.size() / 2, report);
-  if (error.empty() && std::fabs(report.cellArea - domain.area) > areaTolerance * domain.area)
+  // Boundary vertices off by the slack move the area by up to that times the boundary's length.
+  long double perimeter = 0, longest = 0;
+  for (const auto& s : domain.segments) {
+    const long double length = std::hypot(s[2] - s[0], s[3] - s[1]);
+    perimeter += length;
+    longest = std::max(longest, length);
+  }
+  const double size = std::max({std::fabs(domain.minX), std::fabs(domain.maxX),
+                                std::fabs(domain.minY), std::fabs(domain.maxY)});
+  const long double areaSlack =
+      areaTolerance * domain.area + perimeter * (kVertexSlack * (size + longest) + kSubnormalSlack);
+  if (error.empty() && std::fabs(report.cellArea - domain.area) > areaSlack)
     error = "the cells' area " + std::to_string(static_cast<double>(report.cellArea)) +
             " is not the domain's " + std::to_string(static_cast<double>(domain.area));
   if (error.empty() && domain.area == 0 && report.polygons > 0) error = "cells in an empty domain";

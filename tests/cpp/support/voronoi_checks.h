@@ -33,9 +33,11 @@ CheckDomain ringCheckDomain(const std::vector<PolylineView>& rings, FillRule fil
 CheckDomain hullCheckDomain(const std::vector<double>& sites);
 
 // The documented accuracy: a cell vertex v of site s is no farther from s than from any other
-// site by more than kVertexSlack * (|v| + |v - s| + l), l the boundary segment it lies on (0
-// for a Voronoi vertex).
+// site by more than kVertexSlack * (|v| + |v - s| + l) + kSubnormalSlack, l the boundary
+// segment it lies on (0 for a Voronoi vertex); the same bounds how far a vertex on the boundary
+// lies from it.
 inline constexpr double kVertexSlack = 0x1p-45;
+inline constexpr double kSubnormalSlack = 0x1p-1070;
 
 struct VoronoiReport {
   long double cellArea = 0;  // of all cells, signed by ring orientation
@@ -44,7 +46,8 @@ struct VoronoiReport {
   std::size_t boundaryEdges = 0;  // cell edges that no other cell shares
 };
 
-// Everything: layout, ring orientation, areas (relative to the domain's, within areaTolerance),
+// Everything: layout, ring orientation, areas (relative to the domain's, within areaTolerance,
+// plus what moving the boundary's vertices by the slack above can change),
 // shared edges, boundary edges on the domain's boundary, vertices nearest their site, and
 // `samples` random points each in the cell of its nearest site and no other.
 std::string checkVoronoi(const VoronoiCells& cells, const std::vector<double>& sites,
