@@ -9,21 +9,9 @@
 namespace geocdt {
 namespace {
 
-using bounded::exact;
-
 double largestMagnitude(XY a, XY b, XY c) {
   return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y),
                    std::fabs(c.x), std::fabs(c.y)});
-}
-
-// n / d and a bound on its distance to the exact quotient, or an infinite bound when d's
-// error may reach d.
-Bounded quotient(Bounded n, Bounded d) {
-  const double q = n.value / d.value;
-  const double room = std::fabs(d.value) - d.error;
-  if (!(room > 0)) return {q, INFINITY};
-  const double spread = (std::fabs(n.value) * d.error / std::fabs(d.value) + n.error) / room;
-  return {q, (spread + bounded::kUnit * std::fabs(q) + bounded::kTiny) * bounded::kSafety};
 }
 
 XY exactCircumcenter(XY a, XY b, XY c) {
@@ -43,18 +31,31 @@ XY exactCircumcenter(XY a, XY b, XY c) {
 }  // namespace
 
 // With d = b - a, e = c - a: centre = a + (e.y |d|^2 - d.y |e|^2, d.x |e|^2 - e.x |d|^2) /
-// (2 d x e). The exact path's quotients err by 2^-49 of R, the final sums by 2^-53 of M + R.
+// (2 d x e). In doubles each difference errs by u (2^-53) of itself, |d|^2 by 4u, the
+// numerators by 7u of M = |e.y| |d|^2 + |d.y| |e|^2 (M' alike), d x e by 4u of its permanent P;
+// so an offset o = n / (2 det) errs by at most (3.5u M / |det| + |o| (rho + u)) / (1 - rho),
+// rho = 4u P / |det|, and the sum with a by u of itself more. The bound below rounds those
+// constants up (its own roundings are far smaller). The exact path's quotients err by 2^-49
+// of R, the final sums by 2^-53 of M + R.
 XY circumcenter(XY a, XY b, XY c) {
-  const Bounded dx = exact(b.x) - exact(a.x), dy = exact(b.y) - exact(a.y);
-  const Bounded ex = exact(c.x) - exact(a.x), ey = exact(c.y) - exact(a.y);
-  const Bounded bl = dx * dx + dy * dy, cl = ex * ex + ey * ey;
-  const Bounded twiceDet = twice(dx * ey - dy * ex);
-  const Bounded ox = quotient(ey * bl - dy * cl, twiceDet);
-  const Bounded oy = quotient(dx * cl - ex * bl, twiceDet);
-  const Bounded x = exact(a.x) + ox, y = exact(a.y) + oy;
-  const double radius = std::max(std::fabs(ox.value), std::fabs(oy.value));
-  const double tolerance = kCircumcenterTolerance * (largestMagnitude(a, b, c) + radius);
-  if (x.error <= tolerance && y.error <= tolerance) return {x.value, y.value};
+  constexpr double u = bounded::kUnit;
+  const double dx = b.x - a.x, dy = b.y - a.y, ex = c.x - a.x, ey = c.y - a.y;
+  const double bl = dx * dx + dy * dy, cl = ex * ex + ey * ey;
+  const double det = dx * ey - dy * ex;
+  const double ox = (ey * bl - dy * cl) / (2 * det), oy = (dx * cl - ex * bl) / (2 * det);
+  const XY centre{a.x + ox, a.y + oy};
+  const double absDet = std::fabs(det);
+  const double rho = 5 * u * (std::fabs(dx * ey) + std::fabs(dy * ex)) / absDet;
+  const double mx = std::fabs(ey) * bl + std::fabs(dy) * cl;
+  const double my = std::fabs(dx) * cl + std::fabs(ex) * bl;
+  const double offset = std::fmax(std::fabs(ox), std::fabs(oy));
+  const double error = (4 * u * std::fmax(mx, my) / absDet + offset * (rho + u)) / (1 - 2 * rho) +
+                       u * std::fmax(std::fabs(centre.x), std::fabs(centre.y));
+  const double tolerance = kCircumcenterTolerance * (largestMagnitude(a, b, c) + offset);
+  // rho below 1/4 keeps the bound's first order valid, products above 2^-800 keep their
+  // roundings relative (no underflow); NaN and infinities fail the test.
+  if (rho < 0.25 && error <= tolerance && std::fmin(std::fmin(bl, cl), absDet) > 0x1p-800)
+    return centre;
   return exactCircumcenter(a, b, c);
 }
 

@@ -33,30 +33,21 @@ std::uint32_t polygonBegin(const CellPolygons& p, std::uint32_t polygon) {
   return polygon == 0 ? 0 : p.polygonEnds[polygon - 1];
 }
 
-// What each site's cell holds, in input order; the same decisions in both passes.
-class CellSizes {
- public:
-  CellSizes(const SiteDiagram& d, const std::vector<std::int8_t>& windings,
-            const ClippedCells& clipped)
-      : d_(d), windings_(windings), clipped_(clipped), claimed_(d.vertexCount(), 0) {}
+// What site i's cell holds: kClipped (polygons in ClippedCells), 0 (empty: outside, an equal
+// site's, or a whole cell that rounding left without area), or the points of a whole cell's
+// ring.
+constexpr std::uint32_t kClipped = 0xFFFFFFFFu;
 
-  enum class Kind { Empty, Clipped, Whole };
-  // The kind of site i's cell; the first of equal sites claims it.
-  Kind kind(std::size_t i) {
-    const std::uint32_t v = d_.siteVertices()[i];
-    if (claimed_[v]) return Kind::Empty;
-    claimed_[v] = 1;
-    if (clipped_.first[v] >= 0) return Kind::Clipped;
-    if (windings_[d_.outEdge(v) / 3] == 0) return Kind::Empty;
-    return closedCorners(d_, v, [](XY) {}) >= 4 ? Kind::Whole : Kind::Empty;
-  }
-
- private:
-  const SiteDiagram& d_;
-  const std::vector<std::int8_t>& windings_;
-  const ClippedCells& clipped_;
-  std::vector<std::uint8_t> claimed_;
-};
+std::uint32_t cellSize(const SiteDiagram& d, const std::vector<std::int8_t>& windings,
+                       const ClippedCells& clipped, std::uint32_t v,
+                       std::vector<std::uint8_t>& claimed) {
+  if (claimed[v]) return 0;  // the first of equal sites claims the cell
+  claimed[v] = 1;
+  if (clipped.first[v] >= 0) return kClipped;
+  if (windings[d.outEdge(v) / 3] == 0) return 0;
+  const std::uint32_t points = closedCorners(d, v, [](XY) {});
+  return points >= 4 ? points : 0;
+}
 
 }  // namespace
 
@@ -67,32 +58,31 @@ void writeEmptyCells(std::size_t sites, VoronoiCells& out) {
   out.siteOffsets.assign(sites + 1, 0);
 }
 
+// Sizes first (one turn around each whole cell), then the offsets, then the points (a second
+// turn), each written once in place.
 void writeCells(const SiteDiagram& d, const std::vector<std::int8_t>& windings,
                 const ClippedCells& clipped, VoronoiCells& out) {
   const std::size_t sites = d.siteVertices().size();
   const CellPolygons& p = clipped.polygons;
+  std::vector<std::uint32_t> sizes(sites);
   std::size_t points = 0, rings = 0, polygons = 0;
   {
-    CellSizes sizes(d, windings, clipped);
+    std::vector<std::uint8_t> claimed(d.vertexCount(), 0);
     for (std::size_t i = 0; i < sites; ++i) {
       const std::uint32_t v = d.siteVertices()[i];
-      switch (sizes.kind(i)) {
-        case CellSizes::Kind::Whole:
-          points += closedCorners(d, v, [](XY) {});
-          ++rings;
-          ++polygons;
-          break;
-        case CellSizes::Kind::Clipped: {
-          const auto first = static_cast<std::uint32_t>(clipped.first[v]);
-          const auto last = static_cast<std::uint32_t>(clipped.last[v]);
-          const std::uint32_t firstRing = polygonBegin(p, first);
-          const std::uint32_t lastRing = polygonBegin(p, last);
-          points += ringBegin(p, lastRing) - ringBegin(p, firstRing);
-          rings += lastRing - firstRing;
-          polygons += last - first;
-          break;
-        }
-        case CellSizes::Kind::Empty: break;
+      const std::uint32_t size = cellSize(d, windings, clipped, v, claimed);
+      sizes[i] = size;
+      if (size == kClipped) {
+        const auto first = static_cast<std::uint32_t>(clipped.first[v]);
+        const auto last = static_cast<std::uint32_t>(clipped.last[v]);
+        const std::uint32_t firstRing = polygonBegin(p, first), lastRing = polygonBegin(p, last);
+        points += ringBegin(p, lastRing) - ringBegin(p, firstRing);
+        rings += lastRing - firstRing;
+        polygons += last - first;
+      } else if (size > 0) {
+        points += size;
+        ++rings;
+        ++polygons;
       }
     }
   }
@@ -107,26 +97,21 @@ void writeCells(const SiteDiagram& d, const std::vector<std::int8_t>& windings,
     coords[2 * point + 1] = c.y;
     ++point;
   };
-  CellSizes sizes(d, windings, clipped);
   for (std::size_t i = 0; i < sites; ++i) {
     const std::uint32_t v = d.siteVertices()[i];
-    switch (sizes.kind(i)) {
-      case CellSizes::Kind::Whole:
-        closedCorners(d, v, put);
-        out.ringOffsets[++ring] = point;
-        out.polygonOffsets[++polygon] = ring;
-        break;
-      case CellSizes::Kind::Clipped:
-        for (auto j = static_cast<std::uint32_t>(clipped.first[v]);
-             j < static_cast<std::uint32_t>(clipped.last[v]); ++j) {
-          for (std::uint32_t r = polygonBegin(p, j); r < p.polygonEnds[j]; ++r) {
-            for (std::uint32_t k = ringBegin(p, r); k < p.ringEnds[r]; ++k) put(p.points[k]);
-            out.ringOffsets[++ring] = point;
-          }
-          out.polygonOffsets[++polygon] = ring;
+    if (sizes[i] == kClipped) {
+      for (auto j = static_cast<std::uint32_t>(clipped.first[v]);
+           j < static_cast<std::uint32_t>(clipped.last[v]); ++j) {
+        for (std::uint32_t r = polygonBegin(p, j); r < p.polygonEnds[j]; ++r) {
+          for (std::uint32_t k = ringBegin(p, r); k < p.ringEnds[r]; ++k) put(p.points[k]);
+          out.ringOffsets[++ring] = point;
         }
-        break;
-      case CellSizes::Kind::Empty: break;
+        out.polygonOffsets[++polygon] = ring;
+      }
+    } else if (sizes[i] > 0) {
+      closedCorners(d, v, put);
+      out.ringOffsets[++ring] = point;
+      out.polygonOffsets[++polygon] = ring;
     }
     out.siteOffsets[i + 1] = polygon;
   }

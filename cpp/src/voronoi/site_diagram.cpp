@@ -41,12 +41,12 @@ void SiteDiagram::recordHull() {
   const Topology& topo = delaunay_->topo;
   std::vector<std::uint32_t> after(realVertices_, kGhost);
   std::uint32_t start = kGhost;
-  for (std::int32_t t = 0; t < topo.slotCount(); ++t) {
-    if (topo.isGhost(t)) continue;
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t e = 3 * t + k;
-      if (!topo.isGhost(topo.adj[e] / 3)) continue;
-      after[topo.tri[e]] = topo.tri[nextEdge(e)];
+  for (std::int32_t g = 0; g < topo.slotCount(); ++g) {
+    if (!topo.isGhost(g)) continue;
+    for (int k = 0; k < 3; ++k) {  // the ghost's real edge, whose twin runs along the hull
+      const std::int32_t e = 3 * g + k;
+      if (topo.tri[e] == kGhost || topo.tri[nextEdge(e)] == kGhost) continue;
+      after[topo.tri[nextEdge(e)]] = topo.tri[e];
       start = topo.tri[e];
     }
   }
