@@ -9,11 +9,6 @@
 namespace geocdt {
 namespace {
 
-double largestMagnitude(XY a, XY b, XY c) {
-  return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y),
-                   std::fabs(c.x), std::fabs(c.y)});
-}
-
 XY exactCircumcenter(XY a, XY b, XY c) {
   using fixed::Number;
   const int base = fixed::baseOf({a.x, a.y, b.x, b.y, c.x, c.y});
@@ -44,17 +39,21 @@ XY circumcenter(XY a, XY b, XY c) {
   const double det = dx * ey - dy * ex;
   const double ox = (ey * bl - dy * cl) / (2 * det), oy = (dx * cl - ex * bl) / (2 * det);
   const XY centre{a.x + ox, a.y + oy};
+  // Plain comparisons rather than fmax: the last test below catches NaN and infinities.
+  const auto larger = [](double x, double y) { return x > y ? x : y; };
   const double absDet = std::fabs(det);
   const double rho = 5 * u * (std::fabs(dx * ey) + std::fabs(dy * ex)) / absDet;
-  const double mx = std::fabs(ey) * bl + std::fabs(dy) * cl;
-  const double my = std::fabs(dx) * cl + std::fabs(ex) * bl;
-  const double offset = std::fmax(std::fabs(ox), std::fabs(oy));
-  const double error = (4 * u * std::fmax(mx, my) / absDet + offset * (rho + u)) / (1 - 2 * rho) +
-                       u * std::fmax(std::fabs(centre.x), std::fabs(centre.y));
-  const double tolerance = kCircumcenterTolerance * (largestMagnitude(a, b, c) + offset);
+  const double m = std::fabs(ey) * bl + std::fabs(dy) * cl + std::fabs(dx) * cl + std::fabs(ex) * bl;
+  const double offset = std::fabs(ox) + std::fabs(oy);
+  const double error = (4 * u * m / absDet + offset * (rho + u)) / (1 - 2 * rho) +
+                       u * (std::fabs(centre.x) + std::fabs(centre.y));
+  // a's coordinates alone: a tolerance no larger than the stated one.
+  const double tolerance =
+      kCircumcenterTolerance * (larger(std::fabs(a.x), std::fabs(a.y)) + larger(std::fabs(ox), std::fabs(oy)));
   // rho below 1/4 keeps the bound's first order valid, products above 2^-800 keep their
-  // roundings relative (no underflow); NaN and infinities fail the test.
-  if (rho < 0.25 && error <= tolerance && std::fmin(std::fmin(bl, cl), absDet) > 0x1p-800)
+  // roundings relative (no underflow).
+  if (rho < 0.25 && error <= tolerance && bl > 0x1p-800 && cl > 0x1p-800 && absDet > 0x1p-800 &&
+      std::isfinite(centre.x + centre.y + error))
     return centre;
   return exactCircumcenter(a, b, c);
 }

@@ -2,7 +2,7 @@
 // Writes every site's cell into the GeoArrow arrays, in input order: a clipped cell as its
 // assembly made it, a cell that the boundary does not enter as the ring of its corners when
 // they are inside the domain (nothing when outside), and nothing for a site equal to an earlier
-// one. Sizes first, then offsets, then the points, each written once in place.
+// one.
 #include <cstdint>
 #include <vector>
 
