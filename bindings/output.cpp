@@ -202,6 +202,7 @@ emscripten::val Output::voronoiStats() const {
   object.set("clippedCells", static_cast<double>(s.clippedCells));
   object.set("lloydIterations", s.lloydIterations);
   object.set("lloydMovement", s.lloydMovement);
+  object.set("threads", s.threads);
   return object;
 }
 

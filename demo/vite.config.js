@@ -42,6 +42,8 @@ export default defineConfig({
     emptyOutDir: true,
     target: 'es2022',
     chunkSizeWarningLimit: 1024,
+    // Two pages: the triangulation demo and the Voronoi cells.
+    rollupOptions: { input: { main: here('index.html'), voronoi: here('voronoi.html') } },
   },
   plugins: [bundledData()],
 });

@@ -462,6 +462,8 @@ export interface VoronoiStats {
   crossings: number;
   /** Cells that the domain's boundary enters (the others are whole or empty). */
   clippedCells: number;
+  /** Threads that triangulated the sites (init({ threads }), large inputs). */
+  threads: number;
   milliseconds: number;
   coreMilliseconds: number;
 }

@@ -424,6 +424,7 @@ export class Kernel {
         domainArea: stats.domainArea,
         crossings: stats.crossings,
         clippedCells: stats.clippedCells,
+        threads: stats.threads,
         coreMilliseconds,
       };
       return cells;

@@ -46,8 +46,8 @@ function checkLloyd(lloyd) {
   if (lloyd === undefined || lloyd === false) return { iterations: 0, tolerance: 0 };
   if (lloyd === true) return { iterations: kLloydIterations, tolerance: 0 };
   if (lloyd === null || typeof lloyd !== 'object') {
-    throw new TypeError(`geocdt: options.lloyd must be a boolean or { iterations, tolerance }, got ${
-      describe(lloyd)}`);
+    throw new TypeError('geocdt: options.lloyd must be a boolean or { iterations, tolerance }, '
+      + `got ${describe(lloyd)}`);
   }
   const { iterations = kLloydIterations, tolerance = 0 } = lloyd;
   if (typeof iterations !== 'number' || typeof tolerance !== 'number') {

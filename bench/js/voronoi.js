@@ -43,7 +43,9 @@ function alternate(contenders) {
 function d3Cells(points, box) {
   const voronoiDiagram = new Delaunay(points).voronoi(box);
   let vertices = 0;
-  for (let i = 0; i < points.length / 2; i++) vertices += voronoiDiagram.cellPolygon(i)?.length ?? 0;
+  for (let i = 0; i < points.length / 2; i++) {
+    vertices += voronoiDiagram.cellPolygon(i)?.length ?? 0;
+  }
   return vertices;
 }
 
@@ -97,8 +99,9 @@ async function main() {
   const boxRatio = boxTimes.geocdt.wall / boxTimes.d3.wall;
   const cpu = cpuClock ? ` (main-thread CPU ${ratio(boxTimes.geocdt.cpu, boxTimes.d3.cpu)}×)` : '';
   results.push([`${n(count)} uniform sites clipped to a box`,
-    `${boxTimes.geocdt.wall.toFixed(0)} ms against d3-delaunay's ${boxTimes.d3.wall.toFixed(0)} ms: `
-    + `${ratio(boxTimes.geocdt.wall, boxTimes.d3.wall)}×${cpu}`, '≤ 0.3×', verdict(boxRatio <= 0.3)]);
+    `${boxTimes.geocdt.wall.toFixed(0)} ms against d3-delaunay's `
+    + `${boxTimes.d3.wall.toFixed(0)} ms: ${ratio(boxTimes.geocdt.wall, boxTimes.d3.wall)}×${cpu}`,
+    '≤ 0.3×', verdict(boxRatio <= 0.3)]);
 
   // 2. 20,000 sites and the 50m countries: the cells' area against the land's.
   const rings50 = countryRings('50m').polylines;
@@ -122,7 +125,8 @@ async function main() {
   const ringRatio = ringTimes.rings.wall / ringTimes.box.wall;
   const ringCpu = cpuClock ? ` (CPU ${ratio(ringTimes.rings.cpu, ringTimes.box.cpu)}×)` : '';
   results.push([`${n(count)} sites clipped to the Natural Earth ${quick ? '50m' : '10m'} rings`,
-    `${ringTimes.rings.wall.toFixed(0)} ms against ${ringTimes.box.wall.toFixed(0)} ms in their box: `
+    `${ringTimes.rings.wall.toFixed(0)} ms against ${ringTimes.box.wall.toFixed(0)} ms `
+    + 'in their box: '
     + `${ratio(ringTimes.rings.wall, ringTimes.box.wall)}×${ringCpu}`, '≤ 2×',
     verdict(ringRatio <= 2)]);
 

@@ -21,7 +21,8 @@ before(() => init());
 function inRing(coords, b, e, x, y) {
   let w = 0;
   for (let k = b; k + 1 < e; k++) {
-    const ax = coords[2 * k], ay = coords[2 * k + 1], bx = coords[2 * k + 2], by = coords[2 * k + 3];
+    const ax = coords[2 * k], ay = coords[2 * k + 1];
+    const bx = coords[2 * k + 2], by = coords[2 * k + 3];
     const o = orient(ax, ay, bx, by, x, y);
     if (o === 0 && Math.min(ax, bx) <= x && x <= Math.max(ax, bx) && Math.min(ay, by) <= y
       && y <= Math.max(ay, by)) return -1;
@@ -228,7 +229,8 @@ test('Lloyd relaxation reports its steps and movement and spreads the sites', ()
   assert.equal(many.points.length, sites.length);
   checkLayout(many, 200);
   assert.ok(checkSamples(many, many.points, box, inBox(box), 200) > 150);
-  const early = voronoi({ points: sites }, { clip: box, lloyd: { iterations: 1000, tolerance: 0.5 } });
+  const early = voronoi({ points: sites },
+    { clip: box, lloyd: { iterations: 1000, tolerance: 0.5 } });
   assert.ok(early.lloyd.iterations < 1000 && early.lloyd.movement <= 0.5);
   assert.equal(voronoi({ points: sites }, { clip: box, lloyd: true }).lloyd.iterations, 10);
 });

@@ -46,6 +46,7 @@ struct VoronoiStats {
   std::uint64_t clippedCells = 0;   // cells the boundary enters
   std::uint32_t lloydIterations = 0;  // relaxation steps done
   double lloydMovement = 0;           // how far the farthest site moved in the last step
+  std::uint32_t threads = 1;          // that triangulated the sites (last step)
 };
 
 // A GeoArrow MultiPolygon per site: site i's polygons are siteOffsets[i] .. siteOffsets[i + 1];

@@ -1,7 +1,12 @@
 #include "voronoi/cell_output.h"
 
+#include <algorithm>
+
 namespace geocdt {
 namespace {
+
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+constexpr std::uint32_t kClipped = 0xFFFFFFFEu;  // a cell size: see ClippedCells
 
 std::uint32_t ringBegin(const CellPolygons& p, std::uint32_t ring) {
   return ring == 0 ? 0 : p.ringEnds[ring - 1];
@@ -10,47 +15,54 @@ std::uint32_t polygonBegin(const CellPolygons& p, std::uint32_t polygon) {
   return polygon == 0 ? 0 : p.polygonEnds[polygon - 1];
 }
 
-// Appends the corners of cell v counter-clockwise, repeats closed up (cocircular sites share a
-// corner) and closed (the last repeats the first); false, with nothing appended, when fewer
-// than three are left (rounding can merge the corners of a sliver).
-bool appendCorners(const SiteDiagram& d, std::uint32_t v, std::vector<double>& coords) {
-  const std::size_t begin = coords.size();
+// The corners of cell v counter-clockwise, repeats closed up (cocircular sites share a corner)
+// and closed (the last repeats the first): put(point) for each. Returns how many.
+template <typename Put>
+std::uint32_t closedCorners(const SiteDiagram& d, std::uint32_t v, Put put) {
   const std::int32_t first = d.outEdge(v);
   const XY start = d.center(first / 3);
-  coords.push_back(start.x);
-  coords.push_back(start.y);
+  put(start);
   XY last = start;
+  std::uint32_t n = 1;
   for (std::int32_t e = d.turn(first); e != first; e = d.turn(e)) {
     const XY c = d.center(e / 3);
     if (c == last) continue;
-    coords.push_back(c.x);
-    coords.push_back(c.y);
+    put(c);
     last = c;
+    ++n;
   }
   if (last != start) {
-    coords.push_back(start.x);
-    coords.push_back(start.y);
+    put(start);
+    ++n;
   }
-  if (coords.size() - begin >= 8) return true;
-  coords.resize(begin);
-  return false;
+  return n;
 }
 
-void appendClipped(const CellPolygons& p, std::uint32_t first, std::uint32_t last,
-                   VoronoiCells& out) {
-  for (std::uint32_t j = first; j < last; ++j) {
-    for (std::uint32_t r = polygonBegin(p, j); r < p.polygonEnds[j]; ++r) {
-      for (std::uint32_t k = ringBegin(p, r); k < p.ringEnds[r]; ++k) {
-        out.coords.push_back(p.points[k].x);
-        out.coords.push_back(p.points[k].y);
-      }
-      out.ringOffsets.push_back(static_cast<std::uint32_t>(out.coords.size() / 2));
+// Per vertex, what its cell holds: 0 (nothing: outside, or a sliver that rounding left without
+// three distinct corners), kClipped, or the points of its whole ring. In vertex order, which is
+// the triangulation's spatial order: each turn reads memory next to the last.
+std::vector<std::uint32_t> cellSizes(const SiteDiagram& d, const std::vector<std::int8_t>& windings,
+                                     const ClippedCells& clipped) {
+  std::vector<std::uint32_t> sizes(d.vertexCount(), 0);
+  std::size_t next = 0;  // the next clipped cell, in vertex order
+  for (std::uint32_t v = 0; v < d.vertexCount(); ++v) {
+    if (next < clipped.vertices.size() && clipped.vertices[next] == v) {
+      sizes[v] = kClipped;
+      ++next;
+    } else if (windings[d.outEdge(v) / 3] != 0) {
+      const std::uint32_t points = closedCorners(d, v, [](XY) {});
+      sizes[v] = points >= 4 ? points : 0;
     }
-    out.polygonOffsets.push_back(static_cast<std::uint32_t>(out.ringOffsets.size() - 1));
   }
+  return sizes;
 }
 
 }  // namespace
+
+std::int32_t ClippedCells::find(std::uint32_t v) const {
+  const auto at = std::lower_bound(vertices.begin(), vertices.end(), v);
+  return at != vertices.end() && *at == v ? static_cast<std::int32_t>(at - vertices.begin()) : -1;
+}
 
 void writeEmptyCells(std::size_t sites, VoronoiCells& out) {
   out.coords.clear();
@@ -59,35 +71,63 @@ void writeEmptyCells(std::size_t sites, VoronoiCells& out) {
   out.siteOffsets.assign(sites + 1, 0);
 }
 
-// One pass in input order, appending: room is reserved for the most a whole cell can have (its
-// degree plus the closing point, over all real half-edges), so nothing moves as it grows.
+// Sizes in vertex order; offsets in input order, where the first of equal sites claims the
+// cell and each cell's place among the points is noted; then the points in vertex order, each
+// cell written at its place.
 void writeCells(const SiteDiagram& d, const std::vector<std::int8_t>& windings,
                 const ClippedCells& clipped, VoronoiCells& out) {
   const std::size_t sites = d.siteVertices().size();
   const CellPolygons& p = clipped.polygons;
-  const std::size_t halfEdges = d.topo().tri.size();
-  out.coords.clear();
-  out.coords.reserve(2 * (halfEdges + d.vertexCount() + p.points.size()));
-  out.ringOffsets.assign(1, 0);
-  out.ringOffsets.reserve(d.vertexCount() + p.ringCount() + 1);
-  out.polygonOffsets.assign(1, 0);
-  out.polygonOffsets.reserve(d.vertexCount() + p.polygonCount() + 1);
+  const std::vector<std::uint32_t> sizes = cellSizes(d, windings, clipped);
+  std::vector<std::uint32_t> placed(d.vertexCount(), kNone);
   out.siteOffsets.assign(1, 0);
   out.siteOffsets.reserve(sites + 1);
-  std::vector<std::uint8_t> claimed(d.vertexCount(), 0);
+  out.polygonOffsets.assign(1, 0);
+  out.ringOffsets.assign(1, 0);
+  std::uint32_t points = 0;
   for (std::size_t i = 0; i < sites; ++i) {
     const std::uint32_t v = d.siteVertices()[i];
-    if (!claimed[v]) {  // the first of equal sites claims the cell
-      claimed[v] = 1;
-      if (clipped.first[v] >= 0) {
-        appendClipped(p, static_cast<std::uint32_t>(clipped.first[v]),
-                      static_cast<std::uint32_t>(clipped.last[v]), out);
-      } else if (windings[d.outEdge(v) / 3] != 0 && appendCorners(d, v, out.coords)) {
-        out.ringOffsets.push_back(static_cast<std::uint32_t>(out.coords.size() / 2));
+    const std::uint32_t size = sizes[v];
+    if (size != 0 && placed[v] == kNone) {
+      placed[v] = points;
+      if (size != kClipped) {
+        points += size;
+        out.ringOffsets.push_back(points);
         out.polygonOffsets.push_back(static_cast<std::uint32_t>(out.ringOffsets.size() - 1));
+      } else {
+        const auto k = static_cast<std::uint32_t>(clipped.find(v));
+        for (std::uint32_t j = clipped.polygonStarts[k]; j < clipped.polygonStarts[k + 1]; ++j) {
+          for (std::uint32_t r = polygonBegin(p, j); r < p.polygonEnds[j]; ++r) {
+            points += p.ringEnds[r] - ringBegin(p, r);
+            out.ringOffsets.push_back(points);
+          }
+          out.polygonOffsets.push_back(static_cast<std::uint32_t>(out.ringOffsets.size() - 1));
+        }
       }
     }
     out.siteOffsets.push_back(static_cast<std::uint32_t>(out.polygonOffsets.size() - 1));
+  }
+  out.coords.resize(2 * static_cast<std::size_t>(points));
+  double* coords = out.coords.data();
+  std::size_t next = 0;
+  for (std::uint32_t v = 0; v < d.vertexCount(); ++v) {
+    const bool isClipped = next < clipped.vertices.size() && clipped.vertices[next] == v;
+    if (isClipped) ++next;
+    if (placed[v] == kNone) continue;
+    double* at = coords + 2 * static_cast<std::size_t>(placed[v]);
+    const auto put = [&at](XY c) {
+      at[0] = c.x;
+      at[1] = c.y;
+      at += 2;
+    };
+    if (!isClipped) {
+      closedCorners(d, v, put);
+      continue;
+    }
+    const std::size_t k = next - 1;
+    const std::uint32_t firstRing = polygonBegin(p, clipped.polygonStarts[k]);
+    const std::uint32_t lastRing = polygonBegin(p, clipped.polygonStarts[k + 1]);
+    for (std::uint32_t q = ringBegin(p, firstRing); q < ringBegin(p, lastRing); ++q) put(p.points[q]);
   }
 }
 

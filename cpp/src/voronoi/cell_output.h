@@ -12,11 +12,15 @@
 
 namespace geocdt {
 
+// The cells the boundary enters, as their assembly made them: cell k is the site vertex
+// vertices[k] (in increasing order), with the polygons polygonStarts[k] .. [k + 1] of polygons.
 struct ClippedCells {
   CellPolygons polygons;
-  // Per real site: its first polygon in `polygons` and one past its last (equal when none),
-  // or -1 for a cell the boundary does not enter.
-  std::vector<std::int32_t> first, last;
+  std::vector<std::uint32_t> vertices;
+  std::vector<std::uint32_t> polygonStarts{0};
+
+  // The index k of vertex v among the cells, or -1.
+  std::int32_t find(std::uint32_t v) const;
 };
 
 // windings: the inside of each Voronoi vertex (vertex_windings.h); out's coords and offsets

@@ -4,20 +4,42 @@
 #include <cmath>
 
 #include "base/chunks.h"
+#include "delaunay/insertion_order.h"
 #include "exact/circumcenter.h"
 #include "voronoi/perturbation.h"
 
 namespace geocdt {
 
+// The sites go in in the core's own spatial order (Brio), applied here so that the vertex ids
+// follow it: every later pass over vertices or triangles then reads memory close to the last
+// (the core would otherwise number the vertices in input order, scattered over the arrays).
+// Room for the guards' vertices and triangles is reserved with the sites', so that adding
+// them moves no array.
 Status SiteDiagram::build(const double* sites, std::uint32_t count, double minX, double minY,
                           double maxX, double maxY, std::uint32_t threads) {
   Options options;
   options.threads = threads;
+  options.order = InsertionOrder::Input;
   delaunay_ = std::make_unique<Delaunay>(options);
-  siteVertex_.assign(count, 0);
-  const Status s = delaunay_->insertBatch(sites, count, siteVertex_.data());
+  const std::vector<std::uint32_t> order = insertionOrder(sites, count, InsertionOrder::Brio);
+  std::vector<double> sorted;
+  sorted.reserve(2 * static_cast<std::size_t>(count) + 6);
+  sorted.resize(2 * static_cast<std::size_t>(count));
+  double* to = sorted.data();
+  forChunks(0, count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      to[2 * k] = sites[2 * static_cast<std::size_t>(order[k])];
+      to[2 * k + 1] = sites[2 * static_cast<std::size_t>(order[k]) + 1];
+    }
+  });
+  delaunay_->topo.reserve(2 * static_cast<std::size_t>(count) + 64);
+  std::vector<std::uint32_t> ids(count);
+  const Status s = delaunay_->insertBatch(std::move(sorted), ids.data());
   if (!s.ok()) return s;
+  siteVertex_.resize(count);
+  for (std::uint32_t k = 0; k < count; ++k) siteVertex_[order[k]] = ids[k];
   realVertices_ = delaunay_->vertexCount();
+  threads_ = delaunay_->stats.threads;
   recordHull();
   const Status guarded = addGuards(minX, minY, maxX, maxY);
   if (!guarded.ok()) return guarded;
@@ -70,17 +92,21 @@ Status SiteDiagram::addGuards(double minX, double minY, double maxX, double maxY
   return delaunay_->insertBatch(guards, 3, ids);
 }
 
+// Appended in slot order (NaN for ghost triangles): one write per slot.
 void SiteDiagram::computeCenters() {
   const Topology& topo = delaunay_->topo;
-  const std::int32_t slots = topo.slotCount();
-  centers_.assign(slots, XY{NAN, NAN});
-  XY* centers = centers_.data();
+  const auto slots = static_cast<std::size_t>(topo.slotCount());
+  centers_.clear();
+  centers_.reserve(slots);
   const std::uint32_t* tri = topo.tri.data();
-  forChunks(0, static_cast<std::size_t>(slots), [&](std::size_t begin, std::size_t end) {
+  const double* xy = delaunay_->xy.data();
+  const auto at = [xy](std::uint32_t v) { return XY{xy[2 * v], xy[2 * v + 1]}; };
+  forChunks(0, slots, [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t) {
       const std::uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-      if (a == kGhost || b == kGhost || c == kGhost) continue;
-      centers[t] = circumcenter(point(a), point(b), point(c));
+      centers_.push_back(a == kGhost || b == kGhost || c == kGhost
+                             ? XY{NAN, NAN}
+                             : circumcenter(at(a), at(b), at(c)));
     }
   });
 }

@@ -28,6 +28,7 @@ class SiteDiagram {
   // The vertex each input site became (equal sites share one).
   const std::vector<std::uint32_t>& siteVertices() const { return siteVertex_; }
   std::uint32_t vertexCount() const { return realVertices_; }  // real sites only
+  std::uint32_t threads() const { return static_cast<std::uint32_t>(threads_); }
   bool isGuard(std::uint32_t v) const { return v >= realVertices_ && v != kGhost; }
 
   XY point(std::uint32_t v) const { return {delaunay_->xy[2 * v], delaunay_->xy[2 * v + 1]}; }
@@ -53,6 +54,7 @@ class SiteDiagram {
   std::unique_ptr<Delaunay> delaunay_;
   std::vector<std::uint32_t> siteVertex_;
   std::uint32_t realVertices_ = 0;
+  std::uint64_t threads_ = 1;  // that triangulated the sites
   std::vector<XY> hull_;
   std::vector<std::int32_t> outEdge_;
   std::vector<XY> centers_;

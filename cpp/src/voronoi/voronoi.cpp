@@ -57,18 +57,16 @@ Status assembleCells(const Domain& domain, const SiteDiagram& diagram, const Bou
   std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
     return walk.pieces[a].cell < walk.pieces[b].cell;
   });
-  clipped.polygons.clear();
-  clipped.first.assign(diagram.vertexCount(), -1);
-  clipped.last.assign(diagram.vertexCount(), -1);
+  clipped = ClippedCells();
   CellAssembler assembler(domain, diagram, walk, windings);
   for (std::size_t begin = 0; begin < order.size();) {
     const std::uint32_t v = walk.pieces[order[begin]].cell;
     std::size_t end = begin;
     while (end < order.size() && walk.pieces[order[end]].cell == v) ++end;
-    clipped.first[v] = static_cast<std::int32_t>(clipped.polygons.polygonCount());
     const Status s = assembler.assemble(v, order.data() + begin, end - begin, clipped.polygons);
     if (!s.ok()) return s;
-    clipped.last[v] = static_cast<std::int32_t>(clipped.polygons.polygonCount());
+    clipped.vertices.push_back(v);
+    clipped.polygonStarts.push_back(clipped.polygons.polygonCount());
     begin = end;
   }
   return Status::success();
@@ -96,6 +94,7 @@ Status clipCells(const double* xy, std::size_t count, Domain& domain, bool hull,
   if (!s.ok()) return s;
   if (hull) domain = convexDomain(diagram.hull());
   out.stats.domainArea = domain.area;
+  out.stats.threads = diagram.threads();
   out.stats.crossings = out.stats.clippedCells = 0;
   if (domain.empty()) {
     writeEmptyCells(count, out);
@@ -110,7 +109,7 @@ Status clipCells(const double* xy, std::size_t count, Domain& domain, bool hull,
   if (!s.ok()) return s;
   writeCells(diagram, windings, clipped, out);
   out.stats.crossings = walk.crossings.size();
-  for (const std::int32_t first : clipped.first) out.stats.clippedCells += first >= 0;
+  out.stats.clippedCells = clipped.vertices.size();
   return Status::success();
 }
 
