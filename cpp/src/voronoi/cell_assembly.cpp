@@ -61,7 +61,7 @@ Status CellAssembler::assemble(std::uint32_t v, const std::int32_t* pieces, std:
     if (!s.ok()) return s;
   }
   addLoops();
-  if (events_.empty()) addWholeCell();
+  if (events_.empty()) addWholeCell(v);
   placeHoles();
   write(out);
   return Status::success();
@@ -167,8 +167,8 @@ void CellAssembler::addLoops() {
 }
 
 // A cell with no crossings: wholly inside or outside (then nothing), as its corners are.
-void CellAssembler::addWholeCell() {
-  if (windings_[edges_[0] / 3] == 0) return;
+void CellAssembler::addWholeCell(std::uint32_t v) {
+  if (!sides_.loopsOnlyInside(v)) return;
   const auto begin = static_cast<std::uint32_t>(scratch_.size());
   for (const std::int32_t e : edges_) scratch_.push_back(diagram_.center(e / 3));
   isOuter_.push_back(1);

@@ -11,6 +11,7 @@
 #include "geocdt/status.h"
 #include "voronoi/boundary_walk.h"
 #include "voronoi/cell_polygons.h"
+#include "voronoi/cell_sides.h"
 #include "voronoi/domain.h"
 #include "voronoi/site_diagram.h"
 
@@ -18,10 +19,9 @@ namespace geocdt {
 
 class CellAssembler {
  public:
-  // windings: vertexWindings(diagram, walk).
   CellAssembler(const Domain& domain, const SiteDiagram& diagram, const BoundaryWalk& walk,
-                const std::vector<std::int8_t>& windings)
-      : domain_(domain), diagram_(diagram), walk_(walk), windings_(windings) {}
+                const CellSides& sides)
+      : domain_(domain), diagram_(diagram), walk_(walk), sides_(sides) {}
 
   // Appends the polygons of cell v, whose pieces are walk.pieces[pieces[0 .. count)], to out.
   Status assemble(std::uint32_t v, const std::int32_t* pieces, std::size_t count,
@@ -49,7 +49,7 @@ class CellAssembler {
   void emitCorners(std::int32_t fromRank, std::int32_t toRank, bool allAround);
   void emitPiece(const Piece& p);
   void addLoops();
-  void addWholeCell();
+  void addWholeCell(std::uint32_t v);
   std::uint32_t finishRing(std::uint32_t begin);
   void placeHoles();
   void write(CellPolygons& out) const;
@@ -57,7 +57,7 @@ class CellAssembler {
   const Domain& domain_;
   const SiteDiagram& diagram_;
   const BoundaryWalk& walk_;
-  const std::vector<std::int8_t>& windings_;
+  const CellSides& sides_;
 
   XY site_;
   std::vector<std::int32_t> edges_;  // out-edges of the cell's site, counter-clockwise

@@ -39,19 +39,31 @@ std::uint32_t closedCorners(const SiteDiagram& d, std::uint32_t v, Put put) {
 }
 
 // Per vertex, what its cell holds: 0 (nothing: outside, or a sliver that rounding left without
-// three distinct corners), kClipped, or the points of its whole ring. In vertex order, which is
-// the triangulation's spatial order: each turn reads memory next to the last.
-std::vector<std::uint32_t> cellSizes(const SiteDiagram& d, const std::vector<std::int8_t>& windings,
+// three distinct corners), kClipped, or the points of its whole ring. The ring's corners are its
+// triangles' centres, a run of equal ones (cocircular sites) counted once: one pass over the
+// half-edges counts, for each vertex, the edges out of it whose two triangles have distinct
+// centres. In slot order, which streams through memory where turning around each cell jumps.
+std::vector<std::uint32_t> cellSizes(const SiteDiagram& d, const CellSides& sides,
                                      const ClippedCells& clipped) {
-  std::vector<std::uint32_t> sizes(d.vertexCount(), 0);
+  const std::uint32_t vertices = d.vertexCount();
+  std::vector<std::uint32_t> sizes(vertices, 0);
+  const Topology& topo = d.topo();
+  const std::size_t halfEdges = topo.tri.size();
+  for (std::size_t e = 0; e < halfEdges; ++e) {
+    const std::uint32_t v = topo.tri[e];
+    if (v >= vertices) continue;  // ghost, guard
+    sizes[v] += d.center(static_cast<std::int32_t>(e / 3)) != d.center(topo.adj[e] / 3);
+  }
   std::size_t next = 0;  // the next clipped cell, in vertex order
-  for (std::uint32_t v = 0; v < d.vertexCount(); ++v) {
+  for (std::uint32_t v = 0; v < vertices; ++v) {
     if (next < clipped.vertices.size() && clipped.vertices[next] == v) {
       sizes[v] = kClipped;
       ++next;
-    } else if (windings[d.outEdge(v) / 3] != 0) {
-      const std::uint32_t points = closedCorners(d, v, [](XY) {});
-      sizes[v] = points >= 4 ? points : 0;
+    } else if (!sides.uncutInside(v)) {
+      sizes[v] = 0;
+    } else {
+      // Distinct corners, then the closing point (all centres equal: one corner).
+      sizes[v] = sizes[v] >= 3 ? sizes[v] + 1 : 0;
     }
   }
   return sizes;
@@ -74,11 +86,11 @@ void writeEmptyCells(std::size_t sites, VoronoiCells& out) {
 // Sizes in vertex order; offsets in input order, where the first of equal sites claims the
 // cell and each cell's place among the points is noted; then the points in vertex order, each
 // cell written at its place.
-void writeCells(const SiteDiagram& d, const std::vector<std::int8_t>& windings,
-                const ClippedCells& clipped, VoronoiCells& out) {
+void writeCells(const SiteDiagram& d, const CellSides& sides, const ClippedCells& clipped,
+                VoronoiCells& out) {
   const std::size_t sites = d.siteVertices().size();
   const CellPolygons& p = clipped.polygons;
-  const std::vector<std::uint32_t> sizes = cellSizes(d, windings, clipped);
+  const std::vector<std::uint32_t> sizes = cellSizes(d, sides, clipped);
   std::vector<std::uint32_t> placed(d.vertexCount(), kNone);
   out.siteOffsets.assign(1, 0);
   out.siteOffsets.reserve(sites + 1);

@@ -8,6 +8,7 @@
 
 #include "geocdt/voronoi.h"
 #include "voronoi/cell_polygons.h"
+#include "voronoi/cell_sides.h"
 #include "voronoi/site_diagram.h"
 
 namespace geocdt {
@@ -23,10 +24,9 @@ struct ClippedCells {
   std::int32_t find(std::uint32_t v) const;
 };
 
-// windings: the inside of each Voronoi vertex (vertex_windings.h); out's coords and offsets
-// are filled.
-void writeCells(const SiteDiagram& diagram, const std::vector<std::int8_t>& windings,
-                const ClippedCells& clipped, VoronoiCells& out);
+// Fills out's coords and offsets.
+void writeCells(const SiteDiagram& diagram, const CellSides& sides, const ClippedCells& clipped,
+                VoronoiCells& out);
 
 // Every cell empty (an empty domain).
 void writeEmptyCells(std::size_t sites, VoronoiCells& out);

@@ -51,14 +51,14 @@ Status checkInput(const double* xy, std::size_t count, std::size_t ringCount,
 
 // The sites' pieces grouped by cell, each cell assembled.
 Status assembleCells(const Domain& domain, const SiteDiagram& diagram, const BoundaryWalk& walk,
-                     const std::vector<std::int8_t>& windings, ClippedCells& clipped) {
+                     const CellSides& sides, ClippedCells& clipped) {
   std::vector<std::int32_t> order(walk.pieces.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
     return walk.pieces[a].cell < walk.pieces[b].cell;
   });
   clipped = ClippedCells();
-  CellAssembler assembler(domain, diagram, walk, windings);
+  CellAssembler assembler(domain, diagram, walk, sides);
   for (std::size_t begin = 0; begin < order.size();) {
     const std::uint32_t v = walk.pieces[order[begin]].cell;
     std::size_t end = begin;
@@ -72,10 +72,20 @@ Status assembleCells(const Domain& domain, const SiteDiagram& diagram, const Bou
   return Status::success();
 }
 
+// Inside or outside for the cells the boundary does not cut: by the windings of the Voronoi
+// vertices for rings, by the sites for a box or the hull (cell_sides.h).
+CellSides sidesOf(const VoronoiOptions& options, const SiteDiagram& diagram,
+                  const BoundaryWalk& walk) {
+  if (options.clip == VoronoiClip::Box) return CellSides::ofBox(diagram, options.box);
+  if (options.clip == VoronoiClip::Hull) return CellSides::ofHull(diagram);
+  return CellSides::ofWindings(diagram, vertexWindings(diagram, walk));
+}
+
 // The cells of the sites xy clipped to domain; with hull, the domain is first made the sites'
 // convex hull.
 Status clipCells(const double* xy, std::size_t count, Domain& domain, bool hull,
-                 std::uint32_t threads, VoronoiCells& out) {
+                 const VoronoiOptions& options, VoronoiCells& out) {
+  const std::uint32_t threads = options.threads;
   double minX = xy[0], maxX = xy[0], minY = xy[1], maxY = xy[1];
   for (std::size_t i = 1; i < count; ++i) {
     minX = std::min(minX, xy[2 * i]);
@@ -103,11 +113,11 @@ Status clipCells(const double* xy, std::size_t count, Domain& domain, bool hull,
   BoundaryWalk walk;
   s = walkBoundary(domain, diagram, walk);
   if (!s.ok()) return s;
-  const std::vector<std::int8_t> windings = vertexWindings(diagram, walk);
+  const CellSides sides = sidesOf(options, diagram, walk);
   ClippedCells clipped;
-  s = assembleCells(domain, diagram, walk, windings, clipped);
+  s = assembleCells(domain, diagram, walk, sides, clipped);
   if (!s.ok()) return s;
-  writeCells(diagram, windings, clipped, out);
+  writeCells(diagram, sides, clipped, out);
   out.stats.crossings = walk.crossings.size();
   out.stats.clippedCells = clipped.vertices.size();
   return Status::success();
@@ -124,14 +134,14 @@ Status run(const double* xy, std::size_t count, const PolylineView* rings, std::
   out.sites.assign(xy, xy + 2 * count);
   bool hull = options.clip == VoronoiClip::Hull;
   for (std::uint32_t step = 0; step < options.lloydIterations; ++step) {
-    const Status s = clipCells(out.sites.data(), count, domain, hull, options.threads, out);
+    const Status s = clipCells(out.sites.data(), count, domain, hull, options, out);
     if (!s.ok()) return s;
     hull = false;
     out.stats.lloydMovement = moveToCentroids(out, out.sites);
     out.stats.lloydIterations = step + 1;
     if (out.stats.lloydMovement <= options.lloydTolerance) break;
   }
-  return clipCells(out.sites.data(), count, domain, hull, options.threads, out);
+  return clipCells(out.sites.data(), count, domain, hull, options, out);
 }
 
 }  // namespace
