@@ -4,12 +4,12 @@
 // input order. Lloyd's relaxation repeats it with the sites moved to their cells' centroids.
 #include <algorithm>
 #include <cmath>
-#include <new>
 #include <numeric>
 #include <string>
 
 #include "geocdt/voronoi.h"
 #include "invalid_coordinate.h"
+#include "out_of_memory.h"
 #include "voronoi/boundary_walk.h"
 #include "voronoi/cell_assembly.h"
 #include "voronoi/cell_output.h"
@@ -151,14 +151,10 @@ Status voronoi(const double* xy, std::size_t count, const PolylineView* rings,
   out = VoronoiCells();
   const Status s = checkInput(xy, count, ringCount, options);
   if (!s.ok()) return s;
-  try {
-    const Status r = run(xy, count, rings, ringCount, options, out);
-    if (!r.ok()) out = VoronoiCells();
-    return r;
-  } catch (const std::bad_alloc&) {
-    out = VoronoiCells();
-    return {StatusCode::OutOfMemory, "out of memory: the cells need more memory than there is"};
-  }
+  const Status r = catchOutOfMemory([&] { return run(xy, count, rings, ringCount, options, out); },
+                                    [&] { out = VoronoiCells(); });
+  if (!r.ok()) out = VoronoiCells();
+  return r;
 }
 
 }  // namespace geocdt
