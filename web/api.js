@@ -8,7 +8,7 @@ import {
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
 import { checkVoronoiOptions } from './voronoi-options.js';
-import { cellsToGeoJSON } from './voronoi-geojson.js';
+import { cellsToGeoJSON, sitesAndRings } from './voronoi-geojson.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
 
@@ -104,7 +104,7 @@ export function createApi(instantiate) {
   function voronoiGeoJSON(geojson, options) {
     const { output, rest } = geoJSONOutput(options);
     const input = readGeoJSON(geojson, { pointFeatures: true });
-    const cells = voronoi({ points: input.points, polylines: input.polylines }, rest);
+    const cells = voronoi(sitesAndRings(input), rest);
     cells.siteFeatures = input.pointFeatures;
     return output === 'arrays' ? cells : cellsToGeoJSON(cells);
   }

@@ -1,3 +1,15 @@
+// readGeoJSON()'s input -> voronoi()'s: the points are the sites, and only the Polygon and
+// MultiPolygon rings (which come first among the polylines) bound the domain; lines do not.
+export function sitesAndRings({ points, polylines: { coords, offsets }, polygons }) {
+  const rings = polygons === undefined ? 0 : polygons[polygons.length - 1];
+  return {
+    points,
+    polylines: {
+      coords: coords.subarray(0, 2 * offsets[rings]), offsets: offsets.subarray(0, rings + 1),
+    },
+  };
+}
+
 // voronoi()'s cells as GeoJSON: a FeatureCollection with one feature per site, in site order,
 // whose geometry is the site's cell as a MultiPolygon (null when the cell is empty).
 // cells.siteFeatures (from voronoiGeoJSON()) gives each site's feature: its id and properties

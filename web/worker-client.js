@@ -8,7 +8,7 @@ import {
   describe,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
-import { cellsToGeoJSON } from './voronoi-geojson.js';
+import { cellsToGeoJSON, sitesAndRings } from './voronoi-geojson.js';
 
 // An array the worker may take: a typed array that spans its whole buffer is handed over
 // (the caller's array is then detached), another typed array is copied with slice(), and a
@@ -143,8 +143,7 @@ export class GeocdtWorker {
   async voronoiGeoJSON(geojson, options) {
     const { output, rest } = geoJSONOutput(options);
     const input = readGeoJSON(geojson, { pointFeatures: true });
-    const cells = await this.voronoi({ points: input.points, polylines: input.polylines },
-      { ...rest, transfer: true });
+    const cells = await this.voronoi(sitesAndRings(input), { ...rest, transfer: true });
     cells.siteFeatures = input.pointFeatures;
     return output === 'arrays' ? cells : cellsToGeoJSON(cells);
   }
