@@ -6,9 +6,9 @@
 
 namespace geocdt::wasm {
 
-bool voronoiInto(Output& out, Input& input, VoronoiClip clip, double xmin, double ymin,
-                 double xmax, double ymax, FillRule fill, std::uint32_t threads,
-                 std::uint32_t lloydIterations, double lloydTolerance) {
+bool voronoiInto(Output& out, Input& input, VoronoiClip clip, double xmin, double ymin, double xmax,
+                 double ymax, FillRule fill, std::uint32_t threads, std::uint32_t lloydIterations,
+                 double lloydTolerance) {
   out.clear();
   VoronoiOptions options;
   options.clip = clip;
@@ -24,8 +24,8 @@ bool voronoiInto(Output& out, Input& input, VoronoiClip clip, double xmin, doubl
       out,
       [&] {
         const std::vector<PolylineView> rings = input.polylines();
-        return voronoi(input.points.data(), input.pointCount(), rings.data(), rings.size(),
-                       options, out.cells);
+        return voronoi(input.points.data(), input.pointCount(), rings.data(), rings.size(), options,
+                       out.cells);
       },
       "out of memory: the cells need more than the 4 GB a WebAssembly module can address");
   input.clear();

@@ -56,7 +56,8 @@ TEST(BisectorPredicates, AgreeWithRationals) {
         const mpq_class at = f(c, t, p), bt = f(c, t, qq), au = f(c, u, p), bu = f(c, u, qq);
         ASSERT_EQ(signOf(firstBisectorCrossed(c, t, u, p, qq)), signOf(at * bu - au * bt));
         const mpq_class gx = q(t.x) - q(c.x), gy = q(t.y) - q(c.y);
-        ASSERT_EQ(signOf(bisectorApproach(c, t, p, qq)), signOf(gx * (q(qq.x) - q(p.x)) + gy * (q(qq.y) - q(p.y))));
+        ASSERT_EQ(signOf(bisectorApproach(c, t, p, qq)),
+                  signOf(gx * (q(qq.x) - q(p.x)) + gy * (q(qq.y) - q(p.y))));
         // Two segments crossing the bisector: compare where, along n = (-gy, gx).
         const mpq_class b2 = f(c, t, q2), a2 = f(c, t, p2);
         if (signOf(at) * signOf(bt) >= 0 || signOf(a2) * signOf(b2) >= 0) continue;
@@ -84,7 +85,8 @@ TEST(Circumcenter, WithinItsTolerance) {
         XY a{offset + r.uniform() * scale, offset + r.uniform() * scale};
         XY b{offset + r.uniform() * scale, offset + r.uniform() * scale};
         XY c{offset + r.uniform() * scale, offset + r.uniform() * scale};
-        if (i % 3 == 0) c = {0.5 * a.x + 0.5 * b.x, std::nextafter(0.5 * a.y + 0.5 * b.y, INFINITY)};
+        if (i % 3 == 0)
+          c = {0.5 * a.x + 0.5 * b.x, std::nextafter(0.5 * a.y + 0.5 * b.y, INFINITY)};
         const mpq_class dx = q(b.x) - q(a.x), dy = q(b.y) - q(a.y);
         const mpq_class ex = q(c.x) - q(a.x), ey = q(c.y) - q(a.y);
         const mpq_class det = dx * ey - dy * ex;

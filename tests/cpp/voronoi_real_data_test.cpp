@@ -49,12 +49,13 @@ void check(const Rings& rings, const std::vector<double>& sites, std::size_t sam
            const testing::CheckDomain& domain) {
   VoronoiOptions o;
   VoronoiCells cells;
-  const Status s = voronoi(sites.data(), sites.size() / 2, rings.views.data(), rings.views.size(),
-                           o, cells);
+  const Status s =
+      voronoi(sites.data(), sites.size() / 2, rings.views.data(), rings.views.size(), o, cells);
   ASSERT_TRUE(s.ok()) << s.message;
   testing::VoronoiReport report;
   EXPECT_EQ(checkVoronoi(cells, sites, domain, samples, 1e-9, &report), "");
-  EXPECT_NEAR(cells.stats.domainArea, static_cast<double>(domain.area), 1e-12 * cells.stats.domainArea);
+  EXPECT_NEAR(cells.stats.domainArea, static_cast<double>(domain.area),
+              1e-12 * cells.stats.domainArea);
   EXPECT_GT(report.samples, samples / 5);
   EXPECT_GT(cells.stats.crossings, 0u);
 }

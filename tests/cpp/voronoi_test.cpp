@@ -136,16 +136,16 @@ TEST(Voronoi, SitesOutsideTheBoxReachIntoIt) {
   EXPECT_EQ(checkVoronoi(cells, sites, testing::boxCheckDomain(box), 3000, 1e-12), "");
   std::size_t outsideWithCells = 0;
   for (std::size_t i = 0; i < 300; ++i) {
-    const bool outside = sites[2 * i] < 0 || sites[2 * i] > 1 || sites[2 * i + 1] < 0 ||
-                         sites[2 * i + 1] > 1;
+    const bool outside =
+        sites[2 * i] < 0 || sites[2 * i] > 1 || sites[2 * i + 1] < 0 || sites[2 * i + 1] > 1;
     outsideWithCells += outside && polygonsOf(cells, i) > 0;
   }
   EXPECT_GT(outsideWithCells, 5u);
 }
 
 TEST(Voronoi, HullClip) {
-  for (const auto& sites : {testing::uniformPoints(1000, 5), testing::latticePoints(12),
-                            testing::circlePoints(64)}) {
+  for (const auto& sites :
+       {testing::uniformPoints(1000, 5), testing::latticePoints(12), testing::circlePoints(64)}) {
     VoronoiOptions o;
     o.clip = VoronoiClip::Hull;
     VoronoiCells cells;
@@ -220,9 +220,9 @@ TEST(Voronoi, RingsThroughTheDiagramsVertices) {
   for (const auto* r : {&ring, &square}) {
     const std::vector<PolylineView> rings = {{r->data(), r->size() / 2}};
     const VoronoiCells cells = clipToRings(sites, rings);
-    EXPECT_EQ(checkVoronoi(cells, sites, testing::ringCheckDomain(rings, FillRule::EvenOdd),
-                           3000, 1e-12),
-              "");
+    EXPECT_EQ(
+        checkVoronoi(cells, sites, testing::ringCheckDomain(rings, FillRule::EvenOdd), 3000, 1e-12),
+        "");
   }
 }
 
@@ -230,15 +230,15 @@ TEST(Voronoi, RingsThroughTheDiagramsVertices) {
 // ring segments along Voronoi edges, everywhere.
 TEST(Voronoi, RingsAlongTheDiagramsEdges) {
   const std::vector<double> sites = testing::latticePoints(10);
-  const std::vector<double> ring = {0.5, 0.5, 6.5, 0.5, 6.5, 3.5, 3.5, 3.5, 3.5, 6.5,
-                                    8.5, 6.5, 8.5, 8.5, 0.5, 8.5, 0.5, 0.5};
+  const std::vector<double> ring = {0.5, 0.5, 6.5, 0.5, 6.5, 3.5, 3.5, 3.5, 3.5,
+                                    6.5, 8.5, 6.5, 8.5, 8.5, 0.5, 8.5, 0.5, 0.5};
   const std::vector<double> diamond = {4, 1, 7, 4, 4, 7, 1, 4, 4, 1};
   for (const auto* r : {&ring, &diamond}) {
     const std::vector<PolylineView> rings = {{r->data(), r->size() / 2}};
     const VoronoiCells cells = clipToRings(sites, rings);
-    EXPECT_EQ(checkVoronoi(cells, sites, testing::ringCheckDomain(rings, FillRule::EvenOdd),
-                           3000, 1e-12),
-              "");
+    EXPECT_EQ(
+        checkVoronoi(cells, sites, testing::ringCheckDomain(rings, FillRule::EvenOdd), 3000, 1e-12),
+        "");
   }
 }
 

@@ -33,8 +33,8 @@ Input decode(const std::uint8_t* data, std::size_t size) {
   ByteReader in(data, size);
   Input input;
   const std::uint8_t b = in.byte();
-  static constexpr VoronoiClip kClips[4] = {VoronoiClip::Box, VoronoiClip::Hull,
-                                            VoronoiClip::Rings, VoronoiClip::Rings};
+  static constexpr VoronoiClip kClips[4] = {VoronoiClip::Box, VoronoiClip::Hull, VoronoiClip::Rings,
+                                            VoronoiClip::Rings};
   input.options.clip = kClips[b & 3];
   input.options.fill = (b >> 2) & 1 ? FillRule::NonZero : FillRule::EvenOdd;
   input.options.lloydIterations = (b >> 3) & 3;
@@ -95,7 +95,8 @@ void run(const Input& input) {
   const std::vector<double> box(o.box, o.box + 4);
   const bool boxValid = valid(box) && o.box[0] < o.box[2] && o.box[1] < o.box[3];
   if (!valid(input.sites) || !ringsValid) {
-    if (s.code != StatusCode::InvalidCoordinate) fail("invalid coordinates were taken: " + s.message);
+    if (s.code != StatusCode::InvalidCoordinate)
+      fail("invalid coordinates were taken: " + s.message);
     return;
   }
   if (o.clip == VoronoiClip::Box && !boxValid) {

@@ -41,9 +41,9 @@ struct VoronoiOptions {
 };
 
 struct VoronoiStats {
-  double domainArea = 0;            // of the domain, summed over its triangles in doubles
-  std::uint64_t crossings = 0;      // where the domain's boundary crosses cell edges
-  std::uint64_t clippedCells = 0;   // cells the boundary enters
+  double domainArea = 0;              // of the domain, summed over its triangles in doubles
+  std::uint64_t crossings = 0;        // where the domain's boundary crosses cell edges
+  std::uint64_t clippedCells = 0;     // cells the boundary enters
   std::uint32_t lloydIterations = 0;  // relaxation steps done
   double lloydMovement = 0;           // how far the farthest site moved in the last step
   std::uint32_t threads = 1;          // that triangulated the sites (last step)

@@ -3,8 +3,8 @@
 // filters of the bisector predicates and circumcentres evaluate their polynomials with these,
 // so that each filter's error bound follows from its formula instead of an analysis by hand.
 // Every operation adds its own rounding (half an ulp, bounded by u = 2^-53 of the result) and
-// what underflow can take (a few 2^-1075). Overflow and NaN make the value or bound non-finite, which
-// decides() refuses, so the exact path runs.
+// what underflow can take (a few 2^-1075). Overflow and NaN make the value or bound non-finite,
+// which decides() refuses, so the exact path runs.
 #include <cmath>
 
 #include "geocdt/predicates.h"
@@ -30,12 +30,14 @@ inline Bounded exact(double v) { return {v, 0}; }
 // Found by argument-dependent lookup, next to Bounded.
 inline Bounded operator+(Bounded a, Bounded b) {
   const double v = a.value + b.value;
-  return {v, (a.error + b.error + bounded::kUnit * std::fabs(v) + bounded::kTiny) * bounded::kSafety};
+  return {v,
+          (a.error + b.error + bounded::kUnit * std::fabs(v) + bounded::kTiny) * bounded::kSafety};
 }
 
 inline Bounded operator-(Bounded a, Bounded b) {
   const double v = a.value - b.value;
-  return {v, (a.error + b.error + bounded::kUnit * std::fabs(v) + bounded::kTiny) * bounded::kSafety};
+  return {v,
+          (a.error + b.error + bounded::kUnit * std::fabs(v) + bounded::kTiny) * bounded::kSafety};
 }
 
 inline Bounded operator*(Bounded a, Bounded b) {

@@ -43,13 +43,14 @@ XY circumcenter(XY a, XY b, XY c) {
   const auto larger = [](double x, double y) { return x > y ? x : y; };
   const double absDet = std::fabs(det);
   const double rho = 5 * u * (std::fabs(dx * ey) + std::fabs(dy * ex)) / absDet;
-  const double m = std::fabs(ey) * bl + std::fabs(dy) * cl + std::fabs(dx) * cl + std::fabs(ex) * bl;
+  const double m =
+      std::fabs(ey) * bl + std::fabs(dy) * cl + std::fabs(dx) * cl + std::fabs(ex) * bl;
   const double offset = std::fabs(ox) + std::fabs(oy);
   const double error = (4 * u * m / absDet + offset * (rho + u)) / (1 - 2 * rho) +
                        u * (std::fabs(centre.x) + std::fabs(centre.y));
   // a's coordinates alone: a tolerance no larger than the stated one.
-  const double tolerance =
-      kCircumcenterTolerance * (larger(std::fabs(a.x), std::fabs(a.y)) + larger(std::fabs(ox), std::fabs(oy)));
+  const double tolerance = kCircumcenterTolerance * (larger(std::fabs(a.x), std::fabs(a.y)) +
+                                                     larger(std::fabs(ox), std::fabs(oy)));
   // rho below 1/4 keeps the bound's first order valid, products above 2^-800 keep their
   // roundings relative (no underflow).
   if (rho < 0.25 && error <= tolerance && bl > 0x1p-800 && cl > 0x1p-800 && absDet > 0x1p-800 &&

@@ -14,9 +14,9 @@
 namespace geocdt {
 
 struct Crossing {
-  std::int32_t edge = -1;  // the sites' half-edge from the cell left to the cell entered
-  XY at;                   // where, rounded (crossing_point.h)
-  double error = 0;        // at's error bound along its bisector's dominant axis
+  std::int32_t edge = -1;          // the sites' half-edge from the cell left to the cell entered
+  XY at;                           // where, rounded (crossing_point.h)
+  double error = 0;                // at's error bound along its bisector's dominant axis
   std::uint32_t from = 0, to = 0;  // the boundary segment crossing: Domain::points indices
   std::int32_t leaving = -1, entering = -1;  // the pieces it ends and starts
 };

@@ -139,7 +139,8 @@ void writeCells(const SiteDiagram& d, const CellSides& sides, const ClippedCells
     const std::size_t k = next - 1;
     const std::uint32_t firstRing = polygonBegin(p, clipped.polygonStarts[k]);
     const std::uint32_t lastRing = polygonBegin(p, clipped.polygonStarts[k + 1]);
-    for (std::uint32_t q = ringBegin(p, firstRing); q < ringBegin(p, lastRing); ++q) put(p.points[q]);
+    for (std::uint32_t q = ringBegin(p, firstRing); q < ringBegin(p, lastRing); ++q)
+      put(p.points[q]);
   }
 }
 

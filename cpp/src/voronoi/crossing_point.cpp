@@ -57,9 +57,9 @@ CrossingPoint crossingPoint(XY c, XY t, XY p, XY q) {
   const double errorA = 32 * kUnit * kUnit * magnitudeA + 0x1p-1060;
   const double errorB = 32 * kUnit * kUnit * magnitudeB + 0x1p-1060;
   const double room = std::fabs(span.hi) - errorA - errorB;
-  const double spread = room > 0 ? (std::fabs(b.hi) * errorA + std::fabs(a.hi) * errorB) /
-                                       (std::fabs(span.hi) * room)
-                                 : INFINITY;
+  const double spread =
+      room > 0 ? (std::fabs(b.hi) * errorA + std::fabs(a.hi) * errorB) / (std::fabs(span.hi) * room)
+               : INFINITY;
   const int axis = bisectorAxis(c, t);
   const double w = std::fabs(axis == 0 ? wx.hi : wy.hi);
   const double coordinate = std::fabs(axis == 0 ? at.x : at.y);

@@ -8,9 +8,7 @@ namespace {
 std::int32_t nextHalfEdge(std::int32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
 
 // Twice the signed area of triangle abc, from differences (exact for the unit square).
-double twiceArea(XY a, XY b, XY c) {
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
+double twiceArea(XY a, XY b, XY c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
 
 // The mesh's boundary: half-edges with an inside triangle on their left and an outside one
 // (or none) on their right.

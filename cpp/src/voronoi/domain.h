@@ -15,9 +15,9 @@
 namespace geocdt {
 
 struct Domain {
-  std::vector<XY> points;                   // every loop's vertices, loop after loop
-  std::vector<std::uint32_t> loopOffsets{0};  // loop i: points[loopOffsets[i] .. [i + 1])
-  double area = 0;                          // of the inside, in doubles
+  std::vector<XY> points;                         // every loop's vertices, loop after loop
+  std::vector<std::uint32_t> loopOffsets{0};      // loop i: points[loopOffsets[i] .. [i + 1])
+  double area = 0;                                // of the inside, in doubles
   double minX = 0, minY = 0, maxX = 0, maxY = 0;  // bounds of the points, when there are any
 
   std::uint32_t loopCount() const { return static_cast<std::uint32_t>(loopOffsets.size() - 1); }

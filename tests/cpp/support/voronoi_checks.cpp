@@ -55,10 +55,9 @@ class SiteGrid {
   void build(std::size_t lo, std::size_t hi, int axis) {
     if (hi - lo <= 1) return;
     const std::size_t mid = lo + (hi - lo) / 2;
-    std::nth_element(order_.begin() + lo, order_.begin() + mid, order_.begin() + hi,
-                     [&](std::size_t a, std::size_t b) {
-                       return xy_[2 * a + axis] < xy_[2 * b + axis];
-                     });
+    std::nth_element(
+        order_.begin() + lo, order_.begin() + mid, order_.begin() + hi,
+        [&](std::size_t a, std::size_t b) { return xy_[2 * a + axis] < xy_[2 * b + axis]; });
     build(lo, mid, 1 - axis);
     build(mid + 1, hi, 1 - axis);
   }
@@ -149,8 +148,8 @@ int inRing(const double* p, std::size_t n, double x, double y) {
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const double ax = p[2 * i], ay = p[2 * i + 1], bx = p[2 * i + 2], by = p[2 * i + 3];
     const Sign o = orient2d(ax, ay, bx, by, x, y);
-    if (o == Sign::Zero && std::min(ax, bx) <= x && x <= std::max(ax, bx) && std::min(ay, by) <= y &&
-        y <= std::max(ay, by))
+    if (o == Sign::Zero && std::min(ax, bx) <= x && x <= std::max(ax, bx) &&
+        std::min(ay, by) <= y && y <= std::max(ay, by))
       return -1;
     if (ay <= y) {
       if (by > y && o == Sign::Positive) ++winding;
@@ -169,8 +168,10 @@ int inCell(const VoronoiCells& c, std::size_t i, double x, double y) {
       const std::uint32_t b = c.ringOffsets[r], e = c.ringOffsets[r + 1];
       const int in = inRing(c.coords.data() + 2 * b, e - b, x, y);
       if (in < 0) return -1;
-      if (r == c.polygonOffsets[p]) where = in;
-      else if (in) where = 0;
+      if (r == c.polygonOffsets[p])
+        where = in;
+      else if (in)
+        where = 0;
     }
     if (where) return 1;
   }
@@ -270,8 +271,8 @@ std::string checkVertices(const VoronoiCells& c, const std::vector<double>& site
       const double tx = sites[2 * j], ty = sites[2 * j + 1];
       if (boundary.count({bits(x), bits(y), 0, 0})) {
         if (!notFartherExactly(x, y, sx, sy, tx, ty))
-          return "boundary vertex (" + std::to_string(x) + ", " + std::to_string(y) +
-                 ") of site " + std::to_string(i) + " is nearer site " + std::to_string(j);
+          return "boundary vertex (" + std::to_string(x) + ", " + std::to_string(y) + ") of site " +
+                 std::to_string(i) + " is nearer site " + std::to_string(j);
         continue;
       }
       const double size = std::max(std::fabs(x), std::fabs(y));
@@ -300,7 +301,8 @@ std::string checkSamples(const VoronoiCells& c, const std::vector<double>& sites
     if (in < 0) continue;
     const std::vector<std::size_t> order = near.nearest(x, y, 6);
     const double first = near.distance(order[0], x, y);
-    if (order.size() > 1 && near.distance(order[1], x, y) - first <= 1e-9 * (first + std::fabs(x) + std::fabs(y)))
+    if (order.size() > 1 &&
+        near.distance(order[1], x, y) - first <= 1e-9 * (first + std::fabs(x) + std::fabs(y)))
       continue;  // too near a bisector for the rounded cells to say
     for (std::size_t k = 0; k < order.size(); ++k) {
       const int where = inCell(c, order[k], x, y);
@@ -350,8 +352,10 @@ int CheckDomain::inside(double x, double y) const {
 
 CheckDomain boxCheckDomain(const double box[4]) {
   CheckDomain d;
-  d.segments = {{box[0], box[1], box[2], box[1]}, {box[2], box[1], box[2], box[3]},
-                {box[2], box[3], box[0], box[3]}, {box[0], box[3], box[0], box[1]}};
+  d.segments = {{box[0], box[1], box[2], box[1]},
+                {box[2], box[1], box[2], box[3]},
+                {box[2], box[3], box[0], box[3]},
+                {box[0], box[3], box[0], box[1]}};
   d.area = static_cast<long double>(box[2] - box[0]) * (box[3] - box[1]);
   d.isBox = true;
   boundsOfSegments(d);
@@ -375,11 +379,13 @@ CheckDomain ringCheckDomain(const std::vector<PolylineView>& rings, FillRule fil
       const long double ux = m.points[2 * b] - m.points[2 * a];
       const long double uy = m.points[2 * b + 1] - m.points[2 * a + 1];
       d.area += (ux * (m.points[2 * c + 1] - m.points[2 * a + 1]) -
-                 uy * (m.points[2 * c] - m.points[2 * a])) / 2;
+                 uy * (m.points[2 * c] - m.points[2 * a])) /
+                2;
     }
     const std::int32_t twin = m.halfedges[e];
     if (m.inside[e / 3] && (twin < 0 || !m.inside[twin / 3]))
-      d.segments.push_back({m.points[2 * a], m.points[2 * a + 1], m.points[2 * b], m.points[2 * b + 1]});
+      d.segments.push_back(
+          {m.points[2 * a], m.points[2 * a + 1], m.points[2 * b], m.points[2 * b + 1]});
   }
   boundsOfSegments(d);
   return d;

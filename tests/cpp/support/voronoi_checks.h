@@ -42,7 +42,7 @@ inline constexpr double kSubnormalSlack = 0x1p-1070;
 struct VoronoiReport {
   long double cellArea = 0;  // of all cells, signed by ring orientation
   std::size_t polygons = 0, rings = 0, points = 0;
-  std::size_t samples = 0;       // sample points checked against their nearest site
+  std::size_t samples = 0;        // sample points checked against their nearest site
   std::size_t boundaryEdges = 0;  // cell edges that no other cell shares
 };
 
