@@ -9,6 +9,7 @@
 #include "exact/bisector_predicates.h"
 #include "exact/circumcenter.h"
 #include "point_generators.h"
+#include "voronoi/crossing_point.h"
 
 namespace geocdt {
 namespace {
@@ -76,6 +77,41 @@ TEST(BisectorPredicates, AgreeWithRationals) {
 }
 
 // The stated accuracy, on random triangles and on nearly collinear ones (the exact path).
+// Each coordinate of a crossing within 2^-49 of its distance from the segment's nearer end plus
+// an ulp, at mixed scales (sites ulps or subnormals apart, segments up to 1e67 long: the fuzz
+// findings where lambda and the double-double error bound underflowed).
+TEST(CrossingPoint, NearItsExactPointAtMixedScales) {
+  testing::Random r(31);
+  int checked = 0;
+  for (const double near : {1.0, 1e-312, 0x1p-1070, 1e100}) {
+    for (const double far : {1.0, 1e67, 1e-154, 1e300}) {
+      for (int i = 0; i < 1500; ++i) {
+        const XY c{near * r.uniform(), near * r.uniform()};
+        const XY t{i % 3 == 0 ? std::nextafter(c.x, INFINITY) : near * r.uniform(),
+                   near * r.uniform()};
+        const XY p{i % 2 ? c.x : far * (r.uniform() - 0.5), i % 2 ? c.y : far * r.uniform()};
+        const XY e{i % 4 < 2 ? t.x : far * (r.uniform() - 0.5), far * r.uniform()};
+        const mpq_class a = f(c, t, p), b = f(c, t, e);
+        if (!(signOf(a) < 0 && signOf(b) > 0)) continue;
+        const mpq_class lambda = a / (a - b);
+        const mpq_class x = q(p.x) + lambda * (q(e.x) - q(p.x));
+        const mpq_class y = q(p.y) + lambda * (q(e.y) - q(p.y));
+        const mpq_class part = lambda <= mpq_class(1, 2) ? lambda : 1 - lambda;
+        const CrossingPoint at = crossingPoint(c, t, p, e);
+        const double wx = std::fabs(e.x - p.x), wy = std::fabs(e.y - p.y);
+        const double tx = 0x1p-49 * part.get_d() * wx + 0x1p-52 * std::fabs(at.at.x) + 0x1p-1073;
+        const double ty = 0x1p-49 * part.get_d() * wy + 0x1p-52 * std::fabs(at.at.y) + 0x1p-1073;
+        ASSERT_LE(std::fabs(mpq_class(q(at.at.x) - x).get_d()), tx)
+            << near << " " << far << " " << i;
+        ASSERT_LE(std::fabs(mpq_class(q(at.at.y) - y).get_d()), ty)
+            << near << " " << far << " " << i;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 4000);
+}
+
 TEST(Circumcenter, WithinItsTolerance) {
   testing::Random r(12);
   int checked = 0;

@@ -1,5 +1,7 @@
 #include "exact/bisector_predicates.h"
 
+#include <cmath>
+
 #include "exact/fixed_point.h"
 
 namespace geocdt {
@@ -60,6 +62,22 @@ Sign bisectorSide(XY c, XY t, XY p) {
   if (s != Sign::Zero) return s;
   const Exact e{fixed::baseOf({c.x, c.y, t.x, t.y, p.x, p.y})};
   return fixed::signOf(e.bisectorValue(c, t, p));
+}
+
+// lambda = A / (A - B) is not rounded on the way: a crossing a subnormal distance from p along
+// a long segment has a lambda below the doubles' range, its offset not.
+BisectorCrossingOffset bisectorCrossingOffset(XY c, XY t, XY p, XY q) {
+  const int base = fixed::baseOf({c.x, c.y, t.x, t.y, p.x, p.y, q.x, q.y});
+  const Exact e{base};
+  const Number a = e.bisectorValue(c, t, p), b = e.bisectorValue(c, t, q);
+  const Number span = fixed::difference(a, b);
+  const bool fromP = std::fabs(fixed::quotient(a, span, 0)) <= 0.5;
+  // From p: A / (A - B) (q - p); from q: B / (B - A) (p - q) = B / (A - B) (q - p).
+  const Number& part = fromP ? a : b;
+  const Number wx = fixed::difference(q.x, p.x, base), wy = fixed::difference(q.y, p.y, base);
+  return {fromP,
+          {fixed::quotient(fixed::product(part, wx), span, base),
+           fixed::quotient(fixed::product(part, wy), span, base)}};
 }
 
 Sign bisectorApproach(XY c, XY t, XY p, XY q) {

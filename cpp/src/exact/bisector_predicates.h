@@ -36,6 +36,17 @@ Sign firstBisectorCrossed(XY c, XY t, XY u, XY p, XY q);
 // quarter counter-clockwise. Zero when they cross it at one point.
 Sign crossingsAlongBisector(XY c, XY t, XY p1, XY q1, XY p2, XY q2);
 
+// Where p -> q meets the bisector of (c, t) (A != B), from A and B computed exactly: the offset
+// from the nearer end, p (lambda <= 1/2) or q, to the crossing, each coordinate within 2^-50 of
+// itself (plus 2^-1075 where it is subnormal). For the crossings whose floating-point estimate
+// is too poor: coordinates whose products underflow, segments nearly along the bisector, and
+// crossings so near an end that lambda itself would underflow.
+struct BisectorCrossingOffset {
+  bool fromP;
+  XY offset;
+};
+BisectorCrossingOffset bisectorCrossingOffset(XY c, XY t, XY p, XY q);
+
 // The sign of (t - c) . (q - p): whether p -> q runs towards t's side of the bisector.
 Sign bisectorApproach(XY c, XY t, XY p, XY q);
 

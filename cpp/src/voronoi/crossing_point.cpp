@@ -24,6 +24,10 @@ DoubleDouble bisectorValue(XY c, XY t, XY x, double& magnitude) {
 // In double-double, lambda is good to a few 2^-106 relative to the conditioning of the crossing
 // (f's magnitudes over |f(p) - f(q)|), so the rounded point is within about an ulp of its
 // coordinate plus an ulp of the segment's length, at any angle between segment and bisector.
+// Where that bound is not within 2^-52 of the part of the segment from its nearer end (segments
+// nearly along the bisector, coordinates whose scaled products underflow, crossings within
+// 2^-900 of the segment's length from an end), the offset comes from exact values instead: so
+// every crossing is within about 2^-50 of its distance from the nearer end, plus rounding.
 CrossingPoint crossingPoint(XY c, XY t, XY p, XY q) {
   if (bisectorSide(c, t, p) == Sign::Zero) return {p, 0};
   if (bisectorSide(c, t, q) == Sign::Zero) return {q, 0};
@@ -39,31 +43,44 @@ CrossingPoint crossingPoint(XY c, XY t, XY p, XY q) {
   const DoubleDouble a = bisectorValue(scaled(c), scaled(t), scaled(p), magnitudeA);
   const DoubleDouble b = bisectorValue(scaled(c), scaled(t), scaled(q), magnitudeB);
   const DoubleDouble span = a - b;
-  const DoubleDouble lambda = a / span;
-  const DoubleDouble wx = exactDifference(q.x, p.x), wy = exactDifference(q.y, p.y);
-  // From the nearer end, so that the point stays on the segment's line at either end.
-  const bool fromP = lambda.hi <= 0.5;
-  const DoubleDouble part = fromP ? lambda : b / (b - a);
-  const double sign = fromP ? 1 : -1;
-  const XY from = fromP ? p : q;
-  const DoubleDouble x = DoubleDouble{from.x} + DoubleDouble{sign * part.hi, sign * part.lo} * wx;
-  const DoubleDouble y = DoubleDouble{from.y} + DoubleDouble{sign * part.hi, sign * part.lo} * wy;
-  // Within the segment's box: a coordinate along which it does not move stays exact.
-  const XY at{std::fmin(std::fmax(x.hi, std::fmin(p.x, q.x)), std::fmax(p.x, q.x)),
-              std::fmin(std::fmax(y.hi, std::fmin(p.y, q.y)), std::fmax(p.y, q.y))};
-  // A bound for sorting: lambda's error (a's and b's over the span squared, and the roundings)
-  // times the segment's extent, plus the final rounding.
-  // (Coordinates below 2^-1022 of the largest underflow when scaled: 2^-1060 covers them.)
+  // lambda's error: a's and b's over the span squared, and the roundings (coordinates below
+  // 2^-1022 of the largest underflow when scaled, and so do products below that: 2^-1060 covers
+  // them).
   const double errorA = 32 * kUnit * kUnit * magnitudeA + 0x1p-1060;
   const double errorB = 32 * kUnit * kUnit * magnitudeB + 0x1p-1060;
   const double room = std::fabs(span.hi) - errorA - errorB;
-  const double spread =
-      room > 0 ? (std::fabs(b.hi) * errorA + std::fabs(a.hi) * errorB) / (std::fabs(span.hi) * room)
-               : INFINITY;
+  // As a sum of ratios: the products of tiny errors with the values underflow.
+  const double spread = room > 0 ? std::fabs(b.hi / span.hi) * (errorA / room) +
+                                       std::fabs(a.hi / span.hi) * (errorB / room)
+                                 : INFINITY;
+  const DoubleDouble wx = exactDifference(q.x, p.x), wy = exactDifference(q.y, p.y);
+  // From the nearer end, so that the point stays on the segment's line at either end.
+  const DoubleDouble lambda = a / span;
+  const bool fromP = lambda.hi <= 0.5;
+  const DoubleDouble part = fromP ? lambda : b / (b - a);
+  double x, y, partError;
+  if (spread <= 0x1p-52 * part.hi && part.hi >= 0x1p-900) {
+    const double sign = fromP ? 1 : -1;
+    const DoubleDouble signedPart{sign * part.hi, sign * part.lo};
+    const XY from = fromP ? p : q;
+    x = (DoubleDouble{from.x} + signedPart * wx).hi;
+    y = (DoubleDouble{from.y} + signedPart * wy).hi;
+    partError = spread + 16 * kUnit * kUnit;
+  } else {
+    const BisectorCrossingOffset exact = bisectorCrossingOffset(c, t, p, q);
+    const XY from = exact.fromP ? p : q;
+    x = from.x + exact.offset.x;
+    y = from.y + exact.offset.y;
+    partError = 0x1p-50;  // of the offset, itself at most the segment's extent
+  }
+  // Within the segment's box: a coordinate along which it does not move stays exact.
+  const XY at{std::fmin(std::fmax(x, std::fmin(p.x, q.x)), std::fmax(p.x, q.x)),
+              std::fmin(std::fmax(y, std::fmin(p.y, q.y)), std::fmax(p.y, q.y))};
+  // A bound for sorting: the part's error times the segment's extent, plus the roundings.
   const int axis = bisectorAxis(c, t);
   const double w = std::fabs(axis == 0 ? wx.hi : wy.hi);
   const double coordinate = std::fabs(axis == 0 ? at.x : at.y);
-  const double error = (spread + 16 * kUnit * kUnit) * w + kUnit * coordinate + 0x1p-1070;
+  const double error = partError * w + kUnit * coordinate + 0x1p-1070;
   return {at, std::isfinite(error) ? 2 * error : INFINITY};
 }
 
