@@ -280,6 +280,23 @@ TEST(Voronoi, LloydSpreadsTheSites) {
   EXPECT_LE(cells.stats.lloydMovement, 1e-3);
 }
 
+// Enough sites for the threaded insertion's strips: the triangles' slots then differ from one
+// thread's, and each cell's ring must still start at the same corner.
+TEST(Voronoi, SameCellsOnAnyNumberOfThreads) {
+  const std::vector<double> sites = testing::uniformPoints(40000, 12);
+  const double box[4] = {0.1, 0.1, 0.9, 0.9};
+  const VoronoiCells one = clipToBox(sites, box, 1);
+  EXPECT_EQ(checkVoronoi(one, sites, testing::boxCheckDomain(box), 2000, 1e-12), "");
+  for (const std::uint32_t threads : {2u, 3u}) {
+    const VoronoiCells more = clipToBox(sites, box, threads);
+    ASSERT_GT(more.stats.threads, 1u);
+    EXPECT_EQ(more.siteOffsets, one.siteOffsets) << threads << " threads";
+    EXPECT_EQ(more.polygonOffsets, one.polygonOffsets) << threads << " threads";
+    EXPECT_EQ(more.ringOffsets, one.ringOffsets) << threads << " threads";
+    EXPECT_TRUE(more.coords == one.coords) << threads << " threads";
+  }
+}
+
 TEST(Voronoi, BadInputIsRefused) {
   const std::vector<double> sites = {0, 0, 1, 1};
   VoronoiOptions o;

@@ -43,16 +43,30 @@ Status SiteDiagram::build(const double* sites, std::uint32_t count, double minX,
   recordHull();
   const Status guarded = addGuards(minX, minY, maxX, maxY);
   if (!guarded.ok()) return guarded;
+  computeCenters();
+  chooseOutEdges();
+  return Status::success();
+}
+
+// Each real site's half-edge out of it whose triangle has the least centre (by x, then y): the
+// corner its cell's ring starts from, the same whatever the slots' layout (threads, batches).
+void SiteDiagram::chooseOutEdges() {
   const std::vector<std::uint32_t>& tri = delaunay_->topo.tri;
   outEdge_.assign(realVertices_, -1);
   std::int32_t* out = outEdge_.data();
   const std::uint32_t real = realVertices_;
+  const XY* centers = centers_.data();
   forChunks(0, tri.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e)
-      if (tri[e] < real) out[tri[e]] = static_cast<std::int32_t>(e);
+    for (std::size_t e = begin; e < end; ++e) {
+      const std::uint32_t v = tri[e];
+      if (v >= real) continue;
+      const XY c = centers[e / 3];
+      const std::int32_t best = out[v];
+      if (best < 0 || c.x < centers[best / 3].x ||
+          (c.x == centers[best / 3].x && c.y < centers[best / 3].y))
+        out[v] = static_cast<std::int32_t>(e);
+    }
   });
-  computeCenters();
-  return Status::success();
 }
 
 // The hull edges are the real half-edges whose twins lie in ghost triangles, counter-clockwise
@@ -92,7 +106,8 @@ Status SiteDiagram::addGuards(double minX, double minY, double maxX, double maxY
   return delaunay_->insertBatch(guards, 3, ids);
 }
 
-// Appended in slot order (NaN for ghost triangles): one write per slot.
+// Appended in slot order (NaN for ghost triangles): one write per slot. The same doubles for
+// a triangle on any number of threads.
 void SiteDiagram::computeCenters() {
   const Topology& topo = delaunay_->topo;
   const auto slots = static_cast<std::size_t>(topo.slotCount());
@@ -103,10 +118,20 @@ void SiteDiagram::computeCenters() {
   const auto at = [xy](std::uint32_t v) { return XY{xy[2 * v], xy[2 * v + 1]}; };
   forChunks(0, slots, [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t) {
-      const std::uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-      centers_.push_back(a == kGhost || b == kGhost || c == kGhost
-                             ? XY{NAN, NAN}
-                             : circumcenter(at(a), at(b), at(c)));
+      std::uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
+      if (a == kGhost || b == kGhost || c == kGhost) {
+        centers_.push_back(XY{NAN, NAN});
+        continue;
+      }
+      // From the least vertex id: the rounding depends on the rotation, which threads change.
+      if (b < a && b < c) {
+        std::swap(a, b);  // b a c
+        std::swap(b, c);  // b c a
+      } else if (c < a && c < b) {
+        std::swap(a, c);  // c b a
+        std::swap(b, c);  // c a b
+      }
+      centers_.push_back(circumcenter(at(a), at(b), at(c)));
     }
   });
 }

@@ -38,7 +38,8 @@ class SiteDiagram {
   std::int32_t twin(std::int32_t e) const { return delaunay_->topo.adj[e]; }
   // The half-edge after e counter-clockwise around its origin.
   std::int32_t turn(std::int32_t e) const { return delaunay_->topo.adj[prevEdge(e)]; }
-  // A half-edge out of real site v.
+  // A half-edge out of real site v: the one whose triangle has the least centre (by x, then y),
+  // where its cell's ring starts.
   std::int32_t outEdge(std::uint32_t v) const { return outEdge_[v]; }
   // The circumcentre of slot t (a real triangle): a vertex of the Voronoi diagram.
   XY center(std::int32_t t) const { return centers_[t]; }
@@ -50,6 +51,7 @@ class SiteDiagram {
   void recordHull();
   Status addGuards(double minX, double minY, double maxX, double maxY);
   void computeCenters();
+  void chooseOutEdges();
 
   std::unique_ptr<Delaunay> delaunay_;
   std::vector<std::uint32_t> siteVertex_;
