@@ -280,6 +280,26 @@ TEST(Voronoi, LloydSpreadsTheSites) {
   EXPECT_LE(cells.stats.lloydMovement, 1e-3);
 }
 
+// Sites a few ulps apart at 1e150 x 1e100 (a fuzz finding): the centroid sums, cubes of the
+// cells' coordinates relative to their sites, overflowed, and the moved sites were infinite.
+TEST(Voronoi, LloydOnAHugeSliverKeepsTheSitesFinite) {
+  const double x0 = -9.9999999999999998e+149, x1 = -9.9999999999999925e+149,
+               x2 = -9.9999999999999707e+149, x3 = -9.999999999999978e+149;
+  const double y0 = 1.0000000000000031e+100, y1 = 9.9999999999999768e+99,
+               y2 = 1.0000000000000008e+100, y3 = 9.9999999999999924e+99,
+               y4 = 1.0000000000000023e+100, y5 = 1.0000000000000016e+100;
+  const std::vector<double> sites = {x0, y0, x0, y1, x0, y2, x1, y3, x0,
+                                     y4, x2, y1, x0, y3, x3, y2, x0, y5};
+  VoronoiOptions o;
+  o.clip = VoronoiClip::Hull;
+  o.lloydIterations = 2;
+  VoronoiCells cells;
+  ASSERT_TRUE(voronoi(sites.data(), sites.size() / 2, nullptr, 0, o, cells).ok());
+  EXPECT_EQ(cells.stats.lloydIterations, 2u);
+  for (const double v : cells.sites) EXPECT_TRUE(std::isfinite(v));
+  EXPECT_EQ(checkVoronoi(cells, cells.sites, testing::hullCheckDomain(sites), 500, 1e-9), "");
+}
+
 // Enough sites for the threaded insertion's strips: the triangles' slots then differ from one
 // thread's, and each cell's ring must still start at the same corner.
 TEST(Voronoi, SameCellsOnAnyNumberOfThreads) {
