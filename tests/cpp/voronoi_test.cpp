@@ -350,6 +350,12 @@ TEST(Voronoi, CheckerFindsBrokenCells) {
   VoronoiCells moved = good;
   moved.coords[2 * moved.ringOffsets[10] + 2] += 1e-6;
   EXPECT_NE(checkVoronoi(moved, sites, domain, 500, 1e-3), "");
+  VoronoiCells reversed = good;
+  std::reverse(reversed.coords.begin() + 2 * reversed.ringOffsets[10],
+               reversed.coords.begin() + 2 * reversed.ringOffsets[11]);
+  for (std::uint32_t k = reversed.ringOffsets[10]; k < reversed.ringOffsets[11]; ++k)
+    std::swap(reversed.coords[2 * k], reversed.coords[2 * k + 1]);  // (y, x) back to (x, y)
+  EXPECT_EQ(checkVoronoi(reversed, sites, domain, 500, 1.0), "ring 10 winds the wrong way");
   VoronoiCells dropped = good;
   for (std::size_t i = 8; i < dropped.siteOffsets.size(); ++i) dropped.siteOffsets[i] -= 1;
   dropped.polygonOffsets.erase(dropped.polygonOffsets.begin() + 7);

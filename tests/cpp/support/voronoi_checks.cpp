@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <unordered_map>
 #include <unordered_set>
@@ -23,6 +24,13 @@ struct KeyHash {
     return k.a * 0x9E3779B97F4A7C15ull ^ (k.b + 0x632BE59BD9B4E019ull) * 31 ^ k.c * 131 ^ k.d;
   }
 };
+// %.17g: enough digits to tell ulps apart, and tiny values are not 0.000000.
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
 std::uint64_t bits(double v) {
   std::uint64_t b;
   std::memcpy(&b, &v, sizeof b);
@@ -82,6 +90,16 @@ class SiteGrid {
   std::vector<std::size_t> order_;
 };
 
+// q in a long double, whose exponent reaches where a double's underflows.
+long double toLongDouble(mpq_class q) {
+  if (q == 0) return 0;
+  const long e = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
+                 static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
+  if (e > 0) mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<unsigned long>(e));
+  if (e < 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<unsigned long>(-e));
+  return std::ldexp(static_cast<long double>(q.get_d()), static_cast<int>(e));
+}
+
 // Exactly: |v - s|^2 <= |v - t|^2.
 bool notFartherExactly(double vx, double vy, double sx, double sy, double tx, double ty) {
   const mpq_class ax = mpq_class(vx) - sx, ay = mpq_class(vy) - sy;
@@ -112,9 +130,10 @@ class SegmentGrid {
           cells_[j * side_ + i].push_back(k);
     }
   }
-  // The length of the shortest segment within tolerance(length) of (x, y), or -1.
+  // The length of the shortest (or the longest) segment within tolerance(length) of (x, y), or
+  // -1.
   template <typename Tolerance>
-  double segmentAt(double x, double y, Tolerance tolerance) const {
+  double segmentAt(double x, double y, Tolerance tolerance, bool longest = false) const {
     double best = -1;
     for (long j = row(y) - 1; j <= row(y) + 1; ++j)
       for (long i = column(x) - 1; i <= column(x) + 1; ++i) {
@@ -122,7 +141,8 @@ class SegmentGrid {
         for (const std::size_t k : cells_[j * side_ + i]) {
           const auto& s = d_.segments[k];
           const double length = std::hypot(s[2] - s[0], s[3] - s[1]);
-          if (distanceToSegment(x, y, s) <= tolerance(length) && (best < 0 || length < best))
+          if (distanceToSegment(x, y, s) <= tolerance(length) &&
+              (best < 0 || (longest ? length > best : length < best)))
             best = length;
         }
       }
@@ -130,12 +150,13 @@ class SegmentGrid {
   }
 
  private:
-  long column(double x) const {
-    return std::clamp(static_cast<long>(std::floor((x - d_.minX) / w_)), 0L, side_ - 1);
+  // Clamped as doubles: a point far off a thin domain is more cells away than a long holds.
+  long bucket(double offset, double size) const {
+    const double at = std::floor(offset / size);
+    return static_cast<long>(std::clamp(at, 0.0, static_cast<double>(side_ - 1)));
   }
-  long row(double y) const {
-    return std::clamp(static_cast<long>(std::floor((y - d_.minY) / h_)), 0L, side_ - 1);
-  }
+  long column(double x) const { return bucket(x - d_.minX, w_); }
+  long row(double y) const { return bucket(y - d_.minY, h_); }
   const CheckDomain& d_;
   long side_;
   double w_, h_;
@@ -206,16 +227,52 @@ std::string checkLayout(const VoronoiCells& c, std::size_t sites, VoronoiReport&
       if (c.coords[2 * k] == c.coords[2 * k + 2] && c.coords[2 * k + 1] == c.coords[2 * k + 3])
         return "ring " + std::to_string(r) + " repeats a point";
   }
-  for (std::size_t p = 0; p + 1 < c.polygonOffsets.size(); ++p)
-    for (std::uint32_t r = c.polygonOffsets[p]; r < c.polygonOffsets[p + 1]; ++r) {
-      const long double a = ringArea(c, r);
-      report.cellArea += a;
-      if (r == c.polygonOffsets[p] ? a <= 0 : a >= 0)
-        return "ring " + std::to_string(r) + " winds the wrong way";
-    }
   report.polygons = c.polygonOffsets.size() - 1;
   report.rings = c.ringOffsets.size() - 1;
   report.points = c.ringOffsets.back();
+  return "";
+}
+
+// How far rounding may move vertex (x, y) of the cell of the site at (sx, sy) (web/API.md,
+// Exactness): a Voronoi vertex within 2^-48 (M + R) <= 2^-48 (|v| + 2 |v - s|), a crossing
+// within rounding of its boundary segment and 2^-50 of its length along it; the slack covers
+// both. The longest segment through v, as the checks cannot tell which one v came from.
+double vertexMove(double x, double y, double sx, double sy, const SegmentGrid& grid) {
+  const double size = std::max(std::fabs(x), std::fabs(y));
+  const double own = std::hypot(x - sx, y - sy);
+  const auto tolerance = [&](double length) {
+    return kVertexSlack * (size + own + length) + kSubnormalSlack;
+  };
+  return tolerance(std::max(0.0, grid.segmentAt(x, y, tolerance, true)));
+}
+
+// Outer rings counter-clockwise, holes clockwise, unless the ring is so small that moving its
+// vertices by vertexMove could turn it over: a vertex k moved by d_k changes the area by at
+// most the sum over edges k -> k+1 of (|e_k| (d_k + d_k+1) + d_k d_k+1) / 2.
+std::string checkWinding(const VoronoiCells& c, const std::vector<double>& sites,
+                         const CheckDomain& d, VoronoiReport& report) {
+  const SegmentGrid grid(d);
+  const double* p = c.coords.data();
+  for (std::size_t i = 0; i + 1 < c.siteOffsets.size(); ++i)
+    for (std::uint32_t g = c.siteOffsets[i]; g < c.siteOffsets[i + 1]; ++g)
+      for (std::uint32_t r = c.polygonOffsets[g]; r < c.polygonOffsets[g + 1]; ++r) {
+        const long double a = ringArea(c, r);
+        report.cellArea += a;
+        if (r == c.polygonOffsets[g] ? a > 0 : a < 0) continue;
+        const std::uint32_t b = c.ringOffsets[r], e = c.ringOffsets[r + 1];
+        const auto move = [&](std::uint32_t k) {
+          return d.segments.empty()
+                     ? kSubnormalSlack
+                     : vertexMove(p[2 * k], p[2 * k + 1], sites[2 * i], sites[2 * i + 1], grid);
+        };
+        long double turn = 0;
+        for (std::uint32_t k = b; k + 1 < e; ++k) {
+          const long double edge = std::hypot(p[2 * k + 2] - p[2 * k], p[2 * k + 3] - p[2 * k + 1]);
+          const long double from = move(k), to = move(k + 1);
+          turn += (edge * (from + to) + from * to) / 2;
+        }
+        if (std::fabs(a) > turn) return "ring " + std::to_string(r) + " winds the wrong way";
+      }
   return "";
 }
 
@@ -247,9 +304,8 @@ std::string checkEdges(const VoronoiCells& c, const CheckDomain& d, VoronoiRepor
         return kVertexSlack * (size + length) + kSubnormalSlack;
       };
       if (grid.segmentAt(x[e], y[e], tolerance) < 0)
-        return "an edge from (" + std::to_string(x[0]) + ", " + std::to_string(y[0]) + ") to (" +
-               std::to_string(x[1]) + ", " + std::to_string(y[1]) +
-               ") is neither shared nor on the domain's boundary";
+        return "an edge from (" + number(x[0]) + ", " + number(y[0]) + ") to (" + number(x[1]) +
+               ", " + number(y[1]) + ") is neither shared nor on the domain's boundary";
     }
     report.boundaryEdges += count;
   }
@@ -269,12 +325,11 @@ std::string checkVertices(const VoronoiCells& c, const std::vector<double>& site
       const double x = p[2 * k], y = p[2 * k + 1];
       const std::size_t j = near.nearest(x, y, 1)[0];
       const double tx = sites[2 * j], ty = sites[2 * j + 1];
-      if (boundary.count({bits(x), bits(y), 0, 0})) {
-        if (!notFartherExactly(x, y, sx, sy, tx, ty))
-          return "boundary vertex (" + std::to_string(x) + ", " + std::to_string(y) + ") of site " +
-                 std::to_string(i) + " is nearer site " + std::to_string(j);
+      // A boundary vertex is in the cell of a site nearest it, exactly; a crossing that
+      // rounded onto a boundary vertex (the midpoint of a one-ulp boundary segment is no
+      // double) is a rounded point, held to the documented bound below.
+      if (boundary.count({bits(x), bits(y), 0, 0}) && notFartherExactly(x, y, sx, sy, tx, ty))
         continue;
-      }
       const double size = std::max(std::fabs(x), std::fabs(y));
       const double own = std::hypot(x - sx, y - sy);
       const double along = std::max(0.0, grid.segmentAt(x, y, [&](double length) {
@@ -282,9 +337,9 @@ std::string checkVertices(const VoronoiCells& c, const std::vector<double>& site
       }));
       const double excess = own - std::hypot(x - tx, y - ty);
       if (excess > kVertexSlack * (size + own + along) + kSubnormalSlack)
-        return "vertex (" + std::to_string(x) + ", " + std::to_string(y) + ") of site " +
-               std::to_string(i) + " is " + std::to_string(excess) + " nearer site " +
-               std::to_string(j);
+        return "vertex (" + number(x) + ", " + number(y) + ") of site " + std::to_string(i) + " (" +
+               number(sx) + ", " + number(sy) + ") is " + number(excess) + " nearer site " +
+               std::to_string(j) + " (" + number(tx) + ", " + number(ty) + ")";
     }
   }
   return "";
@@ -294,23 +349,33 @@ std::string checkSamples(const VoronoiCells& c, const std::vector<double>& sites
                          const SiteGrid& near, const CheckDomain& d, std::size_t samples,
                          VoronoiReport& report) {
   Random random(samples * 7919 + sites.size());
+  const SegmentGrid grid(d);
   for (std::size_t s = 0; s < samples; ++s) {
     const double x = d.minX + (d.maxX - d.minX) * random.uniform();
     const double y = d.minY + (d.maxY - d.minY) * random.uniform();
     const int in = d.inside(x, y);
     if (in < 0) continue;
+    // Too near the boundary for the rounded cells to say: a cell's boundary edge ends at
+    // crossings only within rounding of the boundary (web/API.md, Exactness).
+    const double size = std::max(std::fabs(x), std::fabs(y));
+    if (grid.segmentAt(x, y, [&](double length) {
+          return kVertexSlack * (size + length) + kSubnormalSlack;
+        }) >= 0)
+      continue;
     const std::vector<std::size_t> order = near.nearest(x, y, 6);
     const double first = near.distance(order[0], x, y);
+    // Too near a bisector: cell vertices are rounded (the documented slack, and "a few
+    // 2^-1074 where coordinates are subnormal", where hypot's distances are off as much).
     if (order.size() > 1 &&
-        near.distance(order[1], x, y) - first <= 1e-9 * (first + std::fabs(x) + std::fabs(y)))
-      continue;  // too near a bisector for the rounded cells to say
+        near.distance(order[1], x, y) - first <= 1e-9 * (first + size) + 4 * kSubnormalSlack)
+      continue;
     for (std::size_t k = 0; k < order.size(); ++k) {
       const int where = inCell(c, order[k], x, y);
       const int expected = k == 0 ? in : 0;
       if (where != expected)
-        return "sample (" + std::to_string(x) + ", " + std::to_string(y) + "), " +
-               (in ? "inside" : "outside") + " the domain, is " + (where ? "in" : "not in") +
-               " the cell of site " + std::to_string(order[k]) + (k == 0 ? ", its nearest" : "");
+        return "sample (" + number(x) + ", " + number(y) + "), " + (in ? "inside" : "outside") +
+               " the domain, is " + (where ? "in" : "not in") + " the cell of site " +
+               std::to_string(order[k]) + (k == 0 ? ", its nearest" : "");
     }
     ++report.samples;
   }
@@ -413,14 +478,15 @@ CheckDomain hullCheckDomain(const std::vector<double>& sites) {
     hull.pop_back();
   }
   CheckDomain d;
+  mpq_class twice = 0;  // exactly: a sliver's area can hide under its coordinates' rounding
   if (hull.size() >= 3)
     for (std::size_t i = 0; i < hull.size(); ++i) {
       const auto& a = hull[i];
       const auto& b = hull[(i + 1) % hull.size()];
       d.segments.push_back({a.first, a.second, b.first, b.second});
-      const long double ax = a.first - hull[0].first, ay = a.second - hull[0].second;
-      d.area += (ax * (b.second - hull[0].second) - ay * (b.first - hull[0].first)) / 2;
+      twice += mpq_class(a.first) * b.second - mpq_class(a.second) * b.first;
     }
+  d.area = toLongDouble(twice / 2);
   boundsOfSegments(d);
   return d;
 }
@@ -430,6 +496,7 @@ std::string checkVoronoi(const VoronoiCells& cells, const std::vector<double>& s
                          VoronoiReport* out) {
   VoronoiReport report;
   std::string error = checkLayout(cells, sites.size() / 2, report);
+  if (error.empty()) error = checkWinding(cells, sites, domain, report);
   // Boundary vertices off by the slack move the area by up to that times the boundary's length.
   long double perimeter = 0, longest = 0;
   for (const auto& s : domain.segments) {
@@ -442,8 +509,8 @@ std::string checkVoronoi(const VoronoiCells& cells, const std::vector<double>& s
   const long double areaSlack =
       areaTolerance * domain.area + perimeter * (kVertexSlack * (size + longest) + kSubnormalSlack);
   if (error.empty() && std::fabs(report.cellArea - domain.area) > areaSlack)
-    error = "the cells' area " + std::to_string(static_cast<double>(report.cellArea)) +
-            " is not the domain's " + std::to_string(static_cast<double>(domain.area));
+    error = "the cells' area " + number(static_cast<double>(report.cellArea)) +
+            " is not the domain's " + number(static_cast<double>(domain.area));
   if (error.empty() && domain.area == 0 && report.polygons > 0) error = "cells in an empty domain";
   if (error.empty() && !domain.segments.empty()) error = checkEdges(cells, domain, report);
   const SiteGrid near(sites);
