@@ -300,6 +300,37 @@ TEST(Voronoi, LloydOnAHugeSliverKeepsTheSitesFinite) {
   EXPECT_EQ(checkVoronoi(cells, cells.sites, testing::hullCheckDomain(sites), 500, 1e-9), "");
 }
 
+// After a Lloyd step the domain is the first sites' hull, which the moved sites may leave: an
+// uncut cell is then inside by its corners' windings, not because its site is (a fuzz finding:
+// the guards' whole cells, 1e272 in area, came out as inside a hull of 3e219).
+TEST(Voronoi, LloydKeepsTheFirstHullAsTheDomain) {
+  const std::vector<double> sites = {-9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 1.0000000000000008e+100,
+                                     -9.9999999999999998e+149, 1.0000000000000008e+100,
+                                     -9.9999999999999962e+149, 1.0000000000000006e+100,
+                                     -9.9999999999999998e+149, 9.9999999999999982e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 1e+100,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 1.0000000000000008e+100,
+                                     -9.999999999999998e+149,  9.9999999999999963e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.999999999999998e+149,  9.9999999999999982e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99,
+                                     -9.9999999999999998e+149, 9.9999999999999943e+99};
+  VoronoiOptions o;
+  o.clip = VoronoiClip::Hull;
+  o.lloydIterations = 2;
+  VoronoiCells cells;
+  ASSERT_TRUE(voronoi(sites.data(), sites.size() / 2, nullptr, 0, o, cells).ok());
+  EXPECT_EQ(checkVoronoi(cells, cells.sites, testing::hullCheckDomain(sites), 500, 1e-9), "");
+}
+
 // Enough sites for the threaded insertion's strips: the triangles' slots then differ from one
 // thread's, and each cell's ring must still start at the same corner.
 TEST(Voronoi, SameCellsOnAnyNumberOfThreads) {

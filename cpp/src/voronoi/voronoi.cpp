@@ -72,12 +72,13 @@ Status assembleCells(const Domain& domain, const SiteDiagram& diagram, const Bou
   return Status::success();
 }
 
-// Inside or outside for the cells the boundary does not cut: by the windings of the Voronoi
-// vertices for rings, by the sites for a box or the hull (cell_sides.h).
+// Inside or outside for the cells the boundary does not cut: by the sites for a box or for
+// their own hull (cell_sides.h), else by the windings of the Voronoi vertices.
 CellSides sidesOf(const VoronoiOptions& options, const SiteDiagram& diagram,
-                  const BoundaryWalk& walk) {
+                  const BoundaryWalk& walk, bool hullOfTheseSites) {
   if (options.clip == VoronoiClip::Box) return CellSides::ofBox(diagram, options.box);
-  if (options.clip == VoronoiClip::Hull) return CellSides::ofHull(diagram);
+  // After Lloyd's steps the hull is the first sites', which moved sites may leave.
+  if (hullOfTheseSites) return CellSides::ofHull(diagram);
   return CellSides::ofWindings(diagram, vertexWindings(diagram, walk));
 }
 
@@ -113,7 +114,7 @@ Status clipCells(const double* xy, std::size_t count, Domain& domain, bool hull,
   BoundaryWalk walk;
   s = walkBoundary(domain, diagram, walk);
   if (!s.ok()) return s;
-  const CellSides sides = sidesOf(options, diagram, walk);
+  const CellSides sides = sidesOf(options, diagram, walk, hull);
   ClippedCells clipped;
   s = assembleCells(domain, diagram, walk, sides, clipped);
   if (!s.ok()) return s;
