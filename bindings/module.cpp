@@ -13,6 +13,7 @@
 #include "output.h"
 #include "polygons.h"
 #include "terrain.h"
+#include "voronoi.h"
 
 namespace geocdt::wasm {
 namespace {
@@ -57,6 +58,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
   registerEnum<FillRule>("FillRule");
   registerEnum<Phase>("Phase");
   registerEnum<Interpolation>("Interpolation");
+  registerEnum<VoronoiClip>("VoronoiClip");
   registerEnum<ElementType>("ElementType");
   function("fieldNames", &fieldNames);
   function("elementType", &fieldType);
@@ -72,6 +74,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("segment", &Output::segment)
       .function("stats", &Output::statsObject)
       .function("terrainStats", &Output::terrainStats)
+      .function("voronoiStats", &Output::voronoiStats)
       .function("clear", &Output::clear);
 
   class_<Input>("Input")
@@ -131,6 +134,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
 
   function("triangulateInto", &triangulateInto);
   function("triangulateRasterInto", &triangulateRasterInto);
+  function("voronoiInto", &voronoiInto);
   function("allocatedBytes", &allocatedBytes);
   function("peakBytes", &peakBytes);
 }

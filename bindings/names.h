@@ -7,6 +7,7 @@
 // enumerator added to the core stops the build until it has its name here.
 #include "geocdt/status.h"
 #include "geocdt/triangulation.h"
+#include "geocdt/voronoi.h"
 
 #pragma clang diagnostic push
 #pragma clang diagnostic error "-Wswitch"
@@ -68,6 +69,15 @@ constexpr const char* jsName(Interpolation method) {
   switch (method) {
     case Interpolation::Linear: return "linear";
     case Interpolation::Natural: return "natural";
+  }
+  return nullptr;
+}
+
+constexpr const char* jsName(VoronoiClip clip) {
+  switch (clip) {
+    case VoronoiClip::Rings: return "rings";
+    case VoronoiClip::Hull: return "hull";
+    case VoronoiClip::Box: return "box";
   }
   return nullptr;
 }

@@ -76,6 +76,11 @@ const char* jsName(Field field) {
     case Field::SteinerWeights: return "steinerWeights";
     case Field::SegmentOffsets: return "segmentOffsets";
     case Field::SegmentSources: return "segmentSources";
+    case Field::Coords: return "coords";
+    case Field::RingOffsets: return "ringOffsets";
+    case Field::PolygonOffsets: return "polygonOffsets";
+    case Field::SiteOffsets: return "siteOffsets";
+    case Field::Sites: return "sites";
   }
   return nullptr;
 }
@@ -95,7 +100,9 @@ ElementType elementType(Field field) {
   switch (field) {
     case Field::Points:
     case Field::Values:
-    case Field::SteinerWeights: return ElementType::Float64;
+    case Field::SteinerWeights:
+    case Field::Coords:
+    case Field::Sites: return ElementType::Float64;
     case Field::Raster: return ElementType::Float32;
     case Field::Halfedges:
     case Field::Regions: return ElementType::Int32;
@@ -110,7 +117,10 @@ ElementType elementType(Field field) {
     case Field::Steiner:
     case Field::SteinerParents:
     case Field::SegmentOffsets:
-    case Field::SegmentSources: return ElementType::Uint32;
+    case Field::SegmentSources:
+    case Field::RingOffsets:
+    case Field::PolygonOffsets:
+    case Field::SiteOffsets: return ElementType::Uint32;
   }
   return ElementType::Uint32;
 }
@@ -135,6 +145,11 @@ std::uintptr_t Output::data(int field) const {
     case Field::SteinerWeights: return address(mesh.steinerWeights);
     case Field::SegmentOffsets: return address(mesh.segmentOffsets);
     case Field::SegmentSources: return address(mesh.segmentSources);
+    case Field::Coords: return address(cells.coords);
+    case Field::RingOffsets: return address(cells.ringOffsets);
+    case Field::PolygonOffsets: return address(cells.polygonOffsets);
+    case Field::SiteOffsets: return address(cells.siteOffsets);
+    case Field::Sites: return address(cells.sites);
   }
   return 0;
 }
@@ -159,6 +174,11 @@ std::size_t Output::size(int field) const {
     case Field::SteinerWeights: return mesh.steinerWeights.size();
     case Field::SegmentOffsets: return mesh.segmentOffsets.size();
     case Field::SegmentSources: return mesh.segmentSources.size();
+    case Field::Coords: return cells.coords.size();
+    case Field::RingOffsets: return cells.ringOffsets.size();
+    case Field::PolygonOffsets: return cells.polygonOffsets.size();
+    case Field::SiteOffsets: return cells.siteOffsets.size();
+    case Field::Sites: return cells.sites.size();
   }
   return 0;
 }
@@ -184,6 +204,18 @@ emscripten::val Output::terrainStats() const {
   return object;
 }
 
+emscripten::val Output::voronoiStats() const {
+  const VoronoiStats& s = cells.stats;
+  emscripten::val object = emscripten::val::object();
+  object.set("domainArea", s.domainArea);
+  object.set("crossings", static_cast<double>(s.crossings));
+  object.set("clippedCells", static_cast<double>(s.clippedCells));
+  object.set("lloydIterations", s.lloydIterations);
+  object.set("lloydMovement", s.lloydMovement);
+  object.set("threads", s.threads);
+  return object;
+}
+
 void Output::clear() {
   release(mesh.points);
   release(mesh.triangles);
@@ -204,6 +236,7 @@ void Output::clear() {
   release(raster);
   release(inputToVertex);
   release(vertexIds);
+  cells = VoronoiCells();
   status = Status::success();
   stats = Stats{};
   terrain = TerrainStats{};

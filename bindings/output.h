@@ -12,6 +12,7 @@
 #include "geocdt/status.h"
 #include "geocdt/terrain.h"
 #include "geocdt/triangulation.h"
+#include "geocdt/voronoi.h"
 
 namespace geocdt::wasm {
 
@@ -36,6 +37,12 @@ enum class Field : int {
   SteinerWeights,
   SegmentOffsets,
   SegmentSources,
+  // voronoi()'s cells, and its sites where Lloyd's relaxation moved them
+  Coords,
+  RingOffsets,
+  PolygonOffsets,
+  SiteOffsets,
+  Sites,
 };
 
 // Named after the JS typed array that holds such elements (Float64Array, ...).
@@ -52,6 +59,7 @@ class Output {
   std::vector<float> raster;  // of rasterize()
   std::vector<std::uint32_t> inputToVertex;
   std::vector<std::uint32_t> vertexIds;  // of the last incremental insertion
+  VoronoiCells cells;                    // of voronoi()
   Status status;
   Stats stats;
   TerrainStats terrain;  // of triangulateRaster()
@@ -69,6 +77,8 @@ class Output {
   emscripten::val statsObject() const;
   // triangulateRaster()'s measurements as a JS object.
   emscripten::val terrainStats() const;
+  // voronoi()'s statistics, the same way.
+  emscripten::val voronoiStats() const;
 
   void clear();  // frees every array: the heap returns to where it was before the call
 };

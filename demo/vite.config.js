@@ -45,12 +45,14 @@ export default defineConfig({
     emptyOutDir: true,
     target: 'es2022',
     chunkSizeWarningLimit: 1024,
-    // The map demo, the vector tiles filled by triangulatePolygons(), and the terrain page.
+    // The map demo, the vector tiles filled by triangulatePolygons(), the terrain
+    // page and the Voronoi cells.
     rollupOptions: {
       input: {
         main: here('index.html'),
         tiles: here('tiles.html'),
         terrain: here('terrain.html'),
+        voronoi: here('voronoi.html'),
       },
     },
   },

@@ -6,8 +6,8 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { join, relative, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-// Bottom first. A folder may include folders of lower rank only; '.' is the facade at the
-// top of cpp/src.
+// Bottom first. A folder may include folders of lower rank only; '.' is the Triangulation
+// facade, and voronoi, which clips cells to rings triangulated through it, sits above it.
 const LAYERS = [
   ['geocdt', 'base'],
   ['exact'],
@@ -17,7 +17,7 @@ const LAYERS = [
   ['parallel', 'refine'],
   ['terrain'],
   ['.'],
-  ['polygons'],
+  ['polygons', 'voronoi'],
 ];
 
 const rank = new Map(LAYERS.flatMap((names, r) => names.map((name) => [name, r])));

@@ -8,6 +8,8 @@ import {
   checkValues, checkValuesPerPoint, describe, threadsError,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
+import { checkVoronoiOptions } from './voronoi-options.js';
+import { cellsToGeoJSON, sitesAndRings } from './voronoi-geojson.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
 
@@ -115,6 +117,36 @@ export function createApi(instantiate) {
       EARCUT_NAMES);
     triangles.extraPoints = extraPoints;
     return triangles;
+  }
+
+  // Each site's Voronoi cell clipped to the domain (the rings, the sites' hull or a box), as a
+  // GeoArrow MultiPolygon per site; options.lloyd relaxes the sites first.
+  function voronoi(input, options) {
+    const started = now();
+    const k = ready();
+    const { points, lines } = checkInput(input, 1, 'voronoi');
+    if (points.length === 0) {
+      throw new RangeError('geocdt: voronoi() needs at least one site in input.points');
+    }
+    const o = checkVoronoiOptions(options, points, lines.count);
+    const cells = k.voronoi({ points, lines }, o);
+    cells.stats.sites = points.length / 2;
+    cells.stats.polygons = cells.polygonOffsets.length - 1;
+    cells.stats.rings = cells.ringOffsets.length - 1;
+    cells.stats.milliseconds = now() - started;
+    return cells;
+  }
+
+  // The same from GeoJSON: Point and MultiPoint positions are the sites, Polygon and
+  // MultiPolygon rings bound the domain; a FeatureCollection of each site's cell with its
+  // feature's id and properties, or with { output: 'arrays' } voronoi()'s arrays and the
+  // sites' features.
+  function voronoiGeoJSON(geojson, options) {
+    const { output, rest } = geoJSONOutput(options);
+    const input = readGeoJSON(geojson, { pointFeatures: true });
+    const cells = voronoi(sitesAndRings(input), rest);
+    cells.siteFeatures = input.pointFeatures;
+    return output === 'arrays' ? cells : cellsToGeoJSON(cells);
   }
 
   // What the wasm heap holds: its size, the bytes allocated now, and the allocator's peak.
@@ -246,6 +278,6 @@ export function createApi(instantiate) {
 
   return {
     init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON,
-    memoryUsage, Triangulation,
+    voronoi, voronoiGeoJSON, memoryUsage, Triangulation,
   };
 }

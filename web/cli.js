@@ -1,6 +1,7 @@
 #!/usr/bin/env node
 // geocdt in.geojson -o out.geojson [--keep inside] [--stats]
 // geocdt dem.asc -o tin.geojson --max-error 1 [--min-angle 20] [--breaklines lines.geojson]
+// geocdt voronoi in.geojson -o out.geojson [--clip rings|hull|x0,y0,x1,y1] (cli-voronoi.js)
 import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
@@ -9,9 +10,11 @@ import { geoJSONResult } from './geojson.js';
 import { writeGeoJSON } from './geojson-writer.js';
 import { ProgressDisplay } from './progress-display.js';
 import { isRasterFile, readRasterFile } from './raster-file.js';
+import { VoronoiUsageError, voronoiCommand } from './cli-voronoi.js';
 
 const USAGE = `Usage: geocdt <in.geojson | -> [-o out.geojson] [options]
        geocdt <dem.asc | dem.npy | dem.npz> [-o out.geojson] [terrain options]
+       geocdt voronoi <in.geojson | -> [-o out.geojson] [options]   (geocdt voronoi --help)
 
 Triangulates a GeoJSON file: Point/MultiPoint become vertices, LineString/MultiLineString
 become constrained edges, Polygon/MultiPolygon rings become constrained edges that bound
@@ -222,9 +225,12 @@ async function terrain(args) {
   if (args.stats) printStats(mesh.stats);
 }
 
-main(process.argv.slice(2)).catch((error) => {
-  const usage = error instanceof UsageError;
-  const hint = usage ? 'Try geocdt --help\n' : '';
+const argv = process.argv.slice(2);
+const command = argv[0] === 'voronoi' ? voronoiCommand(argv.slice(1)) : main(argv);
+command.catch((error) => {
+  const usage = error instanceof UsageError || error instanceof VoronoiUsageError;
+  const help = argv[0] === 'voronoi' ? 'geocdt voronoi --help' : 'geocdt --help';
+  const hint = usage ? `Try ${help}\n` : '';
   process.stderr.write(`geocdt: ${error.message.replace(/^geocdt: /, '')}\n${hint}`);
   process.exitCode = usage ? 2 : 1;
 });

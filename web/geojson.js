@@ -116,13 +116,17 @@ function geometry(g, path, reader) {
   }
   const c = g.coordinates;
   const at = `${path}.coordinates`;
-  const { points, rings, lines } = reader;
+  const { points, rings, lines, pointFeatures } = reader;
   switch (g.type) {
     case 'Point':
       points.add(c, at, -1);
+      pointFeatures?.push(reader.feature);
       break;
     case 'MultiPoint':
-      list(c, at).forEach((p, i) => points.add(p, at, i));
+      list(c, at).forEach((p, i) => {
+        points.add(p, at, i);
+        pointFeatures?.push(reader.feature);
+      });
       break;
     case 'LineString':
       line(c, at, false, lines);
@@ -207,6 +211,7 @@ function countGeometry(g, counts) {
 // Reads one feature's geometry (feature: null for a bare geometry); its rings make one
 // polygon, the region of that feature.
 function feature(g, path, f, reader) {
+  reader.feature = f;
   const before = reader.rings.offsets.length;
   geometry(g, path, reader);
   if (reader.rings.offsets.length === before) return;
@@ -224,7 +229,9 @@ function feature(g, path, f, reader) {
 //   feature of polygon j (null for a bare geometry); both are there when polygons are.
 // - values: one per input point (its height) when some position has a third coordinate (NaN
 //   where one has none).
-export function readGeoJSON(geojson) {
+// - pointFeatures, with { pointFeatures: true }: the feature of each point (null for a bare
+//   geometry).
+export function readGeoJSON(geojson, { pointFeatures = false } = {}) {
   if (geojson === null || typeof geojson !== 'object') {
     const got = geojson === null ? 'null' : typeof geojson;
     throw new TypeError(`geocdt: expected a GeoJSON object, got ${got}`);
@@ -241,7 +248,8 @@ export function readGeoJSON(geojson) {
   }
   const reader = {
     points: new Positions(counts.points), rings: polylines(counts.rings),
-    lines: polylines(counts.lines), polygons: [0], features: [],
+    lines: polylines(counts.lines), polygons: [0], features: [], feature: null,
+    pointFeatures: pointFeatures ? [] : undefined,
   };
   if (geojson.type === 'FeatureCollection') {
     list(geojson.features, 'features').forEach((f, i) => {
@@ -279,6 +287,7 @@ export function readGeoJSON(geojson) {
     input.polygons = Uint32Array.from(reader.polygons);
     input.regionFeatures = reader.features;
   }
+  if (pointFeatures) input.pointFeatures = reader.pointFeatures;
   const all = [points, rings.positions, lines.positions];
   if (all.some((p) => p.z !== null)) {
     input.values = new Float64Array(all.reduce((n, p) => n + p.count, 0));

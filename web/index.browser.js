@@ -5,6 +5,7 @@ import { createApi, kAutoThreads } from './api.js';
 import { instantiateCompiled, instantiateWithWarmUp, threadedSettings } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
+export { cellsToGeoJSON } from './voronoi-geojson.js';
 export { GeocdtError } from './errors.js';
 
 // Starts the warm-up (web/warm-up.js) on the compiled module; the worker closes itself when
@@ -86,6 +87,6 @@ async function instantiate(options) {
 }
 
 export const {
-  init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON,
-  memoryUsage, Triangulation,
+  init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON, voronoi,
+  voronoiGeoJSON, memoryUsage, Triangulation,
 } = createApi(instantiate);

@@ -11,6 +11,7 @@ import { PthreadWorker } from './pthread-worker.node.js';
 import { instantiateCompiled, instantiateWithWarmUp, threadedSettings } from './warm-up.js';
 
 export { geoJSONToInput, meshToGeoJSON } from './geojson.js';
+export { cellsToGeoJSON } from './voronoi-geojson.js';
 export { GeocdtError } from './errors.js';
 
 // The threads of this process (Linux), or null.
@@ -99,6 +100,6 @@ async function instantiate(options) {
 }
 
 export const {
-  init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON,
-  memoryUsage, Triangulation,
+  init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON, voronoi,
+  voronoiGeoJSON, memoryUsage, Triangulation,
 } = createApi(instantiate);

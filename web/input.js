@@ -169,12 +169,12 @@ export function checkRaster(options, valuesPerPoint) {
 // either { arrays, count, points } (an array per polyline) or { coords, offsets, count,
 // points }. All are optional; polygons and values stay undefined when not given.
 // valuesPerPoint: checkValuesPerPoint()'s.
-export function checkInput(input, valuesPerPoint = 1) {
+export function checkInput(input, valuesPerPoint = 1, call = 'triangulate') {
   if (input === null || typeof input !== 'object' || Array.isArray(input)
     || ArrayBuffer.isView(input)) {
     const hint = Array.isArray(input) || ArrayBuffer.isView(input)
-      ? ' (for points alone: triangulate({ points }))' : '';
-    throw new TypeError('geocdt: triangulate() takes an object { points, polylines }, got '
+      ? ` (for points alone: ${call}({ points }))` : '';
+    throw new TypeError(`geocdt: ${call}() takes an object { points, polylines }, got `
       + `${describe(input)}${hint}`);
   }
   const points = input.points == null ? new Float64Array(0)

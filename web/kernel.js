@@ -71,6 +71,7 @@ export class Kernel {
     this.interpolation = wasm.Interpolation;
     this.keep = wasm.Keep;
     this.fillRule = wasm.FillRule;
+    this.voronoiClip = wasm.VoronoiClip;
     const types = enumNames(wasm.ElementType);
     this.fields = {};
     wasm.fieldNames().forEach((name, id) => {
@@ -497,6 +498,55 @@ export class Kernel {
     }
   }
 
+  // checked: checkInput()'s { points, lines }; o: checkVoronoiOptions()'s. Returns the cells in
+  // GeoArrow's layout, with the moved sites and the steps taken when o asks for relaxation.
+  voronoi(checked, o) {
+    const { points, lines } = checked;
+    this.enter();
+    let ok;
+    let coreMilliseconds;
+    try {
+      this.writeInput({ points, lines });
+      const started = now();
+      const [xmin, ymin, xmax, ymax] = o.box;
+      ok = this.wasm.voronoiInto(this.output, this.input, this.voronoiClip[o.clip], xmin, ymin,
+        xmax, ymax, this.fillRule[o.fillRule], this.threads, o.lloydIterations, o.lloydTolerance);
+      coreMilliseconds = now() - started;
+    } finally {
+      this.input.clear();
+      this.leave();
+    }
+    this.check(ok, (polyline, point) => polyline < 0
+      ? coordinateError(points, 'points', 0, point, '')
+      : lines.arrays === undefined
+        ? coordinateError(lines.coords, 'polylines.coords', 2 * lines.offsets[polyline], point,
+          ` of polyline ${polyline}`)
+        : coordinateError(lines.arrays[polyline], `polylines[${polyline}]`, 0, point,
+          ` of polyline ${polyline}`));
+    try {
+      const cells = {
+        coords: this.read('coords'),
+        ringOffsets: this.read('ringOffsets'),
+        polygonOffsets: this.read('polygonOffsets'),
+        siteOffsets: this.read('siteOffsets'),
+      };
+      const stats = this.output.voronoiStats();
+      if (o.lloydIterations > 0) {
+        cells.points = this.read('sites');
+        cells.lloyd = { iterations: stats.lloydIterations, movement: stats.lloydMovement };
+      }
+      cells.stats = {
+        domainArea: stats.domainArea,
+        crossings: stats.crossings,
+        clippedCells: stats.clippedCells,
+        threads: stats.threads,
+        coreMilliseconds,
+      };
+      return cells;
+    } finally {
+      this.output.clear();
+    }
+  }
   createIncremental(valuesPerPoint) {
     return new this.wasm.Incremental(valuesPerPoint, this.threads);
   }

@@ -9,6 +9,7 @@ import {
   checkValues, checkValuesPerPoint, describe,
 } from './input.js';
 import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
+import { cellsToGeoJSON, sitesAndRings } from './voronoi-geojson.js';
 
 // An array the worker may take: a typed array that spans its whole buffer is handed over
 // (the caller's array is then detached), another typed array is copied with slice(), and a
@@ -167,6 +168,31 @@ export class GeocdtWorker {
     const input = readGeoJSON(geojson);
     const mesh = await this.triangulate(input, { ...rest, transfer: true });
     return geoJSONResult(mesh, input, output, rest);
+  }
+
+  // The sites and rings are transferred as triangulate()'s are; the options are checked in the
+  // worker, by the same code as the main API's.
+  async voronoi(input, options) {
+    const { transfer, rest } = takeProgress(options);
+    const { points, lines } = checkInput(input, 1, 'voronoi');
+    const buffers = new Set();
+    const sent = { points: transferable(points, transfer, buffers) };
+    sent.polylines = lines.arrays !== undefined
+      ? lines.arrays.map((line) => transferable(line, transfer, buffers))
+      : {
+        coords: transferable(lines.coords, transfer, buffers),
+        offsets: transferable(lines.offsets, transfer, buffers),
+      };
+    return this.request('voronoi', [sent, rest], [...buffers]);
+  }
+
+  // As triangulateGeoJSON(): read here, the cells made in the worker, the features kept here.
+  async voronoiGeoJSON(geojson, options) {
+    const { output, rest } = geoJSONOutput(options);
+    const input = readGeoJSON(geojson, { pointFeatures: true });
+    const cells = await this.voronoi(sitesAndRings(input), { ...rest, transfer: true });
+    cells.siteFeatures = input.pointFeatures;
+    return output === 'arrays' ? cells : cellsToGeoJSON(cells);
   }
 
   memoryUsage() {

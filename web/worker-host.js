@@ -39,6 +39,7 @@ export function createHost(api, post) {
       return { triangles, extraPoints: triangles.extraPoints };
     },
     triangulateRaster: (_, raster, options) => api.triangulateRaster(raster, options),
+    voronoi: (_, input, options) => api.voronoi(input, options),
     memoryUsage: () => api.memoryUsage(),
     create: (_, id, options) => { triangulations.set(id, new api.Triangulation(options)); },
     insertPoints: (onProgress, id, xy, values) =>

@@ -7,7 +7,8 @@ import type {
   PolygonTriangles, ProgressOptions, RasterOptions, RefineOptions, ResultsOptions,
   TriangleFeatureCollection, TriangulateInput, TriangulateOptions, TriangulatePolygonsOptions,
   TriangulateResult, TriangulationOptions, Keep, FillRule, Heightmap, RasterMesh,
-  RasterMeshOptions,
+  RasterMeshOptions, VoronoiInput, VoronoiOptions, VoronoiCells, CellFeatureCollection,
+  VoronoiGeoJSONResult, GeoJSONOutput,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -45,6 +46,18 @@ export class GeocdtWorker {
   /** The heights and breaklines are transferred as triangulate()'s points are. */
   triangulateRaster(
     raster: Heightmap, options?: RasterMeshOptions & TransferOptions): Promise<RasterMesh>;
+  voronoi(
+    input: VoronoiInput, options?: VoronoiOptions & TransferOptions): Promise<VoronoiCells>;
+  /** The GeoJSON is read on the calling thread; the cells are made in the worker. */
+  voronoiGeoJSON(
+    geojson: GeoJSONInput,
+    options?: VoronoiOptions & { output?: 'geojson' }): Promise<CellFeatureCollection>;
+  voronoiGeoJSON(
+    geojson: GeoJSONInput,
+    options: VoronoiOptions & { output: 'arrays' }): Promise<VoronoiGeoJSONResult>;
+  voronoiGeoJSON(
+    geojson: GeoJSONInput, options?: VoronoiOptions & { output?: GeoJSONOutput },
+  ): Promise<CellFeatureCollection | VoronoiGeoJSONResult>;
   memoryUsage(): Promise<MemoryUsage>;
   /** A Triangulation that lives in the worker. */
   createTriangulation(options?: TriangulationOptions): RemoteTriangulation;

@@ -6,7 +6,7 @@ import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { init, meshToGeoJSON, triangulateGeoJSON } from 'geocdt';
+import { cellsToGeoJSON, init, meshToGeoJSON, triangulateGeoJSON, voronoiGeoJSON } from 'geocdt';
 import { ProgressDisplay } from '../../web/progress-display.js';
 import { uniform } from './support/inputs.js';
 
@@ -161,6 +161,27 @@ test('--help and --version', () => {
   const pkg = new URL('../../package.json', import.meta.url);
   const version = JSON.parse(readFileSync(pkg, 'utf8')).version;
   assert.equal(run(['--version']).stdout.trim(), version);
+});
+
+test('geocdt voronoi writes voronoiGeoJSON()\'s cells', () => {
+  const geojson = JSON.parse(readFileSync(fixture, 'utf8'));
+  geojson.features.push({ type: 'Feature', id: 'p', properties: { name: 'site' },
+    geometry: { type: 'MultiPoint', coordinates: [[1, 1], [2, 3], [0.5, 2]] } });
+  const input = join(dir, 'sites.geojson');
+  writeFileSync(input, JSON.stringify(geojson));
+  const out = join(dir, 'cells.geojson');
+  const p = run(['voronoi', input, '-o', out, '--clip', 'hull', '--lloyd', '2', '--stats']);
+  assert.equal(p.status, 0, p.stderr);
+  assert.match(p.stderr, /lloydIterations +2/);
+  const expected = cellsToGeoJSON(voronoiGeoJSON(geojson,
+    { clip: 'hull', lloyd: { iterations: 2 }, output: 'arrays' }));
+  assert.deepEqual(JSON.parse(readFileSync(out, 'utf8')), JSON.parse(JSON.stringify(expected)));
+  const bad = run(['voronoi', input, '--clip', '1,2,3']);
+  assert.equal(bad.status, 2);
+  assert.match(bad.stderr, /--clip must be rings, hull or xmin,ymin,xmax,ymax/);
+  const refused = run(['voronoi', input, '--clip', '1,1,0,0']);
+  assert.equal(refused.status, 1);
+  assert.match(refused.stderr, /xmin < xmax/);
 });
 
 test('on a terminal, progress is one bar redrawn in place', () => {

@@ -5,7 +5,7 @@ import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import createGeocdtModule from '../../web/dist/geocdt.mjs';
-import { init, triangulate, Triangulation } from 'geocdt';
+import { init, triangulate, Triangulation, voronoi } from 'geocdt';
 import { MAX_COORDINATE } from '../../web/input.js';
 import { PHASES } from './support/progress.js';
 
@@ -78,6 +78,9 @@ test('location kinds, keep, fill rules and phases', () => {
   assert.deepEqual(names(wasm.Phase), union('ProgressPhase'));
   assert.deepEqual(names(wasm.Phase), PHASES);
   assert.deepEqual(sorted(names(wasm.Interpolation)), sorted(union('Interpolation')));
+  // voronoi()'s clips: 'rings' and 'hull' by name, a box as its four numbers.
+  assert.deepEqual(names(wasm.VoronoiClip), ['rings', 'hull', 'box']);
+  assert.deepEqual(union('VoronoiClip'), ['rings', 'hull']);
   for (const phase of PHASES) assert.ok(api.includes(`'${phase}'`), `web/API.md names ${phase}`);
   const t = new Triangulation();
   assert.equal(t.locate(0, 0).kind, names(wasm.LocationKind)[0]);
@@ -93,8 +96,10 @@ test('output fields: the module\'s arrays are the result\'s, typed and documente
     points: [0, 0, 1, 0, 0, 1], polylines: [[0, 0, 1, 1]], polygons: [0, 1],
     values: [1, 2, 3, 4, 5],
   }, { insideFlags: true, refine: { minAngle: 0 }, segmentSources: true });
-  // Not in results: the incremental insertions' and rasterize()'s return values.
-  const returned = ['vertexIds', 'raster'];
+  // Not in results: the incremental insertions' and rasterize()'s return values; voronoi()'s
+  // (checked below).
+  const cellFields = ['coords', 'ringOffsets', 'polygonOffsets', 'siteOffsets', 'sites'];
+  const returned = ['vertexIds', 'raster', ...cellFields];
   const documented = [...members('Mesh'), ...members('TriangulateResult')];
   for (const field of fields) {
     if (returned.includes(field)) continue;
@@ -105,6 +110,20 @@ test('output fields: the module\'s arrays are the result\'s, typed and documente
   }
   assert.deepEqual(sorted(Object.keys(r).filter((k) => k !== 'stats')),
     sorted(fields.filter((f) => !returned.includes(f))));
+  // voronoi()'s arrays, the moved sites coming back as `points`.
+  const cells = voronoi({ points: [0, 0, 1, 0, 0, 1] }, { clip: 'hull', lloyd: true });
+  const cellsDocumented = members('VoronoiCells');
+  for (const field of cellFields) {
+    const Type = globalThis[`${elementTypes[wasm.elementType(fields.indexOf(field)).value]}Array`];
+    const name = field === 'sites' ? 'points' : field;
+    assert.ok(cells[name] instanceof Type, `${name} is a ${Type.name}`);
+    assert.ok(cellsDocumented.includes(name), `web/index.d.ts documents ${name}`);
+    assert.ok(api.includes(`| \`${name}\` | ${Type.name} |`), `web/API.md's table has ${name}`);
+  }
+  assert.deepEqual(sorted(Object.keys(cells.stats)), sorted(members('VoronoiStats')));
+  for (const stat of Object.keys(cells.stats)) {
+    assert.ok(api.includes(`\`${stat}\``), `web/API.md names ${stat}`);
+  }
 });
 
 test('statistics: the module\'s counters are the documented ones', () => {

@@ -2,7 +2,9 @@
 import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { createWorker } from 'geocdt/worker';
-import { init, triangulate, triangulateGeoJSON, triangulatePolygons, earcut } from 'geocdt';
+import {
+  init, triangulate, triangulateGeoJSON, triangulatePolygons, earcut, voronoi, voronoiGeoJSON,
+} from 'geocdt';
 import { createHost } from '../../web/worker-host.js';
 import { checkMesh } from './support/invariants.js';
 import { flatPolylines, uniform } from './support/inputs.js';
@@ -88,6 +90,29 @@ test('errors keep their type and message across the worker', async () => {
   await assert.rejects(t.insertPoints([0, 0]), { message: /no Triangulation 1 in this worker/ });
   const r = await worker.triangulate({ points: [0, 0, 1, 0, 0, 1] });
   assert.equal(r.triangles.length, 3, 'the worker still works');
+});
+
+test('Voronoi cells in the worker equal those made here', async () => {
+  await init();
+  const points = uniform(5_000, 37);
+  const rings = [[100, 100, 900, 100, 900, 900, 100, 900, 100, 100],
+    [300, 300, 300, 700, 700, 700, 700, 300, 300, 300]];
+  const here = voronoi({ points, polylines: rings }, { lloyd: { iterations: 2 } });
+  const there = await worker.voronoi({ points: points.slice(), polylines: rings },
+    { lloyd: { iterations: 2 } });
+  for (const key of ['coords', 'ringOffsets', 'polygonOffsets', 'siteOffsets', 'points']) {
+    assert.deepEqual(there[key], here[key], key);
+  }
+  assert.deepEqual(there.lloyd, here.lloyd);
+  const geojson = { type: 'FeatureCollection', features: [
+    { type: 'Feature', id: 7, properties: { a: 1 },
+      geometry: { type: 'Point', coordinates: [1, 1] } },
+    { type: 'Feature', properties: null,
+      geometry: { type: 'Polygon', coordinates: [[[0, 0], [4, 0], [4, 4], [0, 0]]] } }] };
+  assert.deepEqual(await worker.voronoiGeoJSON(geojson), voronoiGeoJSON(geojson));
+  await assert.rejects(worker.voronoi({ points: [] }), { name: 'RangeError' });
+  await assert.rejects(worker.voronoi({ points: [0, 0] }, { clip: [1, 1, 0, 0] }),
+    { name: 'RangeError', message: /xmin < xmax/ });
 });
 
 test('a Triangulation living in the worker', async () => {

@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { feature } from 'topojson-client';
-import { init, triangulate, triangulatePolygons, Triangulation } from 'geocdt';
+import { init, triangulate, triangulatePolygons, Triangulation, voronoi } from 'geocdt';
 import createGeocdtModule from '../../../web/dist/geocdt.mjs';
 import { createApi } from '../../../web/api.js';
 import { instantiateCompiled } from '../../../web/warm-up.js';
@@ -131,6 +131,21 @@ export function threadsSuite(threads) {
     checkMesh(r, input);
     checkConstraints(r, input);
     t.dispose();
+  });
+
+  // The sites' triangulation runs on the threads; without cocircular sites, the cells are one
+  // thread's, to the bit.
+  test(`Voronoi cells of uniform sites on ${threads} threads: one thread's cells`, () => {
+    const points = uniform(100_000, 11);
+    for (const clip of [[0, 0, 1000, 1000], 'hull']) {
+      const r = voronoi({ points }, { clip });
+      const one = single.voronoi({ points }, { clip });
+      assert.equal(r.stats.threads, threads);
+      assert.equal(one.stats.threads, 1);
+      for (const field of ['coords', 'ringOffsets', 'polygonOffsets', 'siteOffsets']) {
+        assert.deepEqual(r[field], one[field], field);
+      }
+    }
   });
 
   test(`a small call stays on one thread (${threads} asked)`, () => {

@@ -2,9 +2,9 @@
 // reject wrong use (the @ts-expect-error lines fail the build if they stop being errors).
 import {
   init, triangulate, triangulatePolygons, earcut, triangulateRaster, triangulateGeoJSON,
-  geoJSONToInput, Triangulation, memoryUsage, GeocdtError, type TriangulateResult,
-  type ProgressEvent, type GeocdtErrorCode, type Position, type PolygonTriangles,
-  type RasterMesh,
+  geoJSONToInput, Triangulation, memoryUsage, GeocdtError, voronoi, voronoiGeoJSON,
+  cellsToGeoJSON, type TriangulateResult, type ProgressEvent, type GeocdtErrorCode,
+  type Position, type PolygonTriangles, type RasterMesh, type VoronoiCells,
 } from 'geocdt';
 import { createWorker } from 'geocdt/worker';
 
@@ -74,6 +74,21 @@ async function main(): Promise<void> {
   tri.dispose();
   const heap: number = memoryUsage().heapBytes;
 
+  // Voronoi cells: GeoArrow offsets, clip choices, Lloyd, GeoJSON.
+  const cells: VoronoiCells = voronoi({ points: new Float64Array(6) }, { clip: [0, 0, 1, 1] });
+  const cellCoords: Float64Array = cells.coords;
+  const sitePolygons: Uint32Array = cells.siteOffsets;
+  const relaxed = voronoi({ points: [0, 0, 1, 1], polylines: [[0, 0, 2, 0, 2, 2, 0, 0]] },
+    { clip: 'rings', fillRule: 'nonzero', lloyd: { iterations: 5, tolerance: 1e-9 } });
+  const moved: Float64Array | undefined = relaxed.points;
+  const steps: number | undefined = relaxed.lloyd?.iterations;
+  voronoi({ points: [0, 0] }, { clip: 'hull', lloyd: true });
+  const cellFeatures = voronoiGeoJSON({ type: 'FeatureCollection', features: [] });
+  const cellGeometry = cellFeatures.features[0].geometry?.coordinates[0][0][0];
+  const cellArrays = voronoiGeoJSON({ type: 'Point', coordinates: [0, 0] }, { output: 'arrays' });
+  const siteFeature = cellArrays.siteFeatures[0]?.properties;
+  const asGeoJSON = cellsToGeoJSON(cells).features.length;
+
   try {
     triangulate({});
   } catch (e) {
@@ -110,8 +125,17 @@ async function main(): Promise<void> {
     { coords: [0, 0, 1, 0, 0, 1], ringOffsets: [0, 3], polygonOffsets: [0, 1] },
     { transfer: false })).triangles;
   const remoteEar: Float64Array = (await worker.earcut([0, 0, 1, 0, 0, 1])).extraPoints;
+  const remoteCells: VoronoiCells = await worker.voronoi({ points: [0, 0, 1, 1] },
+    { clip: 'hull', transfer: false });
+  const remoteCellFeatures = await worker.voronoiGeoJSON({ type: 'Point', coordinates: [0, 0] });
   worker.terminate();
 
+  // @ts-expect-error clip takes 'rings', 'hull' or a box
+  voronoi({ points: [0, 0] }, { clip: 'bbox' });
+  // @ts-expect-error a box has four numbers
+  voronoi({ points: [0, 0] }, { clip: [0, 0, 1] });
+  // @ts-expect-error voronoi() needs points
+  voronoi({ polylines: [] });
   // @ts-expect-error keep takes 'all' or 'inside'
   triangulate({ points: [] }, { keep: 'outside' });
   // @ts-expect-error points are numbers
@@ -140,7 +164,8 @@ async function main(): Promise<void> {
   void [t, h, inside, ms, flat, phases, firstRing, ids, perRing, offsets, v, kind, flips, heap,
     remote, located, phase, id, name, regionOf, featureOf, heights, regions, meshRegions, at,
     grid, perPoint, remoteAt, remoteGrid, fillIndices, extra, perPolygon, general, earIndices,
-    earExtra, remoteFill, remoteEar, tinHeights, tinError, remoteTin];
+    earExtra, remoteFill, remoteEar, tinHeights, tinError, remoteTin, cellCoords, sitePolygons,
+    moved, steps, cellGeometry, siteFeature, asGeoJSON, remoteCells, remoteCellFeatures];
 }
 
 main();
