@@ -341,11 +341,9 @@ Status finishSnapRounding(Delaunay& d, std::uint32_t keep, Delaunay& fresh);
 Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<double>& extra,
                      Delaunay& fresh, bool& bent) {
   bent = false;
-  std::vector<std::uint32_t> ids(keep);
-  Status status = fresh.insertBatch(d.xy.data(), keep, ids.data());
+  // (Vertices removed by edits stay removed, segments of removed polylines are skipped.)
+  Status status = fresh.insertKeepingIds(d.xy.data(), keep);
   if (!status.ok()) return status;
-  for (std::uint32_t i = 0; i < keep; ++i)
-    if (ids[i] != i) return {StatusCode::InternalError, "snap rounding renumbered a vertex"};
   ConstraintStore& store = fresh.constraints;
   store.segments = d.constraints.segments;
   store.segmentStarts = d.constraints.segmentStarts;
@@ -365,6 +363,7 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
   ends.build(fresh);
   std::vector<std::int32_t> outOf(n);
   for (std::size_t i = 0; i < n; ++i) {
+    if (!store.live(static_cast<std::uint32_t>(i))) continue;
     outOf[i] = ends.find(fresh, store.segments[i].a);
     if (outOf[i] < 0) return {StatusCode::InternalError, "snap rounding lost the end of a segment"};
   }
@@ -378,6 +377,7 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
   std::vector<std::vector<std::uint32_t>> candidates(n);
   std::vector<double> reach(n);
   for (std::size_t i = 0; i < n; ++i) {
+    if (!store.live(static_cast<std::uint32_t>(i))) continue;
     int ex, ey;
     const InputSegment s = segment(i);
     boxExponents(s, ex, ey);
@@ -453,6 +453,7 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
   std::vector<std::uint32_t> chain;
   const std::uint32_t hotPixels = fresh.vertexCount();
   for (std::size_t i = 0; i < n; ++i) {
+    if (!store.live(static_cast<std::uint32_t>(i))) continue;
     std::vector<std::uint32_t>& list = candidates[i];
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());

@@ -43,6 +43,7 @@ Delaunay& Delaunay::operator=(Delaunay&& other) noexcept {
   star_ = std::move(other.star_);
   lawson_ = std::move(other.lawson_);
   lawsonTop_ = other.lawsonTop_;
+  ring_ = std::move(other.ring_);
   error_ = std::move(other.error_);
   return *this;
 }

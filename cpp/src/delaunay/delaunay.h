@@ -3,11 +3,13 @@
 // triangle or edge split, then Lawson flips. The hull is closed by a ghost vertex, so points
 // outside the hull need no special case beyond the ghost's in-circle rule.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "base/chunks.h"
 #include "delaunay/point_grid.h"
+#include "delaunay/star_ring.h"
 #include "geocdt/status.h"
 #include "geocdt/triangulation.h"
 #include "mesh/constraint_store.h"
@@ -88,6 +90,23 @@ class Delaunay {
   // Bowyer-Watson insertion). Returns the half-edge from v to the first boundary edge's start.
   std::int32_t fillStar(std::uint32_t v, const std::vector<std::int32_t>& slots,
                         const std::vector<std::int32_t>& boundary);
+  // Editing (vertex_removal.cpp). Removes vertex v, none of whose edges may be constrained
+  // (the caller takes its constraints first): the border of its star is cut into triangles
+  // again and made Delaunay by flips, and two slots are freed. Its coordinates become NaN
+  // and its id is never given again. When the vertices left are all collinear, the
+  // triangulation goes back to having no triangles: its vertices wait again and its
+  // constrained edges become pending segments. out: a half-edge out of v, or -1. With
+  // moving, v is about to be inserted again elsewhere (reinsertVertex): not counted removed.
+  Status removeVertex(std::uint32_t v, std::int32_t out = -1, bool moving = false);
+  // Inserts vertex v again, at its coordinates in xy, keeping its id (a move). Its place must
+  // not hold another vertex.
+  Status reinsertVertex(std::uint32_t v);
+  // Into an empty triangulation: the vertices of from[0 .. 2 * count), each keeping its id,
+  // but those removed (NaN), which stay removed (kept_ids.cpp). For rebuilds after edits.
+  Status insertKeepingIds(const double* from, std::uint32_t count);
+  bool isRemoved(std::uint32_t v) const { return std::isnan(xy[2 * static_cast<std::size_t>(v)]); }
+  const std::vector<std::uint32_t>& waiting() const { return pending_; }
+
   // Flips non-constrained edges on the stack until each is locally Delaunay, checking all
   // four edges around each flip: for any edges, not only those around a new vertex.
   void restoreDelaunay();
@@ -210,7 +229,10 @@ class Delaunay {
   std::vector<StarEdge> star_;  // fillStar's boundary as it was
   std::vector<std::int32_t> lawson_;
   std::size_t lawsonTop_ = 0;
+  StarRing ring_;  // a removal's scratch
   Status error_;
+
+  friend class VertexRemoval;
 };
 
 }  // namespace geocdt

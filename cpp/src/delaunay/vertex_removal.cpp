@@ -1,0 +1,295 @@
+// Removing a vertex: the border of its star is a polygon, which is cut into triangles again
+// and made (constrained) Delaunay by Lawson flips. Only the new edges can be non-Delaunay:
+// every triangle outside the star keeps an empty circumcircle when a vertex goes.
+//
+// The polygon is star-shaped from the removed vertex x, its vertices in strictly increasing
+// angle around x. An ear (a, b, c) whose corner b is convex and whose new edge a -> c has x on
+// its left (or on it) holds no other polygon vertex: the ear lies in the wedge from a to c
+// seen from x, beyond a-c, where no other vertex lies. Cutting it leaves the rest star-shaped
+// from x, and one such ear always exists (two ears that do not overlap cannot both hold x),
+// so an ear is found by orientation tests alone, no test against the other vertices.
+//
+// On the hull, the ghost is one of the ring's vertices and x lies outside what is left. The
+// real vertices v1 .. vk of the ring are in angular order around x over at most half a turn:
+// a Graham scan from v1 to vk pops each vertex that turns left, cutting it off as an ear (the
+// same wedge argument), and what stays is the new hull from v1 to vk, closed by one ghost
+// triangle per new hull edge.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "delaunay/delaunay.h"
+#include "geocdt/predicates.h"
+
+namespace geocdt {
+
+class VertexRemoval {
+ public:
+  explicit VertexRemoval(Delaunay& d) : d_(d), topo_(d.topo), ring_(d.ring_) {}
+
+  Status run(std::uint32_t v, std::int32_t out, bool moving);
+  Status reinsert(std::uint32_t v);
+
+ private:
+  Sign orient(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
+    const double* p = d_.xy.data();
+    return orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1]);
+  }
+  std::uint32_t at(std::int32_t node) const { return ring_.vertex[node]; }
+  // Whether the ring's real vertices (all but node g) lie on one line.
+  bool realRingCollinear(std::int32_t g) const;
+  // False when an edge out of the vertex is constrained.
+  bool gather(std::int32_t out);
+  // Triangle (a, b, c) of nodes a, b = next[a], c = next[b] in the next free slot; b leaves
+  // the polygon. Returns the slot.
+  std::int32_t cut(std::int32_t a, std::int32_t b, std::int32_t c, std::uint32_t third);
+  bool cutInterior(double x, double y);
+  bool isEarAnyway(std::int32_t b) const;  // the full test, for a polygon that finds no ear
+  void cutHull(std::int32_t g);
+  void freeSlots();
+  void collapse(std::uint32_t v, bool moving);
+  void markRemoved(std::uint32_t v, bool moving);
+  Status broken(std::uint32_t v, const char* what) {
+    return {StatusCode::InternalError,
+            "removing vertex " + std::to_string(v) + ": " + what + " (a broken triangulation)", v};
+  }
+
+  Delaunay& d_;
+  Topology& topo_;
+  StarRing& ring_;
+};
+
+Status Delaunay::removeVertex(std::uint32_t v, std::int32_t out, bool moving) {
+  return VertexRemoval(*this).run(v, out, moving);
+}
+
+Status Delaunay::reinsertVertex(std::uint32_t v) { return VertexRemoval(*this).reinsert(v); }
+
+void VertexRemoval::markRemoved(std::uint32_t v, bool moving) {
+  d_.xy[2 * static_cast<std::size_t>(v)] = std::numeric_limits<double>::quiet_NaN();
+  d_.xy[2 * static_cast<std::size_t>(v) + 1] = std::numeric_limits<double>::quiet_NaN();
+  if (!moving) ++d_.stats.removed;
+}
+
+Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving) {
+  if (!d_.built_) {  // a vertex waiting for the triangulation to have triangles
+    std::vector<std::uint32_t>& waiting = d_.pending_;
+    const auto it = std::find(waiting.begin(), waiting.end(), v);
+    if (it == waiting.end()) return broken(v, "not among the waiting vertices");
+    waiting.erase(it);
+    markRemoved(v, moving);
+    return Status::success();
+  }
+  const double x = d_.xy[2 * static_cast<std::size_t>(v)];
+  const double y = d_.xy[2 * static_cast<std::size_t>(v) + 1];
+  if (out < 0 || out >= 3 * topo_.slotCount() || topo_.tri[out] != v) {
+    const Hit h = d_.locate(x, y, true);
+    if (h.kind != Hit::Kind::Vertex || topo_.tri[h.edge] != v) return broken(v, "not found");
+    out = h.edge;
+  }
+  if (!gather(out)) return broken(v, "a constrained edge still ends there");
+  const auto degree = static_cast<std::int32_t>(ring_.vertex.size());
+  std::int32_t g = -1;
+  for (std::int32_t i = 0; i < degree && g < 0; ++i)
+    if (at(i) == kGhost) g = i;
+  // With the ghost closing the hull, n vertices make 2n - 2 slots.
+  const std::int32_t vertices = topo_.slotCount() / 2 + 1;
+  if (g >= 0 && degree - 1 == vertices - 1 && realRingCollinear(g)) {
+    collapse(v, moving);
+    return Status::success();
+  }
+  if (g < 0 ? !cutInterior(x, y) : (cutHull(g), false))
+    return broken(v, "no ear in the border of its star");
+  if (ring_.used != ring_.slot.size() - 2) return broken(v, "the star was not filled");
+  const std::int32_t kept = ring_.slot[0];
+  freeSlots();
+  std::vector<std::int32_t>& stack = d_.flipStack();
+  stack.insert(stack.end(), ring_.diagonals.begin(), ring_.diagonals.end());
+  d_.restoreDelaunay();
+  d_.grid_.cellAt(x, y) = kept;
+  d_.last_ = kept;
+  markRemoved(v, moving);
+  return Status::success();
+}
+
+// The ring around v from half-edge out, counter-clockwise: each star triangle (v, r, s)
+// gives its slot, r, and the half-edge beyond its far edge r -> s.
+bool VertexRemoval::gather(std::int32_t out) {
+  ring_.clear();
+  std::int32_t e = out;
+  do {
+    if (topo_.fixed[e]) return false;
+    const std::int32_t far = nextEdge(e);
+    ring_.vertex.push_back(topo_.tri[far]);
+    ring_.slot.push_back(e / 3);
+    ring_.carrier.push_back(topo_.adj[far]);
+    ring_.fixed.push_back(topo_.fixed[far]);
+    e = topo_.adj[prevEdge(e)];
+  } while (e != out);
+  const auto n = static_cast<std::int32_t>(ring_.vertex.size());
+  ring_.next.resize(n);
+  ring_.prev.resize(n);
+  for (std::int32_t i = 0; i < n; ++i) {
+    ring_.next[i] = i + 1 < n ? i + 1 : 0;
+    ring_.prev[i] = i > 0 ? i - 1 : n - 1;
+  }
+  // The new triangles go into the lowest slots; the two highest are freed, so that the
+  // triangles that move into them are never new ones.
+  std::sort(ring_.slot.begin(), ring_.slot.end());
+  return true;
+}
+
+bool VertexRemoval::realRingCollinear(std::int32_t g) const {
+  const auto n = static_cast<std::int32_t>(ring_.vertex.size());
+  if (n <= 3) return true;
+  const std::uint32_t a = at(ring_.next[g]), b = at(ring_.prev[g]);
+  for (std::int32_t i = 0; i < n; ++i)
+    if (i != g && orient(a, b, at(i)) != Sign::Zero) return false;
+  return true;
+}
+
+std::int32_t VertexRemoval::cut(std::int32_t a, std::int32_t b, std::int32_t c,
+                                std::uint32_t third) {
+  const std::int32_t s = ring_.slot[ring_.used++];
+  const std::int32_t e = 3 * s;
+  topo_.setTriangle(s, at(a), at(b), third);
+  topo_.link(e, ring_.carrier[a]);
+  topo_.fixed[e] = ring_.fixed[a];
+  if (c >= 0) {
+    topo_.link(e + 1, ring_.carrier[b]);
+    topo_.fixed[e + 1] = ring_.fixed[b];
+    topo_.fixed[e + 2] = 0;
+    // The polygon's new edge a -> c is twinned with this triangle's c -> a.
+    ring_.carrier[a] = e + 2;
+    ring_.fixed[a] = 0;
+    ring_.next[a] = c;
+    ring_.prev[c] = a;
+    ring_.diagonals.push_back(e + 2);
+  }
+  return s;
+}
+
+bool VertexRemoval::cutInterior(double x, double y) {
+  const double* p = d_.xy.data();
+  auto count = static_cast<std::int32_t>(ring_.vertex.size());
+  std::int32_t a = 0, since = 0;
+  while (count > 3) {
+    const std::int32_t b = ring_.next[a], c = ring_.next[b];
+    const std::uint32_t va = at(a), vc = at(c);
+    const bool ear =
+        orient(va, at(b), vc) == Sign::Positive &&
+        orient2d(p[2 * va], p[2 * va + 1], p[2 * vc], p[2 * vc + 1], x, y) != Sign::Negative;
+    if (ear || (since > count && isEarAnyway(b))) {
+      cut(a, b, c, at(c));
+      --count;
+      a = ring_.prev[a];
+      since = 0;
+      continue;
+    }
+    if (++since > 2 * count + 2) return false;
+    a = b;
+  }
+  const std::int32_t b = ring_.next[a], c = ring_.next[b];
+  const std::int32_t s = ring_.slot[ring_.used++];
+  topo_.setTriangle(s, at(a), at(b), at(c));
+  for (const std::int32_t node : {a, b, c}) {
+    const std::int32_t e = 3 * s + (node == a ? 0 : node == b ? 1 : 2);
+    topo_.link(e, ring_.carrier[node]);
+    topo_.fixed[e] = ring_.fixed[node];
+  }
+  return true;
+}
+
+// A convex corner b whose triangle holds no other polygon vertex, closed: never needed when
+// the ring is a star's border, kept as a safety net.
+bool VertexRemoval::isEarAnyway(std::int32_t b) const {
+  const std::int32_t a = ring_.prev[b], c = ring_.next[b];
+  const std::uint32_t va = at(a), vb = at(b), vc = at(c);
+  if (orient(va, vb, vc) != Sign::Positive) return false;
+  for (std::int32_t n = ring_.next[c]; n != a; n = ring_.next[n]) {
+    const std::uint32_t w = at(n);
+    if (orient(va, vb, w) != Sign::Negative && orient(vb, vc, w) != Sign::Negative &&
+        orient(vc, va, w) != Sign::Negative)
+      return false;
+  }
+  return true;
+}
+
+// A hull vertex: a Graham scan over the real vertices pops (cuts off) every left turn; the
+// chain left is the new hull, each of its edges closed by a ghost triangle.
+void VertexRemoval::cutHull(std::int32_t g) {
+  const std::int32_t first = ring_.next[g];
+  for (std::int32_t c = ring_.next[first]; c != g; c = ring_.next[c]) {
+    while (ring_.prev[c] != first) {
+      const std::int32_t b = ring_.prev[c], a = ring_.prev[b];
+      if (orient(at(a), at(b), at(c)) != Sign::Positive) break;
+      cut(a, b, c, at(c));
+    }
+  }
+  std::int32_t before = -1;  // the slot of the ghost triangle made last
+  std::int32_t h = first;
+  for (; ring_.next[h] != g; h = ring_.next[h]) {
+    const std::int32_t s = cut(h, ring_.next[h], -1, kGhost);
+    topo_.fixed[3 * s + 1] = topo_.fixed[3 * s + 2] = 0;
+    if (before < 0) {
+      topo_.link(3 * s + 2, ring_.carrier[g]);
+      topo_.fixed[3 * s + 2] = ring_.fixed[g];
+    } else {
+      topo_.link(3 * s + 2, 3 * before + 1);
+    }
+    before = s;
+  }
+  topo_.link(3 * before + 1, ring_.carrier[h]);
+  topo_.fixed[3 * before + 1] = ring_.fixed[h];
+}
+
+void VertexRemoval::freeSlots() {
+  const std::size_t n = ring_.slot.size();
+  for (std::size_t k = n; k-- > n - 2;) {
+    const std::int32_t t = ring_.slot[k];
+    const std::int32_t moved = topo_.dropSlot(t);
+    if (d_.last_ == moved) d_.last_ = t;
+  }
+}
+
+// What is left is collinear: no triangles, the vertices wait again, and each constrained
+// edge becomes a pending segment that carries what it carried.
+void VertexRemoval::collapse(std::uint32_t v, bool moving) {
+  std::vector<std::uint32_t>& waiting = d_.pending_;
+  waiting.clear();
+  for (const std::uint32_t r : ring_.vertex)
+    if (r != kGhost) waiting.push_back(r);
+  std::sort(waiting.begin(), waiting.end());
+  topo_.clear();
+  d_.built_ = false;
+  d_.last_ = -1;
+  d_.grid_ = PointGrid();
+  d_.gridStale_ = false;
+  ConstraintStore& store = d_.constraints;
+  store.forEachEdge([&](std::uint32_t a, std::uint32_t b, const EdgeSource& src) {
+    store.pending.push_back({a, b, src, src.polyline, 0});
+  });
+  store.clearEdges();
+  markRemoved(v, moving);
+}
+
+Status VertexRemoval::reinsert(std::uint32_t v) {
+  if (d_.built_) {
+    d_.batchStart_ = true;  // from the grid
+    const std::uint32_t r = d_.insertVertex(v);
+    if (r == kGhost) return d_.error_;
+    if (r != v) return broken(v, "moved onto another vertex");
+    return Status::success();
+  }
+  // Waiting (all collinear so far): v joins the waiting vertices, which make the first
+  // triangle as soon as they are not all on one line.
+  std::vector<std::uint32_t>& waiting = d_.pending_;
+  waiting.insert(std::upper_bound(waiting.begin(), waiting.end(), v), v);
+  d_.batch_ = {d_.vertexCount(), nullptr, nullptr};  // no batch: nothing is a duplicate
+  std::array<std::uint32_t, 3> built{kGhost, kGhost, kGhost};
+  return d_.insertPending({}, built);
+}
+
+}  // namespace geocdt
