@@ -135,19 +135,24 @@ void addSteinerDescendants(State& state, std::vector<std::uint32_t>& vertices) {
   }
 }
 
-// Removes the candidates that nothing needs now, with their Steiner descendants.
+// Removes the candidates that nothing needs now, with their Steiner descendants; the
+// vertices in `kept` (sorted: the ends of segments taken off to be inserted again) stay.
 Status removeUnneeded(State& state, ConstraintEditor& editor, VertexEdges& ends,
-                      std::vector<std::uint32_t>& candidates, std::uint32_t except) {
+                      std::vector<std::uint32_t>& candidates,
+                      const std::vector<std::uint32_t>& kept = {}) {
   Delaunay& d = state.delaunay;
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  const auto stays = [&](std::uint32_t v) {
+    return std::binary_search(kept.begin(), kept.end(), v);
+  };
   std::vector<std::uint32_t> gone;
   for (const std::uint32_t v : candidates)
-    if (v != except && v < d.vertexCount() && !d.isRemoved(v) && !needed(state, ends, v))
+    if (!stays(v) && v < d.vertexCount() && !d.isRemoved(v) && !needed(state, ends, v))
       gone.push_back(v);
   addSteinerDescendants(state, gone);
   for (const std::uint32_t v : gone) {
-    if (v == except || d.isRemoved(v)) continue;
+    if (stays(v) || d.isRemoved(v)) continue;
     const Status s = editor.removeVertex(v);
     if (!s.ok()) return s;
   }
@@ -279,8 +284,14 @@ Status moveVertex(State& state, std::uint32_t id, double x, double y, std::uint3
   std::vector<std::uint32_t> placed{id};
   addSteinerDescendants(state, placed);
   candidates.insert(candidates.end(), placed.begin() + 1, placed.end());
+  std::vector<std::uint32_t> kept{id};
+  for (const std::uint32_t segment : moved) {
+    kept.push_back(d.constraints.segments[segment].a);
+    kept.push_back(d.constraints.segments[segment].b);
+  }
+  std::sort(kept.begin(), kept.end());
   const std::uint32_t keep = d.vertexCount();
-  Status s = removeUnneeded(state, editor, ends, candidates, id);
+  Status s = removeUnneeded(state, editor, ends, candidates, kept);
   if (s.ok()) s = editor.removeVertex(id, true);
   if (!s.ok()) return s;
   d.xy[2 * static_cast<std::size_t>(id)] = x;
@@ -411,7 +422,7 @@ Status Triangulation::removePolyline(std::size_t polyline) {
     if (edit.snapped) return rebuildConstraints(state);
     editor.restore();
     const std::uint32_t keep = d.vertexCount();
-    const Status s = removeUnneeded(state, editor, ends, candidates, kGhost);
+    const Status s = removeUnneeded(state, editor, ends, candidates);
     if (!s.ok()) return s;
     return finishEdit(state, editor, ends, keep);
   } catch (const std::bad_alloc&) {

@@ -86,12 +86,14 @@ void ConstraintEditor::addPiece(std::uint32_t u, std::uint32_t w, const EdgeSour
   }
 }
 
-void ConstraintEditor::takeLinks(std::uint32_t v, std::int32_t out) {
+bool ConstraintEditor::takeLinks(std::uint32_t v, std::int32_t out) {
   ConstraintStore& store = d_.constraints;
   Topology& topo = d_.topo;
+  bool freed = false;
   std::int32_t e = out;
   do {
     if (topo.fixed[e]) {
+      freed = true;
       const std::uint32_t w = topo.tri[nextEdge(e)];
       const EdgeSource src = store.take(v, w);  // winding from v to w
       store.forEachPair(src,
@@ -104,6 +106,7 @@ void ConstraintEditor::takeLinks(std::uint32_t v, std::int32_t out) {
     }
     e = topo.adj[prevEdge(e)];
   } while (e != out);
+  return freed;
 }
 
 void ConstraintEditor::takePendingLinks(std::uint32_t v) {
@@ -174,17 +177,17 @@ Status ConstraintEditor::removeVertex(std::uint32_t v, bool moving) {
     takePendingLinks(v);
     const Status joined = joinLinks(v);
     if (!joined.ok()) return joined;
-    return d_.removeVertex(v, -1, moving);
+    return d_.removeVertex(v, -1, moving, true);
   }
   const std::int32_t out = ends_.find(d_, v);
   if (out < 0) {
     return {StatusCode::InternalError,
             "removing vertex " + std::to_string(v) + ": not in the triangulation", v};
   }
-  takeLinks(v, out);
+  const bool freed = takeLinks(v, out);
   const Status joined = joinLinks(v);
   if (!joined.ok()) return joined;
-  return d_.removeVertex(v, out, moving);
+  return d_.removeVertex(v, out, moving, freed);
 }
 
 Outcome ConstraintEditor::insertQueued() {

@@ -58,8 +58,8 @@ class ConstraintEditor {
 
   void addPiece(std::uint32_t u, std::uint32_t w, const EdgeSource& src);
   // The links of chains at v: those of its constrained edges (taken off the store and freed)
-  // and those of queued pieces ending at v (which die).
-  void takeLinks(std::uint32_t v, std::int32_t out);
+  // and those of queued pieces ending at v (which die). Returns whether an edge was freed.
+  bool takeLinks(std::uint32_t v, std::int32_t out);
   void takePendingLinks(std::uint32_t v);
   Status joinLinks(std::uint32_t v);
 

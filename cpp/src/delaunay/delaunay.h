@@ -97,7 +97,11 @@ class Delaunay {
   // triangulation goes back to having no triangles: its vertices wait again and its
   // constrained edges become pending segments. out: a half-edge out of v, or -1. With
   // moving, v is about to be inserted again elsewhere (reinsertVertex): not counted removed.
-  Status removeVertex(std::uint32_t v, std::int32_t out = -1, bool moving = false);
+  // With freed, some of v's edges were constrained until the caller freed them: what was
+  // hidden behind them may now be seen across the star's border, whose edges are flipped
+  // too where they are no longer Delaunay.
+  Status removeVertex(std::uint32_t v, std::int32_t out = -1, bool moving = false,
+                      bool freed = false);
   // Inserts vertex v again, at its coordinates in xy, keeping its id (a move). Its place must
   // not hold another vertex.
   Status reinsertVertex(std::uint32_t v);

@@ -15,6 +15,7 @@ struct StarRing {
   std::vector<std::uint8_t> fixed;    // per node: that edge's constrained flag
   std::vector<std::int32_t> next, prev;
   std::vector<std::int32_t> diagonals;  // new edges inside the polygon, for Lawson flips
+  std::vector<std::int32_t> border;     // the half-edges outside the polygon's edges
   std::size_t used = 0;                 // slots filled so far
 
   void clear() {
@@ -23,6 +24,7 @@ struct StarRing {
     carrier.clear();
     fixed.clear();
     diagonals.clear();
+    border.clear();
     used = 0;
   }
 };

@@ -29,7 +29,7 @@ class VertexRemoval {
  public:
   explicit VertexRemoval(Delaunay& d) : d_(d), topo_(d.topo), ring_(d.ring_) {}
 
-  Status run(std::uint32_t v, std::int32_t out, bool moving);
+  Status run(std::uint32_t v, std::int32_t out, bool moving, bool freed);
   Status reinsert(std::uint32_t v);
 
  private:
@@ -61,8 +61,8 @@ class VertexRemoval {
   StarRing& ring_;
 };
 
-Status Delaunay::removeVertex(std::uint32_t v, std::int32_t out, bool moving) {
-  return VertexRemoval(*this).run(v, out, moving);
+Status Delaunay::removeVertex(std::uint32_t v, std::int32_t out, bool moving, bool freed) {
+  return VertexRemoval(*this).run(v, out, moving, freed);
 }
 
 Status Delaunay::reinsertVertex(std::uint32_t v) { return VertexRemoval(*this).reinsert(v); }
@@ -73,7 +73,7 @@ void VertexRemoval::markRemoved(std::uint32_t v, bool moving) {
   if (!moving) ++d_.stats.removed;
 }
 
-Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving) {
+Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving, bool freed) {
   if (!d_.built_) {  // a vertex waiting for the triangulation to have triangles
     std::vector<std::uint32_t>& waiting = d_.pending_;
     const auto it = std::find(waiting.begin(), waiting.end(), v);
@@ -103,10 +103,13 @@ Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving) {
   if (g < 0 ? !cutInterior(x, y) : (cutHull(g), false))
     return broken(v, "no ear in the border of its star");
   if (ring_.used != ring_.slot.size() - 2) return broken(v, "the star was not filled");
+  // The border's edges by their half-edges inside (in new triangles, which do not move).
+  for (std::int32_t& e : ring_.border) e = topo_.adj[e];
   const std::int32_t kept = ring_.slot[0];
   freeSlots();
   std::vector<std::int32_t>& stack = d_.flipStack();
   stack.insert(stack.end(), ring_.diagonals.begin(), ring_.diagonals.end());
+  if (freed) stack.insert(stack.end(), ring_.border.begin(), ring_.border.end());
   d_.restoreDelaunay();
   d_.grid_.cellAt(x, y) = kept;
   d_.last_ = kept;
@@ -125,6 +128,7 @@ bool VertexRemoval::gather(std::int32_t out) {
     ring_.vertex.push_back(topo_.tri[far]);
     ring_.slot.push_back(e / 3);
     ring_.carrier.push_back(topo_.adj[far]);
+    ring_.border.push_back(topo_.adj[far]);  // (outside; turned inside once filled)
     ring_.fixed.push_back(topo_.fixed[far]);
     e = topo_.adj[prevEdge(e)];
   } while (e != out);

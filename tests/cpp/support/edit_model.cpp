@@ -165,10 +165,12 @@ std::string EditModel::check(const Triangulation& t) const {
   c.inputToVertex = &inputToVertex;
   std::string s = checkTriangulation(m, c);
   if (!s.empty()) return s;
+  // All collinear: no triangles, and the constraints wait for some (README).
+  if (m.triangles.empty()) return "";
   return checkConstraints(m, polylines, lineVertices);
 }
 
-std::string EditModel::compare(const Triangulation& t) const {
+std::string EditModel::compare(const Triangulation& t, bool triangles) const {
   std::vector<double> points;
   for (const auto& [id, uses] : pointUses_) {
     const std::vector<double> p = place(id);
@@ -195,6 +197,12 @@ std::string EditModel::compare(const Triangulation& t) const {
       triangulate(points.data(), points.size() / 2, views.data(), views.size(), {}, options, fresh);
   if (!s.ok()) return "triangulate: " + s.message;
   const Mesh edited = t.mesh(options);
+  if (!triangles) {
+    std::set<Point> va, vb;
+    for (std::uint32_t v = 0; v < edited.points.size() / 2; ++v) va.insert(at(edited, v));
+    for (std::uint32_t v = 0; v < fresh.points.size() / 2; ++v) vb.insert(at(fresh, v));
+    return va == vb ? "" : "vertices differ";
+  }
   const auto a = coordinateTriangles(edited), b = coordinateTriangles(fresh);
   if (a != b) {
     std::vector<CoordinateTriangle> onlyA, onlyB;
