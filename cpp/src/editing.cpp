@@ -135,6 +135,28 @@ void addSteinerDescendants(State& state, std::vector<std::uint32_t>& vertices) {
   }
 }
 
+// A half-edge out of v when v is a free vertex: in the triangulation, with no constrained
+// edge, no polyline of its own and no Steiner point placed from it; else -1. Such a vertex is
+// removed or moved by the Delaunay engine alone (the common case, which pays one location).
+std::int32_t freeVertexEdge(State& state, std::uint32_t v) {
+  Delaunay& d = state.delaunay;
+  if (!d.built() || !d.constraints.pending.empty() || state.edit.snapped) return -1;
+  if (const std::uint32_t* uses = state.edit.loneUses.find(v); uses && *uses > 0) return -1;
+  if (!d.steiner.empty()) {
+    std::vector<std::uint32_t> placed{v};
+    addSteinerDescendants(state, placed);
+    if (placed.size() > 1) return -1;
+  }
+  const Hit h = d.locate(d.xy[2 * std::size_t{v}], d.xy[2 * std::size_t{v} + 1], true);
+  if (h.kind != Hit::Kind::Vertex || d.topo.tri[h.edge] != v) return -1;
+  std::int32_t e = h.edge;
+  do {
+    if (d.topo.fixed[e]) return -1;
+    e = d.topo.adj[prevEdge(e)];
+  } while (e != h.edge);
+  return h.edge;
+}
+
 // Removes the candidates that nothing needs now, with their Steiner descendants; the
 // vertices in `kept` (sorted: the ends of segments taken off to be inserted again) stay.
 Status removeUnneeded(State& state, ConstraintEditor& editor, VertexEdges& ends,
@@ -267,6 +289,15 @@ Status moveVertex(State& state, std::uint32_t id, double x, double y, std::uint3
     d.xy[2 * static_cast<std::size_t>(id) + 1] = y;
     return rebuildConstraints(state);
   }
+  if (const std::int32_t out = freeVertexEdge(state, id); out >= 0 && there == kGhost) {
+    Status s = d.removeVertex(id, out, true);
+    d.xy[2 * static_cast<std::size_t>(id)] = x;
+    d.xy[2 * static_cast<std::size_t>(id) + 1] = y;
+    if (s.ok()) s = d.reinsertVertex(id);
+    if (s.ok()) s = insertPendingSegments(d, state.options);  // (if it went collinear and back)
+    state.values.invalidate();
+    return s;
+  }
   VertexEdges ends;
   ConstraintEditor editor(d, ends);
   std::vector<std::uint32_t> moved;
@@ -360,9 +391,14 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
                    id);
   if (removed) *removed = false;
   try {
-    VertexEdges ends;
     edit.kinds[id] &= static_cast<std::uint8_t>(~kPointVertex);
     state.changed();
+    if (const std::int32_t out = freeVertexEdge(state, id); out >= 0) {
+      if (removed) *removed = true;
+      state.values.invalidate();
+      return d.removeVertex(id, out);
+    }
+    VertexEdges ends;
     if (polylineHasVertex(state, ends, id)) return Status::success();
     if (removed) *removed = true;
     if (edit.snapped && carriesConstraints(d, ends, id)) return rebuildConstraints(state);

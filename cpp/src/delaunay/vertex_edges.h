@@ -62,7 +62,9 @@ class VertexEdges {
       }
       d.setLastTriangle(t);
     }
-    const Hit h = d.locate(d.xy[2 * v], d.xy[2 * v + 1], false);
+    // From the hint's triangle when there is one, else from the grid (the last triangle may
+    // lie anywhere: an edit's vertices come in no order).
+    const Hit h = d.locate(d.xy[2 * v], d.xy[2 * v + 1], !(hint >= 0 && hint < 3 * slots));
     if (h.kind != Hit::Kind::Vertex || topo.tri[h.edge] != v) return -1;
     return remember(v, h.edge);
   }

@@ -111,7 +111,12 @@ Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving, bool f
   stack.insert(stack.end(), ring_.diagonals.begin(), ring_.diagonals.end());
   if (freed) stack.insert(stack.end(), ring_.border.begin(), ring_.border.end());
   d_.restoreDelaunay();
+  // The grid's cells around here may name the freed slots, which now hold triangles from
+  // elsewhere: they name a new triangle instead.
   d_.grid_.cellAt(x, y) = kept;
+  for (const std::uint32_t r : ring_.vertex)
+    if (r != kGhost)
+      d_.grid_.cellAt(d_.xy[2 * std::size_t{r}], d_.xy[2 * std::size_t{r} + 1]) = kept;
   d_.last_ = kept;
   markRemoved(v, moving);
   return Status::success();
@@ -254,7 +259,13 @@ void VertexRemoval::freeSlots() {
   for (std::size_t k = n; k-- > n - 2;) {
     const std::int32_t t = ring_.slot[k];
     const std::int32_t moved = topo_.dropSlot(t);
-    if (d_.last_ == moved) d_.last_ = t;
+    if (moved == t) continue;
+    // The cells where the moved triangle lies follow it.
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = topo_.tri[3 * t + c];
+      if (v != kGhost)
+        d_.grid_.cellAt(d_.xy[2 * std::size_t{v}], d_.xy[2 * std::size_t{v} + 1]) = t;
+    }
   }
 }
 
