@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "delaunay/delaunay.h"
+#include "delaunay/vertex_edges.h"
 #include "geocdt/triangulation.h"
 #include "mesh/edge_map.h"
 #include "values/vertex_values.h"
@@ -32,6 +33,7 @@ struct EditState {
   EdgeMap<std::int32_t> steinerFirst;
   std::vector<std::pair<std::uint32_t, std::int32_t>> steinerLinks;
   bool steinerStale = true;
+  VertexEdges ends;  // a half-edge out of each vertex, once something was edited (hints)
 
   std::uint8_t kind(std::uint32_t v) const { return v < kinds.size() ? kinds[v] : 0; }
   void mark(const std::uint32_t* ids, std::size_t count, std::uint8_t kind) {

@@ -1,3 +1,4 @@
+// (Requests name the vertex `vertex`: `id` is the request's own, in the worker protocol.)
 // "Edit" mode: a click picks the nearest point or line vertex of the triangulation, shown as a
 // handle that can be dragged (the mesh follows live: each drag step moves the vertex in the
 // worker, a step at a time); Delete removes the picked point, Shift+Delete (or the panel's
@@ -63,7 +64,7 @@ export class VertexEditing {
       while (this._next) {
         const lonLat = this._next;
         this._next = null;
-        await this._request('movePoint', { id: this._picked.id, lonLat }, true);
+        await this._request('movePoint', { vertex: this._picked.id, lonLat }, true);
         this._picked.lonLat = lonLat;
       }
     } finally {
@@ -75,13 +76,13 @@ export class VertexEditing {
     const picked = this._picked;
     if (!picked?.point) return;
     this._select(null);
-    await this._request('removePoint', { id: picked.id }, true);
+    await this._request('removePoint', { vertex: picked.id }, true);
   }
 
   async removeLines() {
     const picked = this._picked;
     if (!picked?.lines.length) return;
     this._select(null);
-    await this._request('removeLines', { id: picked.id }, true);
+    await this._request('removeLines', { vertex: picked.id }, true);
   }
 }

@@ -73,11 +73,11 @@ async function handle(request, onProgress) {
     case 'pick':
       return pick(request.lonLat);
     case 'movePoint':
-      return edit({ kind: 'move', id: request.id, xy: projectLonLat(request.lonLat) });
+      return edit({ kind: 'move', id: request.vertex, xy: projectLonLat(request.lonLat) });
     case 'removePoint':
-      return edit({ kind: 'removePoint', id: request.id });
+      return edit({ kind: 'removePoint', id: request.vertex });
     case 'removeLines':
-      return edit({ kind: 'removeLines', id: request.id });
+      return edit({ kind: 'removeLines', id: request.vertex });
     default:
       throw new Error(`unknown request ${request.type}`);
   }
