@@ -49,6 +49,15 @@ class VertexRemoval {
   bool isEarAnyway(std::int32_t b) const;  // the full test, for a polygon that finds no ear
   void cutHull(std::int32_t g);
   void freeSlots();
+  // Lawson flips of the new edges, which stay inside the polygon: its border edges are
+  // Delaunay already (each outer triangle's circumcircle is empty), so only edges between two
+  // new triangles are tested, before and after each flip.
+  void flipInside();
+  bool isNew(std::int32_t t) const {
+    for (std::size_t k = 0; k < ring_.used; ++k)
+      if (ring_.slot[k] == t) return true;
+    return false;
+  }
   void collapse(std::uint32_t v, bool moving);
   void markRemoved(std::uint32_t v, bool moving);
   Status broken(std::uint32_t v, const char* what) {
@@ -107,10 +116,14 @@ Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving, bool f
   for (std::int32_t& e : ring_.border) e = topo_.adj[e];
   const std::int32_t kept = ring_.slot[0];
   freeSlots();
-  std::vector<std::int32_t>& stack = d_.flipStack();
-  stack.insert(stack.end(), ring_.diagonals.begin(), ring_.diagonals.end());
-  if (freed) stack.insert(stack.end(), ring_.border.begin(), ring_.border.end());
-  d_.restoreDelaunay();
+  if (freed) {  // what the freed edges hid may show across the border: flips may spread
+    std::vector<std::int32_t>& stack = d_.flipStack();
+    stack.insert(stack.end(), ring_.diagonals.begin(), ring_.diagonals.end());
+    stack.insert(stack.end(), ring_.border.begin(), ring_.border.end());
+    d_.restoreDelaunay();
+  } else {
+    flipInside();
+  }
   // The grid's cells around here may name the freed slots, which now hold triangles from
   // elsewhere: they name a new triangle instead.
   d_.grid_.cellAt(x, y) = kept;
@@ -252,6 +265,21 @@ void VertexRemoval::cutHull(std::int32_t g) {
   }
   topo_.link(3 * before + 1, ring_.carrier[h]);
   topo_.fixed[3 * before + 1] = ring_.fixed[h];
+}
+
+void VertexRemoval::flipInside() {
+  std::vector<std::int32_t>& stack = ring_.diagonals;
+  while (!stack.empty()) {
+    const std::int32_t e = stack.back();
+    stack.pop_back();
+    // (A flip rewrites half-edges in place: an entry may now be a border edge.)
+    const std::int32_t f = topo_.adj[e];
+    if (!isNew(f / 3) || d_.isLocallyDelaunay(e)) continue;
+    topo_.flip(e);
+    ++d_.stats.flips;
+    for (const std::int32_t g : {e, nextEdge(e), f, nextEdge(f)})  // the quad's sides
+      if (isNew(topo_.adj[g] / 3)) stack.push_back(g);
+  }
 }
 
 void VertexRemoval::freeSlots() {
