@@ -1,30 +1,21 @@
 #pragma once
-// The core reports bad input as Status values; only memory exhaustion arrives as an
-// exception (std::bad_alloc from a vector that cannot grow past wasm32's 4 GB). It is
-// caught here, at the boundary, so the module never aborts and stays usable.
-#include <new>
-#include <stdexcept>
+// The core reports bad input as Status values; only memory exhaustion arrives as an exception
+// (std::bad_alloc from a vector that cannot grow past wasm32's 4 GB). The binding's own
+// allocations run through the core's catchOutOfMemory too, so the module never aborts and
+// stays usable.
+#include <utility>
 
+#include "out_of_memory.h"
 #include "output.h"
 
 namespace geocdt::wasm {
 
-inline void setOutOfMemory(Output& out, const char* what) {
-  out.clear();
-  out.status.code = StatusCode::OutOfMemory;
-  out.status.message = what;
-}
-
-// Runs f(), which returns a Status, and stores that status in out.
+// Runs f(), which returns a Status, and stores that status in out; out of memory, out holds
+// no arrays and the status carries outOfMemoryMessage.
 template <typename F>
 bool guarded(Output& out, F&& f, const char* outOfMemoryMessage) {
-  try {
-    out.status = f();
-  } catch (const std::bad_alloc&) {
-    setOutOfMemory(out, outOfMemoryMessage);
-  } catch (const std::length_error&) {
-    setOutOfMemory(out, outOfMemoryMessage);
-  }
+  out.status = catchOutOfMemory(
+      std::forward<F>(f), [&] { out.clear(); }, outOfMemoryMessage);
   return out.status.ok();
 }
 

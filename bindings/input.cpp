@@ -1,9 +1,7 @@
 #include "input.h"
 
-#include <new>
-#include <stdexcept>
-
 #include "heap_reserve.h"
+#include "out_of_memory.h"
 
 namespace geocdt::wasm {
 
@@ -19,20 +17,18 @@ bool Input::resize(double pointCount, double linePointCount, double lineCount, d
   // Values: the input's, and the vertices' copy in the core.
   reserveHeap(kReservePerPoint * pointCount + kReservePerLinePoint * linePointCount +
               16 * valueCount);
-  try {
-    points.resize(2 * static_cast<std::size_t>(pointCount));
-    lineCoords.resize(2 * static_cast<std::size_t>(linePointCount));
-    lineOffsets.resize(static_cast<std::size_t>(lineCount) + 1);
-    if (polygonCount >= 0) polygonOffsets.resize(static_cast<std::size_t>(polygonCount) + 1);
-    values.resize(static_cast<std::size_t>(valueCount));
-  } catch (const std::bad_alloc&) {
-    clear();
-    return false;
-  } catch (const std::length_error&) {
-    clear();
-    return false;
-  }
-  return true;
+  return catchOutOfMemory(
+             [&] {
+               points.resize(2 * static_cast<std::size_t>(pointCount));
+               lineCoords.resize(2 * static_cast<std::size_t>(linePointCount));
+               lineOffsets.resize(static_cast<std::size_t>(lineCount) + 1);
+               if (polygonCount >= 0)
+                 polygonOffsets.resize(static_cast<std::size_t>(polygonCount) + 1);
+               values.resize(static_cast<std::size_t>(valueCount));
+               return Status::success();
+             },
+             [&] { clear(); })
+      .ok();
 }
 
 double Input::badOffset() const {

@@ -171,7 +171,7 @@ function countLine(positions, closeRing, into) {
 // Counts the positions and polylines that geometry() will read, without checking anything
 // (geometry() does), so that their arrays are made once at their size. Grown by doubling, they
 // left behind typed arrays whose memory, outside V8's heap, had V8 collect the caller's whole
-// heap, the GeoJSON included, during the read (bench/EXPERIMENTS.md, GeoJSON 1).
+// heap, the GeoJSON included, during the read (bench/EXPERIMENTS.md, G1).
 function countGeometry(g, counts) {
   if (g === null || typeof g !== 'object') return;
   const c = g.coordinates;

@@ -22,8 +22,8 @@ function enumNames(embindEnum) {
 
 // Copies x, y pairs into the heap at element `at` of heap (a Float64Array over the memory).
 // A typed array goes in with one set(); a plain array is checked for numbers as it is copied
-// (set() would turn null into 0 and '1' into 1), which once warm costs what set() does: 4.1
-// against 4.7 ms for 2M numbers.
+// (set() would turn null into 0 and '1' into 1), which once warm costs about what set() does
+// (bench/EXPERIMENTS.md, L2).
 function copyCoordinates(heap, at, values, name) {
   if (isNumericTypedArray(values)) {
     heap.set(values, at);

@@ -1,7 +1,7 @@
 // The warm-up: triangulations run in a worker on the module the caller's init() compiled.
 // Engines share a compiled WebAssembly.Module's code between the threads that instantiate it,
 // so the worker's calls compile the functions a first call reaches and get them optimised on
-// another core while the caller's own first call runs (bench/EXPERIMENTS.md, the first call).
+// another core while the caller's own first call runs (bench/EXPERIMENTS.md, F19b).
 
 // The glue's instantiateWasm hook, instantiating an already compiled module. Resolves to the
 // ready module, or rejects with the error of instantiating it (the glue would only log it).
@@ -73,7 +73,7 @@ function warmUpInputs() {
 // columns the cell on the left has twice the points of the one on the right, so that points
 // lie on the other ring's segments (T-junctions). Real borders take these paths, which the
 // random rings do not reach; left cold, they were compiled and run in baseline code during a
-// caller's first call on country rings (bench/EXPERIMENTS.md, the first call, 22).
+// caller's first call on country rings (bench/EXPERIMENTS.md, F22).
 function countryGrid(k, m) {
   const rings = [];
   const side = (x0, y0, x1, y1, n) => {

@@ -6,7 +6,6 @@
 // all together instead: a tangle's rounding depends on all of them.
 #include <algorithm>
 #include <cmath>
-#include <new>
 #include <string>
 
 #include "constraints/chain_check.h"
@@ -15,6 +14,7 @@
 #include "delaunay/vertex_edges.h"
 #include "geocdt/triangulation.h"
 #include "invalid_coordinate.h"
+#include "out_of_memory.h"
 #include "triangulation_state.h"
 
 namespace geocdt {
@@ -25,11 +25,6 @@ using State = Triangulation::State;
 
 Status invalid(const std::string& message, std::size_t index) {
   return {StatusCode::InvalidArgument, message, index};
-}
-
-Status outOfMemory() {
-  return {StatusCode::OutOfMemory,
-          "out of memory: the input is too large for the available memory"};
 }
 
 // What vertex v is, for messages.
@@ -403,35 +398,31 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
                        ")",
                    id);
   if (removed) *removed = false;
-  try {
-    edit.kinds[id] &= static_cast<std::uint8_t>(~kPointVertex);
-    state.changed();
-    if (const std::int32_t out = freeVertexEdge(state, id); out >= 0) {
-      if (removed) *removed = true;
-      state.values.invalidate();
-      return d.removeVertex(id, out);
-    }
-    VertexEdges& ends = editEdges(state);
-    if (polylineHasVertex(state, ends, id)) return Status::success();
-    if (removed) *removed = true;
-    if (edit.snapped && carriesConstraints(d, ends, id)) return rebuildConstraints(state);
-    ConstraintEditor editor(d, ends);
-    std::vector<std::uint32_t> gone{id};
-    addSteinerDescendants(state, gone);
-    const std::uint32_t keep = d.vertexCount();
-    for (const std::uint32_t v : gone) {
-      if (d.isRemoved(v)) continue;
-      const Status s = editor.removeVertex(v);
-      if (!s.ok()) return s;
-    }
-    return finishEdit(state, editor, ends, keep);
-  } catch (const std::bad_alloc&) {
-    d.clear();
-    state.values.clear();
-    edit.clear();
-    state.changed();
-    return outOfMemory();
-  }
+  return catchOutOfMemory(
+      [&] {
+        edit.kinds[id] &= static_cast<std::uint8_t>(~kPointVertex);
+        state.changed();
+        if (const std::int32_t out = freeVertexEdge(state, id); out >= 0) {
+          if (removed) *removed = true;
+          state.values.invalidate();
+          return d.removeVertex(id, out);
+        }
+        VertexEdges& ends = editEdges(state);
+        if (polylineHasVertex(state, ends, id)) return Status::success();
+        if (removed) *removed = true;
+        if (edit.snapped && carriesConstraints(d, ends, id)) return rebuildConstraints(state);
+        ConstraintEditor editor(d, ends);
+        std::vector<std::uint32_t> gone{id};
+        addSteinerDescendants(state, gone);
+        const std::uint32_t keep = d.vertexCount();
+        for (const std::uint32_t v : gone) {
+          if (d.isRemoved(v)) continue;
+          const Status s = editor.removeVertex(v);
+          if (!s.ok()) return s;
+        }
+        return finishEdit(state, editor, ends, keep);
+      },
+      [&] { state.clear(); });
 }
 
 Status Triangulation::removePolyline(std::size_t polyline) {
@@ -450,37 +441,33 @@ Status Triangulation::removePolyline(std::size_t polyline) {
   const auto end = static_cast<std::uint32_t>(polyline + 1 < store.firstSegment.size()
                                                   ? store.firstSegment[polyline + 1]
                                                   : store.segments.size());
-  try {
-    edit.polylineRemoved.resize(polylineCount(), 0);
-    edit.polylineRemoved[polyline] = 1;
-    state.changed();
-    std::vector<std::uint32_t> candidates;
-    if (const std::uint32_t* lone = edit.lonePolylines.find(polyline)) {
-      candidates.push_back(*lone);
-      --*edit.loneUses.find(*lone);
-    }
-    VertexEdges& ends = editEdges(state);
-    ConstraintEditor editor(d, ends);
-    if (!edit.snapped)
-      for (std::uint32_t s = first; s < end; ++s) editor.detachSegment(s, candidates);
-    for (std::uint32_t s = first; s < end; ++s) {
-      candidates.push_back(store.segments[s].a);
-      candidates.push_back(store.segments[s].b);
-      store.segments[s] = {kRemovedSegment, kRemovedSegment};
-    }
-    if (edit.snapped) return rebuildConstraints(state);
-    editor.restore();
-    const std::uint32_t keep = d.vertexCount();
-    const Status s = removeUnneeded(state, editor, ends, candidates);
-    if (!s.ok()) return s;
-    return finishEdit(state, editor, ends, keep);
-  } catch (const std::bad_alloc&) {
-    d.clear();
-    state.values.clear();
-    edit.clear();
-    state.changed();
-    return outOfMemory();
-  }
+  return catchOutOfMemory(
+      [&] {
+        edit.polylineRemoved.resize(polylineCount(), 0);
+        edit.polylineRemoved[polyline] = 1;
+        state.changed();
+        std::vector<std::uint32_t> candidates;
+        if (const std::uint32_t* lone = edit.lonePolylines.find(polyline)) {
+          candidates.push_back(*lone);
+          --*edit.loneUses.find(*lone);
+        }
+        VertexEdges& ends = editEdges(state);
+        ConstraintEditor editor(d, ends);
+        if (!edit.snapped)
+          for (std::uint32_t s = first; s < end; ++s) editor.detachSegment(s, candidates);
+        for (std::uint32_t s = first; s < end; ++s) {
+          candidates.push_back(store.segments[s].a);
+          candidates.push_back(store.segments[s].b);
+          store.segments[s] = {kRemovedSegment, kRemovedSegment};
+        }
+        if (edit.snapped) return rebuildConstraints(state);
+        editor.restore();
+        const std::uint32_t keep = d.vertexCount();
+        const Status s = removeUnneeded(state, editor, ends, candidates);
+        if (!s.ok()) return s;
+        return finishEdit(state, editor, ends, keep);
+      },
+      [&] { state.clear(); });
 }
 
 Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
@@ -519,15 +506,8 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
                        " is that of vertex " + std::to_string(there) + " (" +
                        describe(edit, there) + ")",
                    id);
-  try {
-    return moveVertex(state, id, x, y, there);
-  } catch (const std::bad_alloc&) {
-    d.clear();
-    state.values.clear();
-    edit.clear();
-    state.changed();
-    return outOfMemory();
-  }
+  return catchOutOfMemory([&] { return moveVertex(state, id, x, y, there); },
+                          [&] { state.clear(); });
 }
 
 }  // namespace geocdt

@@ -50,7 +50,7 @@ GEOCDT_NOINLINE std::int32_t lastKept(const std::vector<std::uint8_t>& kept, std
 // The order in which compaction fills holes: the last kept slot moves into the first
 // dropped one, until they meet. Calls move(from, to) for each move; returns the count kept.
 // Not inlined: with keep inside there are as many moves as triangles outside, and this loop
-// had the whole export optimised during a first call (bench/EXPERIMENTS.md, first call 21).
+// had the whole export optimised during a first call (bench/EXPERIMENTS.md, F21).
 template <typename Move>
 GEOCDT_NOINLINE std::int32_t planCompaction(std::vector<std::uint8_t>& kept, Move move) {
   const std::int32_t slots = static_cast<std::int32_t>(kept.size());
@@ -129,7 +129,7 @@ void appendProvenance(const Delaunay& d, Mesh& into, bool segments, std::size_t 
                       std::size_t last, const Mesh& mesh) {
   // The store's table is far larger than the caches and its entries come in no useful order
   // here: the edges go in batches whose entries are touched first, so that their misses
-  // overlap (bench/EXPERIMENTS.md).
+  // overlap (bench/EXPERIMENTS.md, C38).
   constexpr std::size_t kBatch = 64;
   std::uint32_t edge[kBatch];
   std::uint64_t key[kBatch];
@@ -159,8 +159,8 @@ void appendProvenance(const Delaunay& d, Mesh& into, bool segments, std::size_t 
     n = 0;
   };
   // Each half-edge is written down and kept (n moved on) only if it lists its edge: a sixth
-  // of them on country rings, in no pattern a branch predictor learns (a branch per
-  // half-edge: 1.5M more mispredictions on Natural Earth 10m, bench/EXPERIMENTS.md, 31).
+  // of them on country rings, in no pattern a branch predictor learns: no branch per
+  // half-edge (bench/EXPERIMENTS.md, C31).
   forChunks(first, last, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {
       edge[n] = static_cast<std::uint32_t>(e);

@@ -2,7 +2,6 @@
 // segments one by one through the SegmentInserter.
 #include <algorithm>
 #include <cmath>
-#include <new>
 #include <string>
 
 #include "base/chunks.h"
@@ -13,6 +12,7 @@
 #include "delaunay/vertex_edges.h"
 #include "geocdt/triangulation.h"
 #include "invalid_coordinate.h"
+#include "out_of_memory.h"
 #include "triangulation_state.h"
 
 namespace geocdt {
@@ -53,6 +53,193 @@ VertexEdges endsFor(const Delaunay& d, std::size_t segments) {
   VertexEdges ends;
   if (d.built() && 8 * static_cast<std::uint64_t>(segments) >= d.vertexCount()) ends.build(d);
   return ends;
+}
+
+// Checks every polyline and counts their points into total.
+Status checkPolylines(const PolylineView* polylines, std::size_t count, std::size_t& total) {
+  Status checked;
+  // In a chunk, not a loop of the caller: compiled to wasm, the rest of the function came to
+  // lie inside that loop, and V8 charges its budget for optimised code by the bytes from a
+  // loop's start to its back edge (bench/EXPERIMENTS.md, F21).
+  forChunks(0, count, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last && checked.ok(); ++i) {
+      checked = checkPolyline(polylines[i], i);
+      total += polylines[i].count;
+    }
+  });
+  return checked;
+}
+
+// At most one segment and one constrained edge a point (fewer where polylines share edges):
+// the store's arrays and table at about their final sizes at once, not doubled on the way.
+void reserveStore(ConstraintStore& store, std::size_t points, std::size_t polylines,
+                  std::uint32_t vertices) {
+  store.reserve(store.edgeCount() + points, vertices);
+  store.segments.reserve(store.segments.size() + points);
+  store.segmentStarts.reserve(store.segmentStarts.size() + points);
+  store.firstSegment.reserve(store.firstSegment.size() + polylines);
+  store.ring.reserve(store.ring.size() + polylines);
+}
+
+// The segments of a batch of polylines whose points are in, in order. A large batch marks the
+// segments that are edges already (found in one pass) in a first round, and inserts the
+// others (kept in later_) in a second: those may cross the first ones, which are then all in
+// the store, as a crossed constraint must be. Where computed crossings would break the
+// guarantee, snap rounding takes over the segments.
+class BatchSegments {
+ public:
+  BatchSegments(Delaunay& d, const Options& options, std::size_t points, std::uint32_t firstNew)
+      : d_(d),
+        store_(d.constraints),
+        options_(options),
+        progress_(d.options().progress),
+        ends_(endsFor(d, points)),
+        inserter_(d, ends_),
+        points_(points),
+        keep_(d.vertexCount()),
+        snap_(options.snapRounding == SnapRounding::Always && d.built()),
+        twoRounds_(ends_.built() && !snap_),
+        present_(firstNew, twoRounds_ ? keep_ : firstNew),
+        span_(twoRounds_ ? 2 * points : points) {}
+
+  // ids: the vertex of every point of every polyline.
+  Status insert(const PolylineView* polylines, std::size_t count, const std::uint32_t* ids);
+
+ private:
+  void expectPresent(const PolylineView* polylines, std::size_t count);
+  void addPolyline(std::size_t i, std::size_t pointCount);
+  bool addSegment(const PendingSegment& segment);
+  void insertLater();
+
+  Delaunay& d_;
+  ConstraintStore& store_;
+  const Options& options_;
+  const Progress& progress_;
+  VertexEdges ends_;
+  SegmentInserter inserter_;
+  std::size_t points_;
+  std::uint32_t keep_;  // crossings come after
+  bool snap_;           // whether snap rounding takes over the segments
+  bool twoRounds_;
+  PresentSegments present_;
+  std::size_t span_;  // progress: the rounds in turn
+  const std::uint32_t* ids_ = nullptr;
+  std::size_t offset_ = 0;  // of the next polyline's first point in ids_
+  std::size_t segmentsTried_ = 0;
+  std::vector<PendingSegment> later_;
+  Status broken_;
+};
+
+// The loops over polylines call a function per polyline (a chunk of 1), and the second round
+// one per chunk of segments: insert() runs once a call, and its own loops would spend the
+// engine's budget for optimised code on it, whose long compile only took a core from a first
+// call (chunks.h; bench/EXPERIMENTS.md, F21).
+Status BatchSegments::insert(const PolylineView* polylines, std::size_t count,
+                             const std::uint32_t* ids) {
+  ids_ = ids;
+  if (twoRounds_) expectPresent(polylines, count);
+  forChunks(
+      0, count,
+      [&](std::size_t first, std::size_t last) {
+        // A polyline's count only: its points are in.
+        for (std::size_t i = first; i < last && broken_.ok(); ++i)
+          addPolyline(i, polylines[i].count);
+      },
+      1);
+  if (!broken_.ok()) return broken_;
+  insertLater();
+  if (!broken_.ok()) return broken_;
+  std::vector<PendingSegment>().swap(later_);
+  // Computed crossings stay where every chain that met one keeps the guarantee.
+  if (!snap_ && d_.built()) snap_ = !chainsKeepTheGuarantee(d_, inserter_.touchedSegments(), ends_);
+  if (snap_) {
+    const Status s = snapRoundConstraints(d_, keep_, options_);
+    if (!s.ok()) return s;
+  }
+  progress_(Phase::Constraints, points_, points_);
+  return Status::success();
+}
+
+// The first round's pass: which segments join consecutive new vertices, to be found as edges.
+void BatchSegments::expectPresent(const PolylineView* polylines, std::size_t count) {
+  std::size_t at = 0;
+  forChunks(
+      0, count,
+      [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+          for (std::size_t k = 0; k + 1 < polylines[i].count; ++k)
+            present_.expect(ids_[at + k], ids_[at + k + 1]);
+          at += polylines[i].count;
+        }
+      },
+      1);
+  present_.fixPresent(d_.topo);
+}
+
+// Polyline i, of pointCount points: its segments into the store, then in.
+void BatchSegments::addPolyline(std::size_t i, std::size_t pointCount) {
+  const std::uint32_t* lineIds = ids_ + offset_;
+  offset_ += pointCount;
+  const std::uint64_t firstPoint = store_.polylinePoints;
+  store_.polylinePoints += pointCount;
+  const bool ring = pointCount >= 3 && lineIds[0] == lineIds[pointCount - 1];
+  const std::uint32_t id = store_.startPolyline(ring);
+  ++d_.stats.polylines;
+  for (std::size_t k = 0; k + 1 < pointCount; ++k) {
+    if ((++segmentsTried_ & 255) == 0)
+      progress_(Phase::Constraints, offset_ - pointCount + k, span_);
+    const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
+    if (u == v) continue;  // a repeated point: nothing to constrain
+    EdgeSource src;
+    src.segment = static_cast<std::uint32_t>(store_.segments.size());
+    src.winding = ring ? 1 : 0;
+    src.polyline = id;
+    store_.segments.push_back({u, v});
+    store_.segmentStarts.push_back(
+        static_cast<std::uint32_t>(std::min<std::uint64_t>(firstPoint + k, kNoSegment)));
+    if (!addSegment({u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)}))
+      return;
+  }
+}
+
+// A stored segment: waits for triangles, for snap rounding or for the second round, is
+// marked where it is an edge already, or goes in. False when it broke an invariant.
+bool BatchSegments::addSegment(const PendingSegment& segment) {
+  if (!d_.built()) {
+    store_.pending.push_back(segment);
+    return true;
+  }
+  if (snap_) return true;  // stored: snap rounding inserts it with all the others
+  if (twoRounds_) {
+    if (present_.present(segment.u, segment.v)) {
+      store_.mark(segment.u, segment.v, segment.src);
+      ++d_.stats.segments;
+    } else {
+      later_.push_back(segment);
+    }
+    return true;
+  }
+  const Outcome outcome = inserter_.insert(segment.u, segment.v, segment.src);
+  if (outcome == Outcome::Broken) {
+    broken_ = located(inserter_.error(), segment.polyline, segment.index);
+    return false;
+  }
+  snap_ = outcome == Outcome::GaveUp;
+  return true;
+}
+
+// The second round: the segments that were not edges yet.
+void BatchSegments::insertLater() {
+  forChunks(0, later_.size(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t j = first; j < last && !snap_ && broken_.ok(); ++j) {
+      if ((j & 255) == 255)
+        progress_(Phase::Constraints, points_ + j * points_ / later_.size(), span_);
+      const PendingSegment& p = later_[j];
+      const Outcome outcome = inserter_.insert(p.u, p.v, p.src);
+      if (outcome == Outcome::Broken) broken_ = located(inserter_.error(), p.polyline, p.index);
+      snap_ = outcome == Outcome::GaveUp;
+    }
+  });
 }
 
 }  // namespace
@@ -133,162 +320,40 @@ Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::si
                                           std::uint32_t* vertexIds, const double* values,
                                           std::vector<double>* adopt) {
   std::size_t total = 0;
-  Status checked;
-  // In a chunk, not a loop of this function: compiled to wasm, the rest of the function came
-  // to lie inside that loop, and V8 charges its budget for optimised code by the bytes from a
-  // loop's start to its back edge (bench/EXPERIMENTS.md, first call 21).
-  forChunks(0, count, [&](std::size_t first, std::size_t last) {
-    for (std::size_t i = first; i < last && checked.ok(); ++i) {
-      checked = checkPolyline(polylines[i], i);
-      total += polylines[i].count;
-    }
-  });
+  const Status checked = checkPolylines(polylines, count, total);
   if (!checked.ok()) return checked;
   Delaunay& d = state_->delaunay;
-  ConstraintStore& store = d.constraints;
-  try {
-    std::vector<std::uint32_t> scratch;
-    std::uint32_t* ids = vertexIds;
-    if (ids == nullptr) {
-      scratch.resize(total);
-      ids = scratch.data();
-    }
-    const std::uint32_t firstNew = d.vertexCount();
-    // All points first, in one spatially sorted batch.
-    Status s;
-    if (adopt) {
-      s = insertCheckedPoints(adopt->data(), total, ids, values, adopt);
-    } else if (count == 1) {
-      s = insertCheckedPoints(polylines[0].xy, polylines[0].count, ids, values);
-    } else {
-      std::vector<double> all;
-      all.reserve(2 * total);
-      for (std::size_t i = 0; i < count; ++i)
-        all.insert(all.end(), polylines[i].xy, polylines[i].xy + 2 * polylines[i].count);
-      s = insertCheckedPoints(all.data(), total, ids, values);
-    }
-    if (!s.ok()) return s;
-    state_->values.recordPolylinePoints(ids, total);
-    state_->changed();
-    // At most one segment and one constrained edge a point (fewer where polylines share
-    // edges): the store's arrays and table at about their final sizes at once, not doubled
-    // on the way.
-    store.reserve(store.edgeCount() + total, d.vertexCount());
-    store.segments.reserve(store.segments.size() + total);
-    store.segmentStarts.reserve(store.segmentStarts.size() + total);
-    store.firstSegment.reserve(store.firstSegment.size() + count);
-    store.ring.reserve(store.ring.size() + count);
-
-    VertexEdges ends = endsFor(d, total);
-    SegmentInserter inserter(d, ends);
-    const Progress& progress = d.options().progress;
-    std::size_t segmentsTried = 0;
-    const std::uint32_t keep = d.vertexCount();  // crossings come after
-    // Whether snap rounding takes over the segments.
-    bool snap = state_->options.snapRounding == SnapRounding::Always && d.built();
-    // A large batch marks the segments that are edges already (found in one pass) in a first
-    // round, and inserts the others (kept in `later`) in a second: those may cross the first
-    // ones, which are then all in the store, as a crossed constraint must be.
-    const bool twoRounds = ends.built() && !snap;
-    std::vector<PendingSegment> later;
-    PresentSegments present(firstNew, twoRounds ? keep : firstNew);
-    // The loops over polylines call a function per polyline (a chunk of 1), and the second
-    // round one per chunk of segments: this function runs once a call, and its own loops
-    // would spend the engine's budget for optimised code on it, whose long compile only took
-    // a core from a first call (chunks.h; bench/EXPERIMENTS.md, first call 21).
-    if (twoRounds) {
-      std::size_t at = 0;
-      forChunks(
-          0, count,
-          [&](std::size_t first, std::size_t last) {
-            for (std::size_t i = first; i < last; ++i) {
-              for (std::size_t k = 0; k + 1 < polylines[i].count; ++k)
-                present.expect(ids[at + k], ids[at + k + 1]);
-              at += polylines[i].count;
-            }
-          },
-          1);
-      present.fixPresent(d.topo);
-    }
-    const std::size_t span = twoRounds ? 2 * total : total;  // progress: the rounds in turn
-    std::size_t offset = 0;
-    Status broken;
-    forChunks(
-        0, count,
-        [&](std::size_t first, std::size_t last) {
-          for (std::size_t i = first; i < last && broken.ok(); ++i) {
-            const PolylineView& line = polylines[i];  // its count only: the points are in
-            const std::uint32_t* lineIds = ids + offset;
-            offset += line.count;
-            const std::uint64_t firstPoint = store.polylinePoints;
-            store.polylinePoints += line.count;
-            const bool ring = line.count >= 3 && lineIds[0] == lineIds[line.count - 1];
-            const std::uint32_t id = store.startPolyline(ring);
-            ++d.stats.polylines;
-            for (std::size_t k = 0; k + 1 < line.count; ++k) {
-              if ((++segmentsTried & 255) == 0)
-                progress(Phase::Constraints, offset - line.count + k, span);
-              const std::uint32_t u = lineIds[k], v = lineIds[k + 1];
-              if (u == v) continue;  // a repeated point: nothing to constrain
-              EdgeSource src;
-              src.segment = static_cast<std::uint32_t>(store.segments.size());
-              src.winding = ring ? 1 : 0;
-              src.polyline = id;
-              store.segments.push_back({u, v});
-              store.segmentStarts.push_back(
-                  static_cast<std::uint32_t>(std::min<std::uint64_t>(firstPoint + k, kNoSegment)));
-              if (!d.built()) {
-                store.pending.push_back(
-                    {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
-                continue;
-              }
-              if (snap) continue;  // stored: snap rounding inserts it with all the others
-              if (twoRounds) {
-                if (present.present(u, v)) {
-                  store.mark(u, v, src);
-                  ++d.stats.segments;
-                } else {
-                  later.push_back(
-                      {u, v, src, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
-                }
-                continue;
-              }
-              const Outcome outcome = inserter.insert(u, v, src);
-              if (outcome == Outcome::Broken) {
-                broken = located(inserter.error(), i, k);
-                return;
-              }
-              snap = outcome == Outcome::GaveUp;
-            }
-          }
-        },
-        1);
-    if (!broken.ok()) return broken;
-    forChunks(0, later.size(), [&](std::size_t first, std::size_t last) {  // the second round
-      for (std::size_t j = first; j < last && !snap && broken.ok(); ++j) {
-        if ((j & 255) == 255) progress(Phase::Constraints, total + j * total / later.size(), span);
-        const PendingSegment& p = later[j];
-        const Outcome outcome = inserter.insert(p.u, p.v, p.src);
-        if (outcome == Outcome::Broken) broken = located(inserter.error(), p.polyline, p.index);
-        snap = outcome == Outcome::GaveUp;
-      }
-    });
-    if (!broken.ok()) return broken;
-    std::vector<PendingSegment>().swap(later);
-    // Computed crossings stay where every chain that met one keeps the guarantee.
-    if (!snap && d.built()) snap = !chainsKeepTheGuarantee(d, inserter.touchedSegments(), ends);
-    if (snap) {
-      const Status s = snapRoundConstraints(d, keep, state_->options);
-      if (!s.ok()) return s;
-    }
-    progress(Phase::Constraints, total, total);
-  } catch (const std::bad_alloc&) {
-    d.clear();
-    state_->values.clear();
-    state_->changed();
-    return {StatusCode::OutOfMemory,
-            "out of memory: the input is too large for the available memory"};
-  }
+  const Status s = catchOutOfMemory(
+      [&] {
+        std::vector<std::uint32_t> scratch;
+        std::uint32_t* ids = vertexIds;
+        if (ids == nullptr) {
+          scratch.resize(total);
+          ids = scratch.data();
+        }
+        const std::uint32_t firstNew = d.vertexCount();
+        // All points first, in one spatially sorted batch.
+        Status inserted;
+        if (adopt) {
+          inserted = insertCheckedPoints(adopt->data(), total, ids, values, adopt);
+        } else if (count == 1) {
+          inserted = insertCheckedPoints(polylines[0].xy, polylines[0].count, ids, values);
+        } else {
+          std::vector<double> all;
+          all.reserve(2 * total);
+          for (std::size_t i = 0; i < count; ++i)
+            all.insert(all.end(), polylines[i].xy, polylines[i].xy + 2 * polylines[i].count);
+          inserted = insertCheckedPoints(all.data(), total, ids, values);
+        }
+        if (!inserted.ok()) return inserted;
+        state_->values.recordPolylinePoints(ids, total);
+        state_->changed();
+        // Then their segments.
+        reserveStore(d.constraints, total, count, d.vertexCount());
+        return BatchSegments(d, state_->options, total, firstNew).insert(polylines, count, ids);
+      },
+      [&] { state_->clear(); });
+  if (!s.ok()) return s;
   return insertPendingSegments(d, state_->options);
 }
 

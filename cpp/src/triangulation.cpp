@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <new>
 #include <string>
 
 #include "base/in_parallel.h"
 #include "invalid_coordinate.h"
+#include "out_of_memory.h"
 #include "refine/refinement.h"
 #include "triangulation_state.h"
 #include "values/interpolation.h"
@@ -42,11 +42,6 @@ Status checkCoordinates(const double* xy, std::size_t count, const char* what,
           std::string(what) + " " + std::to_string(point) + " has " +
               describeInvalidCoordinate(v, i % 2 == 1),
           point};
-}
-
-Status outOfMemory() {
-  return {StatusCode::OutOfMemory,
-          "out of memory: the input is too large for the available memory"};
 }
 
 }  // namespace
@@ -113,28 +108,24 @@ Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
                                           std::vector<double>* adopt) {
   State& state = *state_;
   Delaunay& d = state.delaunay;
-  Status s;
   if (count >= kGhost - 2 - d.vertexCount())
     return {StatusCode::InvalidArgument, "too many points: at most 4294967293 vertices"};
-  try {
-    std::vector<std::uint32_t> scratch;
-    std::uint32_t* ids = vertexIds;
-    if (ids == nullptr) {
-      scratch.resize(count);
-      ids = scratch.data();
-    }
-    state.changed();
-    s = adopt ? d.insertBatch(std::move(*adopt), ids)
-              : d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
-    if (s.ok()) state.values.record(ids, count, values, d.vertexCount());
-    if (s.ok()) s = insertPendingSegments(d, state.options);
-  } catch (const std::bad_alloc&) {
-    d.clear();
-    state.values.clear();
-    state.changed();
-    return outOfMemory();
-  }
-  return s;
+  return catchOutOfMemory(
+      [&] {
+        std::vector<std::uint32_t> scratch;
+        std::uint32_t* ids = vertexIds;
+        if (ids == nullptr) {
+          scratch.resize(count);
+          ids = scratch.data();
+        }
+        state.changed();
+        Status s = adopt ? d.insertBatch(std::move(*adopt), ids)
+                         : d.insertBatch(xy, static_cast<std::uint32_t>(count), ids);
+        if (s.ok()) state.values.record(ids, count, values, d.vertexCount());
+        if (s.ok()) s = insertPendingSegments(d, state.options);
+        return s;
+      },
+      [&] { state.clear(); });
 }
 
 Location Triangulation::locate(double x, double y) const {
@@ -202,26 +193,24 @@ Status Triangulation::refine(const RefineOptions& options) {
   if (!error.empty()) return {StatusCode::InvalidArgument, error};
   State& state = *state_;
   state.changed();
-  try {
-    const std::size_t before = state.delaunay.steiner.size();
-    const Status s = refineTriangulation(state.delaunay, options, &state.windings);
-    for (std::size_t i = before; i < state.delaunay.steiner.size(); ++i)
-      state.edit.mark(&state.delaunay.steiner[i].vertex, 1, kSteinerVertex);
-    state.edit.steinerStale = true;
-    // Steiner vertices interpolate their values linearly from where they were placed.
-    if (state.values.active()) {
-      for (std::size_t i = before; i < state.delaunay.steiner.size(); ++i) {
-        const SteinerVertex& v = state.delaunay.steiner[i];
-        state.values.derive(v.vertex, v.parents, v.weights, v.parents[2] == kNoVertex ? 2 : 3);
-      }
-      state.values.invalidate();
-    }
-    return s;
-  } catch (const std::bad_alloc&) {
-    state.delaunay.clear();
-    state.edit.clear();
-    return outOfMemory();
-  }
+  return catchOutOfMemory(
+      [&] {
+        const std::size_t before = state.delaunay.steiner.size();
+        const Status s = refineTriangulation(state.delaunay, options, &state.windings);
+        for (std::size_t i = before; i < state.delaunay.steiner.size(); ++i)
+          state.edit.mark(&state.delaunay.steiner[i].vertex, 1, kSteinerVertex);
+        state.edit.steinerStale = true;
+        // Steiner vertices interpolate their values linearly from where they were placed.
+        if (state.values.active()) {
+          for (std::size_t i = before; i < state.delaunay.steiner.size(); ++i) {
+            const SteinerVertex& v = state.delaunay.steiner[i];
+            state.values.derive(v.vertex, v.parents, v.weights, v.parents[2] == kNoVertex ? 2 : 3);
+          }
+          state.values.invalidate();
+        }
+        return s;
+      },
+      [&] { state.clear(); });
 }
 
 Mesh Triangulation::mesh(const MeshOptions& options) const {
@@ -231,10 +220,7 @@ Mesh Triangulation::mesh(const MeshOptions& options) const {
 Mesh Triangulation::release(const MeshOptions& options) {
   state_->delaunay.dropGrid();
   Mesh m = exportWithValues(*state_, options, true);
-  state_->delaunay.clear();
-  state_->values.clear();
-  state_->edit.clear();
-  state_->changed();
+  state_->clear();
   return m;
 }
 
@@ -260,27 +246,26 @@ Status triangulateWith(std::size_t count, InsertPoints insertPoints, const Polyl
     return {StatusCode::InvalidArgument, "null polylines with a count"};
   Triangulation t(options);
   std::vector<std::uint32_t> ids;
-  Status s;
-  try {
-    std::size_t total = count;
-    for (std::size_t i = 0; i < polylineCount; ++i) total += polylines[i].count;
-    ids.resize(total);
-    s = insertPoints(t, ids.data());
-    if (s.ok() && polylineCount > 0)
-      s = t.insertPolylines(polylines, polylineCount, ids.data() + count,
-                            values ? values + count * options.valuesPerPoint : nullptr);
-    if (s.ok() && refine) {
-      RefineOptions r = *refine;
-      r.keep = meshOptions.keep;
-      r.fill = meshOptions.fill;
-      s = t.refine(r);
-    }
-    if (!s.ok()) return s;
-    out = t.release(meshOptions);
-  } catch (const std::bad_alloc&) {
-    return outOfMemory();
-  }
-  if (inputToVertex) inputToVertex->swap(ids);
+  const Status s = catchOutOfMemory(
+      [&] {
+        std::size_t total = count;
+        for (std::size_t i = 0; i < polylineCount; ++i) total += polylines[i].count;
+        ids.resize(total);
+        Status inserted = insertPoints(t, ids.data());
+        if (inserted.ok() && polylineCount > 0)
+          inserted = t.insertPolylines(polylines, polylineCount, ids.data() + count,
+                                       values ? values + count * options.valuesPerPoint : nullptr);
+        if (inserted.ok() && refine) {
+          RefineOptions r = *refine;
+          r.keep = meshOptions.keep;
+          r.fill = meshOptions.fill;
+          inserted = t.refine(r);
+        }
+        if (inserted.ok()) out = t.release(meshOptions);
+        return inserted;
+      },
+      [] {});  // t goes with this call
+  if (s.ok() && inputToVertex) inputToVertex->swap(ids);
   return s;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// What a Triangulation holds: the Delaunay engine and the constraints inserted into it.
+// What a Triangulation holds: the Delaunay engine (with the constraints inserted into it), the
+// values carried by the vertices, and what the export may reuse.
 #include <cstdint>
 #include <vector>
 
@@ -61,6 +62,13 @@ struct Triangulation::State {
   void changed() {
     slotMapValid = false;
     windings.clear();
+  }
+  // Empty again: after release(), and after running out of memory midway through a change.
+  void clear() {
+    delaunay.clear();
+    values.clear();
+    edit.clear();
+    changed();
   }
 };
 

@@ -30,8 +30,9 @@ struct Status {
   static Status success() { return {}; }
 };
 
-// Largest accepted |coordinate|. Beyond it the exact in-circle determinant could overflow
-// the range the exact predicates are written for.
+// Largest accepted |coordinate|. The predicates are exact for every finite double (predicates.h:
+// big integers take the widest exponent spans); the limit keeps what is computed in floating
+// point from coordinate differences (areas, circumcentres, crossing estimates) finite.
 inline constexpr double kMaxCoordinate = 1e150;
 
 }  // namespace geocdt

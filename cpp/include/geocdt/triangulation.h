@@ -57,14 +57,12 @@ enum class SnapRounding : std::uint8_t {
 };
 
 struct Options {
-  // Brio flips less than Hilbert (3.2 flips a point on 1M uniform points, against 4.8): in
-  // Hilbert order each point lands next to the empty part of the domain, where the hull's
-  // long triangles are.
+  // Brio flips about a third less than Hilbert: in Hilbert order each point lands next to the
+  // empty part of the domain, where the hull's long triangles are (bench/EXPERIMENTS.md, P3).
   InsertionOrder order = InsertionOrder::Brio;
   LocateStart start = LocateStart::LastTriangle;
-  // The grid doubles per axis when inserted points exceed gridDensity * m * m. Measured on
-  // 1M uniform points: 8 keeps walks at 4.2-4.5 steps (2 gives 5.3, 16 gives 6) with a cell
-  // per 4-8 points, about 1 byte per point.
+  // The grid doubles per axis when inserted points exceed gridDensity * m * m. 8 walks least,
+  // with a cell per 4-8 points, about 1 byte per point (README, "How it works").
   double gridDensity = 8.0;
   Progress progress;
   // Crossings are computed from the input segments and checked to fit; where that would

@@ -6,8 +6,8 @@
 // in a process such loops ran at baseline speed throughout. Worse, V8 charges a function's
 // budget at each loop's back edge by the loop's size in bytes, so such a loop got the
 // function that runs it once optimised during the call, for nothing, on a core the call
-// could have used (bench/EXPERIMENTS.md, first call 21). A chunk is a few thousand
-// iterations; natively the chunks cost 0.5% more instructions on 1M uniform points (callgrind).
+// could have used (bench/EXPERIMENTS.md, F16 and F21). A chunk is a few thousand
+// iterations, whose call costs next to nothing natively.
 // Binaryen would inline the chunk functions back (one caller each) without the link flag in
 // bindings/CMakeLists.txt.
 #include <algorithm>

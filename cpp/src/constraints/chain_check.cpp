@@ -226,7 +226,7 @@ GEOCDT_NOINLINE bool namedEdgesStayNear(Delaunay& d, VertexEdges& ends, std::uin
 
 // Whether segment i's chain keeps the guarantee with every chain it meets; others: scratch.
 // It and the searches it calls are kept apart (GEOCDT_NOINLINE): one function of them all
-// took V8 20-30 ms to optimise while a first call ran it in its baseline code.
+// was optimised late in a first call, which ran it in baseline code meanwhile (F21).
 bool segmentKeepsTheGuarantee(Delaunay& d, VertexEdges& ends, Chains& chains, std::uint32_t i,
                               std::vector<std::uint32_t>& others) {
   const ConstraintStore& store = d.constraints;
@@ -274,8 +274,7 @@ bool chainsKeepTheGuarantee(Delaunay& d, std::vector<std::uint32_t> segments, Ve
   std::vector<std::uint32_t> others;
   bool keeps = true;
   // A call per segment (a chunk of 1), so that this function, which runs once a call, never
-  // spends the engine's budget for optimised code (chunks.h; bench/EXPERIMENTS.md, first
-  // call 21).
+  // spends the engine's budget for optimised code (chunks.h; bench/EXPERIMENTS.md, F21).
   forChunks(
       0, segments.size(),
       [&](std::size_t first, std::size_t last) {

@@ -4,7 +4,7 @@
 // join u and u + 1, and on dense polylines most of those are Delaunay edges already. Turning
 // round each segment's first vertex in polyline order to find them, and fixing their two
 // half-edges there, missed the cache on nearly every segment; one pass in memory order finds
-// and fixes them all (bench/EXPERIMENTS.md, Constraints 37).
+// and fixes them all (bench/EXPERIMENTS.md, C37).
 #include <algorithm>
 #include <cstdint>
 #include <vector>

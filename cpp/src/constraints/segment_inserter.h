@@ -61,8 +61,8 @@ class SegmentInserter {
   };
 
   // walk, chainBendsAt, flipIn and the crossings' functions below are functions of their own:
-  // inlined, insert() was 13 KB of wasm, which V8 took 35-44 ms to optimise while a first
-  // call ran it in its baseline code (bench/EXPERIMENTS.md, first call 21).
+  // inlined, insert() grew so large that V8 optimised it late in a first call, which ran it
+  // in baseline code meanwhile (bench/EXPERIMENTS.md, F21).
   // onto: the piece's input segment when a lies off it (a rounded crossing), else null; the
   // walk then stops at a vertex exactly on it, ahead of a and not past b, if it meets one.
   GEOCDT_NOINLINE Walk walk(std::uint32_t a, std::uint32_t b, const InputSegment* onto);

@@ -334,15 +334,22 @@ namespace {
 
 Status finishSnapRounding(Delaunay& d, std::uint32_t keep, Delaunay& fresh);
 
-// One round of snap rounding into fresh: hot pixels are the first keep vertices of d, the
-// rounded crossings of the segments, and extra (x, y pairs: vertices that bent crossing links
-// in an earlier round). bent tells whether links crossed and were bent through new vertices,
-// which chains routed before them may not pass through: then another round is due.
-Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<double>& extra,
-                     Delaunay& fresh, bool& bent) {
-  bent = false;
-  // (Vertices removed by edits stay removed, segments of removed polylines are skipped.)
-  Status status = fresh.insertKeepingIds(d.xy.data(), keep);
+// The geometry of segment i of fresh (its ends keep their ids and coordinates there).
+InputSegment segmentOf(const Delaunay& fresh, std::size_t i) {
+  return fresh.constraints.geometry(static_cast<std::uint32_t>(i), fresh.xy);
+}
+
+// What one round learns of the segments (snapRoundOnce's steps): the triangles near each,
+// sorted as (triangle, segment), and the vertices each may pass through.
+struct SnapRound {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> slotSegment;
+  std::vector<std::vector<std::uint32_t>> candidates;  // per segment, with repeats
+};
+
+// The hot pixels that are vertices: the first keep vertices of d, with their ids (those removed
+// by edits stay removed), and d's segments in fresh's store.
+Status startRound(const Delaunay& d, std::uint32_t keep, Delaunay& fresh) {
+  const Status status = fresh.insertKeepingIds(d.xy.data(), keep);
   if (!status.ok()) return status;
   ConstraintStore& store = fresh.constraints;
   store.segments = d.constraints.segments;
@@ -351,14 +358,16 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
   store.firstSegment = d.constraints.firstSegment;
   store.ring = d.constraints.ring;
   store.polylineCount = d.constraints.polylineCount;
-  const std::size_t n = store.segments.size();
-  store.reserve(n, fresh.vertexCount());
-  // The geometry of segment i (its ends keep their ids and coordinates in fresh).
-  const auto segment = [&](std::size_t i) {
-    return store.geometry(static_cast<std::uint32_t>(i), fresh.xy);
-  };
+  store.reserve(store.segments.size(), fresh.vertexCount());
+  return Status::success();
+}
 
-  // A half-edge out of each segment's first vertex.
+// The triangles near each segment, searched from a half-edge out of its first vertex: their
+// corners are the vertices it may pass through, and two segments that cross share one of
+// them.
+Status findNearTriangles(Delaunay& fresh, SnapRound& round) {
+  const ConstraintStore& store = fresh.constraints;
+  const std::size_t n = store.segments.size();
   VertexEdges ends;
   ends.build(fresh);
   std::vector<std::int32_t> outOf(n);
@@ -367,30 +376,31 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
     outOf[i] = ends.find(fresh, store.segments[i].a);
     if (outOf[i] < 0) return {StatusCode::InternalError, "snap rounding lost the end of a segment"};
   }
-
-  // The triangles near each segment: their corners are the vertices it may pass through,
-  // and two segments that cross share one of them.
   std::vector<std::uint32_t> stamp(fresh.topo.slotCount(),
                                    std::numeric_limits<std::uint32_t>::max());
   std::vector<std::int32_t> found;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> slotSegment;  // (triangle, segment)
-  std::vector<std::vector<std::uint32_t>> candidates(n);
-  std::vector<double> reach(n);
+  round.candidates.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (!store.live(static_cast<std::uint32_t>(i))) continue;
     int ex, ey;
-    const InputSegment s = segment(i);
+    const InputSegment s = segmentOf(fresh, i);
     boxExponents(s, ex, ey);
-    reach[i] = euclideanNorm(std::ldexp(1.0, ex), std::ldexp(1.0, ey));
-    trianglesNear(fresh, outOf[i], s, reach[i], static_cast<std::uint32_t>(i), stamp, found);
+    const double reach = euclideanNorm(std::ldexp(1.0, ex), std::ldexp(1.0, ey));
+    trianglesNear(fresh, outOf[i], s, reach, static_cast<std::uint32_t>(i), stamp, found);
     for (const std::int32_t t : found) {
-      slotSegment.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i)});
-      for (int k = 0; k < 3; ++k) candidates[i].push_back(fresh.topo.tri[3 * t + k]);
+      round.slotSegment.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i)});
+      for (int k = 0; k < 3; ++k) round.candidates[i].push_back(fresh.topo.tri[3 * t + k]);
     }
   }
-  std::sort(slotSegment.begin(), slotSegment.end());
+  std::sort(round.slotSegment.begin(), round.slotSegment.end());
+  return Status::success();
+}
 
-  // Rounded crossings of the segments that cross properly.
+// Rounded crossings of the segments that cross properly (pairs near a common triangle), and
+// the extra hot pixels, sorted and without repeats.
+std::vector<Crossing> roundedCrossings(const Delaunay& fresh, const SnapRound& round,
+                                       const std::vector<double>& extra) {
+  const auto& slotSegment = round.slotSegment;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   for (std::size_t from = 0; from < slotSegment.size();) {
     std::size_t to = from;
@@ -404,7 +414,7 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   std::vector<Crossing> crossings;
   for (const auto& [i, j] : pairs) {
-    const InputSegment s = segment(i), t = segment(j);
+    const InputSegment s = segmentOf(fresh, i), t = segmentOf(fresh, j);
     if (!crossProperly(s, t)) continue;
     Crossing c{};
     roundedCrossing(s, t, c.x, c.y);
@@ -421,14 +431,19 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
       std::unique(crossings.begin(), crossings.end(),
                   [](const Crossing& a, const Crossing& b) { return a.x == b.x && a.y == b.y; }),
       crossings.end());
+  return crossings;
+}
 
-  // Each new crossing joins the candidates of the segments near the triangles holding it;
-  // then all are inserted.
+// Each new crossing joins the candidates of the segments near the triangles holding it; then
+// all are inserted, numbered from keep on.
+Status insertCrossings(Delaunay& fresh, std::uint32_t keep, const std::vector<Crossing>& crossings,
+                       SnapRound& round) {
   const auto near = [&](std::int32_t t, std::uint32_t v) {
     const std::uint32_t slot = static_cast<std::uint32_t>(t);
-    auto it = std::lower_bound(slotSegment.begin(), slotSegment.end(),
+    auto it = std::lower_bound(round.slotSegment.begin(), round.slotSegment.end(),
                                std::pair<std::uint32_t, std::uint32_t>{slot, 0});
-    for (; it != slotSegment.end() && it->first == slot; ++it) candidates[it->second].push_back(v);
+    for (; it != round.slotSegment.end() && it->first == slot; ++it)
+      round.candidates[it->second].push_back(v);
   };
   std::vector<std::size_t> added;  // indices into crossings
   for (std::size_t c = 0; c < crossings.size(); ++c) {
@@ -446,18 +461,24 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
     if (fresh.insertVertex(v) != v)
       return {StatusCode::InternalError, "snap rounding could not insert a rounded crossing"};
   }
+  return Status::success();
+}
 
-  // Each chain, inserted link by link.
+// Each segment's chain through its candidates, inserted link by link. bent: as snapRoundOnce's.
+Status insertChains(Delaunay& fresh, SnapRound& round, bool& bent) {
+  const ConstraintStore& store = fresh.constraints;
+  VertexEdges ends;
   ends.build(fresh);  // with the rounded crossings
   SegmentInserter inserter(fresh, ends, Crossings::Snapped);
   std::vector<std::uint32_t> chain;
   const std::uint32_t hotPixels = fresh.vertexCount();
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < store.segments.size(); ++i) {
     if (!store.live(static_cast<std::uint32_t>(i))) continue;
-    std::vector<std::uint32_t>& list = candidates[i];
+    std::vector<std::uint32_t>& list = round.candidates[i];
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
-    chainOf(segment(i), store.segments[i].a, store.segments[i].b, list, fresh.xy.data(), chain);
+    chainOf(segmentOf(fresh, i), store.segments[i].a, store.segments[i].b, list, fresh.xy.data(),
+            chain);
     const EdgeSource src = store.sourceOf(static_cast<std::uint32_t>(i));
     for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
       if (inserter.insert(chain[k], chain[k + 1], src) == Outcome::Broken) {
@@ -468,6 +489,22 @@ Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<do
   }
   bent = fresh.vertexCount() > hotPixels;
   return Status::success();
+}
+
+// One round of snap rounding into fresh: hot pixels are the first keep vertices of d, the
+// rounded crossings of the segments, and extra (x, y pairs: vertices that bent crossing links
+// in an earlier round). bent tells whether links crossed and were bent through new vertices,
+// which chains routed before them may not pass through: then another round is due.
+Status snapRoundOnce(const Delaunay& d, std::uint32_t keep, const std::vector<double>& extra,
+                     Delaunay& fresh, bool& bent) {
+  bent = false;
+  SnapRound round;
+  Status status = startRound(d, keep, fresh);
+  if (status.ok()) status = findNearTriangles(fresh, round);
+  if (status.ok())
+    status = insertCrossings(fresh, keep, roundedCrossings(fresh, round, extra), round);
+  if (status.ok()) status = insertChains(fresh, round, bent);
+  return status;
 }
 
 }  // namespace

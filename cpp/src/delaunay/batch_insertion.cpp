@@ -49,8 +49,8 @@ Status Delaunay::insertBatch(const double* input, std::uint32_t count, std::uint
   options_.progress(Phase::Sort, count, count);
   // Points the caller keeps are stored in insertion order while a run inserts them, so that
   // the walk and the flips find neighbours next to each other in memory, then put back in
-  // input order from the input (measured against keeping input order and reading ahead:
-  // 0.89x the time at 2M uniform points). A buffer taken over has no copy to restore from.
+  // input order from the input: faster than keeping input order and reading ahead
+  // (bench/EXPERIMENTS.md, P9). A buffer taken over has no copy to restore from.
   const bool sorted = isLarge(count, base) && options_.start == LocateStart::LastTriangle;
   xy.resize(2 * (static_cast<std::size_t>(base) + count));
   double* p = xy.data() + 2 * static_cast<std::size_t>(base);
@@ -179,13 +179,12 @@ Status Delaunay::insertRun(const std::uint32_t* order, std::uint32_t count,
   Status s;
   // In chunks, so that this function, which runs once a batch, never spends the engine's
   // budget for optimised code: in a first call its long compile only took a core from the
-  // call (bench/EXPERIMENTS.md, first call 21).
+  // call (bench/EXPERIMENTS.md, F21).
   forChunks(0, count, [&](std::size_t begin, std::size_t end) {
     for (std::uint32_t k = static_cast<std::uint32_t>(begin); k < end && s.ok(); ++k) {
       // Points in input order lie each in a cache line of its own: read the next block's
       // coordinates ahead, so that their cache misses overlap one another instead of each
-      // stalling its own insertion (without it, 1.41x the time at 1M uniform points, 1.56x
-      // at 4M; with it 1.06-1.13x that of points stored in insertion order).
+      // stalling its own insertion (bench/EXPERIMENTS.md, P9).
       if ((k & 4095) == 0) options_.progress(Phase::Points, k, count);
       if (!sorted && k % kRunBlock == 0 && k + kRunBlock < count)
         touch_ +=

@@ -11,8 +11,8 @@ namespace {
 // The Hilbert curve's refinement as a state machine: the state is how the current quadrant
 // is transformed (bit 0: x and y swapped, bit 1: both mirrored). One table step reads four
 // levels (four bits of x and of y) and gives their eight bits of the index and the next
-// state, without the data-dependent branches of the textbook loop (mispredicted half the
-// time, one per level).
+// state, without the data-dependent branch per level of the textbook loop, which
+// mispredicts (bench/EXPERIMENTS.md, P4).
 struct HilbertTable {
   std::uint16_t entry[4 << 8];  // index (state << 8 | x4 << 4 | y4): digits << 2 | state
 };
@@ -153,10 +153,8 @@ std::vector<std::uint32_t> insertionOrder(const double* xy, const std::uint32_t*
   }
   const double minX = box.minX, minY = box.minY, maxX = box.maxX, maxY = box.maxY;
   // The finest curve the key holds (BRIO keeps 4 bits for the round): clustered points
-  // need cells much smaller than the average spacing. On 1M points in gaussian clusters,
-  // one cell a point walked 10.9 steps a point and 4096 cells 3.4 (0.88x the time); uniform
-  // and real data (GSHHG, Natural Earth) took the same time either way. One scale for both
-  // axes keeps the cells square.
+  // need cells much smaller than the average spacing, and uniform and real data lose
+  // nothing (bench/EXPERIMENTS.md, P8). One scale for both axes keeps the cells square.
   const int bits = order == InsertionOrder::Brio ? 14 : 16;
   const double top = static_cast<double>((1u << bits) - 1);
   const double extent = std::max(maxX - minX, maxY - minY);

@@ -1,9 +1,8 @@
 #pragma once
 // A half-edge out of each vertex, so that a constraint segment starts from its end vertices
-// instead of locating their coordinates. Built in one pass over the triangles when a call
-// inserts many segments (on the GSHHG Europe region, locating segment ends walked 117
-// triangles each where the previous segment's end was no hint, 9% of the whole call's
-// instructions). The entries are hints: flips and splits move half-edges between slots, so
+// instead of locating their coordinates, a long walk each where the previous segment's end
+// is no hint (bench/EXPERIMENTS.md, C16). Built in one pass over the triangles when a call
+// inserts many segments. The entries are hints: flips and splits move half-edges between slots, so
 // each one is checked when read and, when stale, found again around the triangle it names
 // (a flip leaves the vertex in that triangle or a neighbour), or by a walk from there.
 #include <cstdint>
@@ -19,8 +18,8 @@ class VertexEdges {
   // One half-edge out of each vertex of d, real or ghost triangle alike.
   void build(const Delaunay& d) {
     const std::vector<std::uint32_t>& tri = d.topo.tri;
-    // Room for the crossings to come (14,896 on a 2M-point GSHHG region), so that the first
-    // of them does not double the table.
+    // Room for the crossings to come (a few per thousand vertices on real data), so that the
+    // first of them does not double the table.
     out_.reserve(d.vertexCount() + d.vertexCount() / 64 + 64);
     out_.assign(d.vertexCount(), -1);
     std::int32_t* out = out_.data();

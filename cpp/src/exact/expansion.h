@@ -57,8 +57,8 @@ inline void two_product(double a, double b, double& product, double& err) {
 }
 
 // Zero elimination. A branch, not a branch-free store: on the common exactly degenerate
-// inputs (small integers, grids) almost every rounding error is zero, which predicts well;
-// the branch-free form measured 1.7x slower there.
+// inputs (small integers, grids) almost every rounding error is zero, which predicts well
+// and beat the branch-free form there (bench/EXPERIMENTS.md, L2).
 inline void append_nonzero(double x, double* h, int& h_len) {
   if (x != 0.0) h[h_len++] = x;
 }

@@ -12,11 +12,10 @@ namespace geocdt {
 // The power of two 2^-e that scales the largest of the differences to magnitude ~1: scaled
 // by it (exactly), their products neither underflow nor overflow. e stays within the normal
 // exponents, so that 2^-e is a double and scaling is one multiplication (the same correctly
-// rounded result as ldexp, without a library call per value: with 5 in measure(), 18.6% of
-// refinement's instructions on 20k uniform points at 30 degrees); beyond, the largest
-// difference scales to within [2^-52, 2), which is as good.
-// The exponent is read from the bits and 2^-e built from them: ilogb and ldexp were still
-// library calls, 10.6% of the instructions on that input.
+// rounded result as ldexp, without a library call per value); beyond, the largest
+// difference scales to within [2^-52, 2), which is as good. The exponent is read from the
+// bits and 2^-e built from them: ilogb and ldexp are library calls too (bench/EXPERIMENTS.md,
+// R3 and R4).
 inline int scaleExponent(std::initializer_list<double> differences) {
   double size = 0;
   for (const double d : differences) size = std::max(size, std::fabs(d));

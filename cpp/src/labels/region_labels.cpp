@@ -3,8 +3,7 @@
 // (outside every polygon), fills each face without computing anything, and crosses into the
 // next face over one of its constrained edges, adding the winding each polygon's rings carry
 // across that edge. So the windings are computed once per face, not per triangle or per
-// constrained edge, and a triangle costs one visit: on the Natural Earth 1:10m countries
-// (945k triangles, 4,794 faces), 121M instructions, 4% of what the core spends in all.
+// constrained edge, and a triangle costs one visit (bench/EXPERIMENTS.md, L2).
 #include "labels/region_labels.h"
 
 #include <algorithm>
@@ -80,8 +79,7 @@ std::vector<std::int32_t> faceStates(const Delaunay& d,
       const std::int32_t t = stack.back();
       stack.pop_back();
       for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e) {
-        // Unsigned (every slot has its twins): a cheaper division by 3, 8M fewer instructions
-        // on the 1:10m countries.
+        // Unsigned (every slot has its twins): a cheaper division by 3.
         const std::int32_t next = static_cast<std::int32_t>(std::uint32_t(topo.adj[e]) / 3u);
         if (state[next] >= 0) continue;
         if (topo.fixed[e]) {

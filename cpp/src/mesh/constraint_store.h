@@ -322,7 +322,7 @@ class ConstraintStore {
   // pairs, each with its share of the winding (the first pair's share is what they leave),
   // as lists linked through one pool. Shared borders make hundreds of thousands of short
   // lists: a vector each cost an allocation each (which in wasm had malloc optimised during
-  // a first call) and more memory than its members (bench/EXPERIMENTS.md).
+  // a first call) and more memory than its members (bench/EXPERIMENTS.md, C39).
   ExtraMembers members_;
 };
 

@@ -31,13 +31,13 @@ struct HashedSlot {
 // to the table. A polyline's vertices have consecutive ids and the triangles come in
 // spatial order, so the edges marked along a polyline, and those looked up triangle by
 // triangle at export, touch slots near the last ones, where hashed slots missed the cache
-// on almost every edge (bench/EXPERIMENTS.md, 26). Ids crowding some slots (one vertex with
+// on almost every edge (bench/EXPERIMENTS.md, C26). Ids crowding some slots (one vertex with
 // thousands of edges, ids far past the bound) make long probe runs: when the inserts into a
 // table have probed more than kMeanRun slots each on average, it turns to hashed slots for
 // good, so a table never costs more than a few times what a hashed one would. Refinement,
 // whose new vertices take ids far past the bound, turns it at its start (scatter()): those
-// ids wrapped onto the full low slots (US counties: 22 probes an insert once hashed by
-// blocks of ids, 3.7 with the whole key hashed; bench/EXPERIMENTS.md, Refinement 11).
+// ids wrapped onto the full low slots, where probe runs grew long (bench/EXPERIMENTS.md,
+// R11).
 struct EdgeSlot {
   static constexpr bool kAdaptive = true;
   std::uint64_t scale = 1 << 16;  // slots per vertex id, 16.16 fixed point

@@ -43,7 +43,7 @@ struct Topology {
   }
 
   // n more slots, zeroed. An insertion adds two at a time: element by element, cheaper than
-  // resize's general path for so few (bench/EXPERIMENTS.md, Refinement 8).
+  // resize's general path for so few (bench/EXPERIMENTS.md, R8).
   void appendSlots(std::size_t n) {
     for (std::size_t k = 0; k < 3 * n; ++k) {
       tri.push_back(0);

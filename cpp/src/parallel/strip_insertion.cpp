@@ -157,12 +157,34 @@ Status broken(const char* what) {
   return {StatusCode::InternalError, std::string("joining the strips: ") + what};
 }
 
-// Replaces the strips' triangles that findSeam did not keep by the seam's triangulation and
-// closes the slots up to `slots` in all.
-Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& seams,
-                  std::int32_t slots, Stats& stats) {
-  // The seam vertices, triangulated on their own: seam vertex i is vertex seamVertex[i].
-  std::vector<std::uint32_t> seamVertex;
+// The seam's own triangulation, and what joinStrips learns of it step by step.
+//
+//      strip 0 : strip 1          The strips' triangles whose circles cross a cut (:)
+//     kept  /\/:\/\  kept         or reach past a strip's hull are replaced. Their
+//          / /\:/\ \              vertices are triangulated again on their own, with the
+//      border  seam  border       borders (edges between kept and replaced triangles) as
+//                                 constraints; the part beyond the borders is dropped.
+struct Seam {
+  explicit Seam(const Options& options) : z(options) {}
+  Delaunay z;                          // the seam vertices triangulated on their own
+  std::vector<std::uint32_t> vertex;   // seam vertex i is vertex[i] of the strips
+  std::vector<std::uint8_t> dropped;   // per slot of z: on the kept triangles' side
+  std::vector<std::int32_t> borderOf;  // per half-edge of z on a border: the kept half-edge
+  std::vector<std::int32_t> holes;     // the strips' slots to refill, lowest first per strip
+  std::size_t filled = 0;              // holes taken by z's triangles
+  std::int32_t last = -1;              // a real triangle, for the next walk
+};
+
+Options seamOptions(const Options& options) {
+  Options o = options;
+  o.threads = 1;
+  o.progress = Progress();
+  return o;
+}
+
+// The seam vertices, triangulated on their own.
+Status triangulateSeam(const Delaunay& d, std::vector<StripSeam>& seams, Seam& seam) {
+  std::vector<std::uint32_t>& seamVertex = seam.vertex;
   for (StripSeam& s : seams) {
     seamVertex.insert(seamVertex.end(), s.vertices.begin(), s.vertices.end());
     std::vector<std::uint32_t>().swap(s.vertices);
@@ -173,25 +195,25 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
     coords[2 * i] = p[2 * seamVertex[i]];
     coords[2 * i + 1] = p[2 * seamVertex[i] + 1];
   }
-  Options seamOptions = options;
-  seamOptions.threads = 1;
-  seamOptions.progress = Progress();
-  Delaunay z(seamOptions);
   std::vector<std::uint32_t> zid(seamVertex.size());
-  Status s = z.insertBatch(std::move(coords), zid.data());
+  const Status s = seam.z.insertBatch(std::move(coords), zid.data());
   if (!s.ok()) return s;
-  if (z.vertexCount() != seamVertex.size()) return broken("seam vertices repeat");
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> seamOf(seamVertex.size());
-  for (std::uint32_t i = 0; i < seamVertex.size(); ++i) seamOf[i] = {seamVertex[i], i};
+  if (seam.z.vertexCount() != seamVertex.size()) return broken("seam vertices repeat");
+  return Status::success();
+}
+
+// The borders, as constraints of the seam's triangulation: then its triangles on their far
+// side are the kept triangles' region, to drop.
+Status dropKeptSide(const Delaunay& d, const std::vector<StripSeam>& seams, Seam& seam) {
+  Delaunay& z = seam.z;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> seamOf(seam.vertex.size());
+  for (std::uint32_t i = 0; i < seam.vertex.size(); ++i) seamOf[i] = {seam.vertex[i], i};
   std::sort(seamOf.begin(), seamOf.end());
   const auto local = [&](std::uint32_t v) {
     const auto it =
         std::lower_bound(seamOf.begin(), seamOf.end(), std::make_pair(v, std::uint32_t{0}));
     return it != seamOf.end() && it->first == v ? it->second : kGhost;
   };
-
-  // The borders, as constraints of the seam's triangulation: then its triangles on their far
-  // side are the kept triangles' region, to drop.
   const std::uint32_t* tri = d.topo.tri.data();
   VertexEdges ends;
   ends.build(z);
@@ -201,21 +223,22 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
     std::int32_t kept;   // its half-edge in the kept triangle
   };
   std::vector<Border> borders;
-  for (const StripSeam& seam : seams)
-    for (const std::int32_t e : seam.borders) {
+  for (const StripSeam& strip : seams)
+    for (const std::int32_t e : strip.borders) {
       const std::uint32_t u = local(tri[e]), v = local(tri[nextEdge(e)]);
       if (u == kGhost || v == kGhost) return broken("a border's end is not a seam vertex");
       borders.push_back({u, v, e});
       if (inserter.insert(u, v, EdgeSource{}) != Outcome::Inserted) return inserter.error();
     }
   const Topology& zt = z.topo;
-  std::vector<std::uint8_t> dropped(static_cast<std::size_t>(zt.slotCount()), 0);
-  std::vector<std::int32_t> borderOf(zt.tri.size(), -1);  // seam half-edge -> kept half-edge
+  std::vector<std::uint8_t>& dropped = seam.dropped;
+  dropped.assign(static_cast<std::size_t>(zt.slotCount()), 0);
+  seam.borderOf.assign(zt.tri.size(), -1);
   std::vector<std::int32_t> stack;
   for (const Border& b : borders) {
     const std::int32_t h = zt.edgeAround(ends.find(z, b.u), b.v);
     if (h < 0 || !zt.fixed[h]) return broken("a border is missing from the seam");
-    borderOf[h] = b.kept;
+    seam.borderOf[h] = b.kept;
     if (!dropped[h / 3]) {
       dropped[h / 3] = 1;
       stack.push_back(h / 3);
@@ -231,53 +254,58 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
       stack.push_back(zt.adj[e] / 3);
     }
   }
+  return Status::success();
+}
 
-  // The seam's other triangles fill the holes, lowest slots first.
-  std::vector<std::int32_t> holes;
-  for (StripSeam& seam : seams) {
-    holes.insert(holes.end(), seam.holes.begin(), seam.holes.end());
-    std::vector<std::int32_t>().swap(seam.holes);
+// The seam's other triangles fill the holes, lowest slots first, joined to each other and to
+// the kept triangles across the borders.
+Status fillHoles(Delaunay& d, std::vector<StripSeam>& seams, Seam& seam) {
+  const Topology& zt = seam.z.topo;
+  std::vector<std::int32_t>& holes = seam.holes;
+  for (StripSeam& strip : seams) {
+    holes.insert(holes.end(), strip.holes.begin(), strip.holes.end());
+    std::vector<std::int32_t>().swap(strip.holes);
   }
   std::vector<std::int32_t> slotOf(static_cast<std::size_t>(zt.slotCount()), -1);
-  std::size_t filled = 0;
   for (std::int32_t t = 0; t < zt.slotCount(); ++t) {
-    if (dropped[t]) continue;
-    if (filled == holes.size()) return broken("more seam triangles than holes");
-    slotOf[t] = holes[filled++];
+    if (seam.dropped[t]) continue;
+    if (seam.filled == holes.size()) return broken("more seam triangles than holes");
+    slotOf[t] = holes[seam.filled++];
   }
   Topology& topo = d.topo;
-  std::int32_t last = -1;
   for (std::int32_t t = 0; t < zt.slotCount(); ++t) {
-    if (dropped[t]) continue;
+    if (seam.dropped[t]) continue;
     const std::int32_t g = slotOf[t];
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t v = zt.tri[3 * t + k];
-      topo.tri[3 * g + k] = v == kGhost ? kGhost : seamVertex[v];
+      topo.tri[3 * g + k] = v == kGhost ? kGhost : seam.vertex[v];
       topo.fixed[3 * g + k] = 0;
       const std::int32_t twin = zt.adj[3 * t + k];
       std::int32_t to;
-      if (!dropped[twin / 3]) {
+      if (!seam.dropped[twin / 3]) {
         to = 3 * slotOf[twin / 3] + twin % 3;
       } else {
-        to = borderOf[twin];
+        to = seam.borderOf[twin];
         if (to < 0) return broken("a seam triangle meets a dropped one off the borders");
         topo.adj[to] = 3 * g + k;
       }
       topo.adj[3 * g + k] = to;
     }
-    if (last < 0 && !zt.isGhost(t)) last = g;
+    if (seam.last < 0 && !zt.isGhost(t)) seam.last = g;
   }
-  stats.flips += z.stats.flips;
-  stats.walkSteps += z.stats.walkSteps;
-  stats.locates += z.stats.locates;
+  return Status::success();
+}
 
-  // Holes left below the final count take the triangles above it.
+// Holes left below the final count of `slots` take the triangles above it.
+Status closeHoles(Delaunay& d, std::int32_t slots, Seam& seam) {
+  Topology& topo = d.topo;
+  const std::vector<std::int32_t>& holes = seam.holes;
   std::int32_t from = static_cast<std::int32_t>(topo.slotCount()) - 1;
   std::vector<std::uint8_t> isHole;  // for the slots at and above `slots` only
   isHole.assign(static_cast<std::size_t>(topo.slotCount() - slots), 0);
-  for (std::size_t i = filled; i < holes.size(); ++i)
+  for (std::size_t i = seam.filled; i < holes.size(); ++i)
     if (holes[i] >= slots) isHole[holes[i] - slots] = 1;
-  for (std::size_t i = filled; i < holes.size() && holes[i] < slots; ++i) {
+  for (std::size_t i = seam.filled; i < holes.size() && holes[i] < slots; ++i) {
     while (from >= slots && isHole[from - slots]) --from;
     if (from < slots) return broken("too few triangles to close the holes");
     const std::int32_t to = holes[i];
@@ -288,12 +316,147 @@ Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& s
       topo.adj[3 * to + k] = twin;
       topo.adj[twin] = 3 * to + k;
     }
-    if (last == from) last = to;
+    if (seam.last == from) seam.last = to;
     --from;
   }
   topo.resizeSlots(static_cast<std::size_t>(slots));
-  d.setLastTriangle(last >= 0 ? last : 0);
   return Status::success();
+}
+
+// Replaces the strips' triangles that findSeam did not keep by the seam's triangulation and
+// closes the slots up to `slots` in all.
+Status joinStrips(Delaunay& d, const Options& options, std::vector<StripSeam>& seams,
+                  std::int32_t slots, Stats& stats) {
+  Seam seam(seamOptions(options));
+  Status s = triangulateSeam(d, seams, seam);
+  if (s.ok()) s = dropKeptSide(d, seams, seam);
+  if (s.ok()) s = fillHoles(d, seams, seam);
+  if (!s.ok()) return s;
+  stats.flips += seam.z.stats.flips;
+  stats.walkSteps += seam.z.stats.walkSteps;
+  stats.locates += seam.z.stats.locates;
+  s = closeHoles(d, slots, seam);
+  if (!s.ok()) return s;
+  d.setLastTriangle(seam.last >= 0 ? seam.last : 0);
+  return Status::success();
+}
+
+// The strips of a batch: where they are cut, their points, boxes and slots.
+struct Strips {
+  std::uint32_t k = 0;
+  std::vector<double> cuts;                       // stripCuts'
+  std::vector<std::vector<std::uint32_t>> order;  // strip s's points in insertion order
+  std::vector<Bounds> box;
+  std::vector<std::int32_t> first;  // strip s has the slots [first[s], first[s + 1])
+
+  std::pair<double, double> slab(std::uint32_t s) const {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {s == 0 ? -inf : cuts[s - 1], s + 1 == k ? inf : cuts[s]};
+  }
+};
+
+// Each strip gathers its points from all of them (a pass over x per thread costs less than a
+// pass that hands them out) and puts them in insertion order. False when a strip has too
+// few points to pay for itself.
+bool gatherStrips(const double* p, std::uint32_t count, InsertionOrder order, Strips& strips) {
+  const std::uint32_t k = strips.k;
+  strips.order.assign(k, {});
+  strips.box.assign(k, {});
+  const double inf = std::numeric_limits<double>::infinity();
+  inParallel(k, [&](std::uint32_t s) {
+    const double lo = strips.slab(s).first, hi = strips.slab(s).second;
+    std::vector<std::uint32_t> mine;
+    mine.reserve(count / k + count / 32);
+    Bounds b{inf, inf, -inf, -inf};
+    forChunks(0, count, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const double x = p[2 * i];
+        if (x < lo || x >= hi) continue;
+        const double y = p[2 * i + 1];
+        mine.push_back(static_cast<std::uint32_t>(i));
+        b.minX = std::min(b.minX, x);
+        b.maxX = std::max(b.maxX, x);
+        b.minY = std::min(b.minY, y);
+        b.maxY = std::max(b.maxY, y);
+      }
+    });
+    strips.box[s] = b;
+    if (mine.size() < kMinStripPoints / 2) return;  // too few: checked below
+    strips.order[s] =
+        insertionOrder(p, mine.data(), static_cast<std::uint32_t>(mine.size()), order);
+  });
+  for (std::uint32_t s = 0; s < k; ++s)
+    if (strips.order[s].size() < kMinStripPoints / 2) return false;
+  return true;
+}
+
+// Each strip's slots: two a point are enough (a strip of n points uses 2n - 2). The arrays
+// are sized side by side: most of their cost is the first touch of fresh memory, which one
+// thread would pay alone (bench/EXPERIMENTS.md, T1).
+void allocateStripSlots(Topology& topo, Strips& strips, std::uint32_t* ids, std::uint32_t count) {
+  const std::uint32_t k = strips.k;
+  strips.first.assign(k + 1, 0);
+  for (std::uint32_t s = 0; s < k; ++s)
+    strips.first[s + 1] = strips.first[s] + 2 * static_cast<std::int32_t>(strips.order[s].size());
+  const std::uint32_t jobs = std::min(k, 3u);
+  const std::size_t halfEdges = 3 * static_cast<std::size_t>(strips.first[k]);
+  inParallel(jobs, [&](std::uint32_t job) {
+    if (job == 0) topo.tri.resize(halfEdges);
+    if (job == 1) topo.adj.resize(halfEdges);
+    if (job == (jobs == 3 ? 2 : 0)) {  // the lighter arrays, with a job of their own if any
+      topo.fixed.resize(halfEdges);
+      std::fill(ids, ids + count, kGhost);
+    }
+  });
+}
+
+// What one strip's thread left: its status, the slots it used, one of its ghost triangles
+// (where its share of the seam is looked for) and its counters.
+struct StripRun {
+  Status status;
+  std::int32_t used = 0;
+  std::int32_t ghost = -1;
+  Stats stats;
+};
+
+// Triangulates each strip on a thread of its own into d's slots; returns the threads that ran.
+std::uint32_t triangulateStrips(Delaunay& d, const Strips& strips, std::uint32_t* ids,
+                                std::vector<StripRun>& runs) {
+  Options workerOptions = d.options();
+  workerOptions.threads = 1;
+  workerOptions.progress = Progress();  // the caller's callback is not for other threads
+  runs.assign(strips.k, {});
+  return inParallel(strips.k, [&](std::uint32_t s) {
+    Delaunay worker(workerOptions, d, strips.first[s]);
+    StripRun& run = runs[s];
+    const std::vector<std::uint32_t>& order = strips.order[s];
+    run.status = worker.insertStrip(order.data(), static_cast<std::uint32_t>(order.size()), ids);
+    run.used = worker.usedSlots();
+    // A point right of the strip's box lies beyond one of its hull edges: a ghost triangle.
+    const Bounds& box = strips.box[s];
+    const double far = box.maxX + std::fabs(box.maxX) + 1;
+    const Hit h = worker.locate(far, box.minY, false);
+    if (h.kind == Hit::Kind::Outside) run.ghost = h.edge / 3;
+    run.stats = worker.stats;
+  });
+}
+
+// Each strip's share of the seam, found side by side, then the join.
+Status joinAlongSeams(Delaunay& d, const Strips& strips, const std::vector<StripRun>& runs,
+                      std::uint32_t count, Stats& stats) {
+  const std::uint32_t k = strips.k;
+  std::vector<std::uint8_t> state(static_cast<std::size_t>(strips.first[k]));
+  std::vector<std::uint8_t> seen(count, 0);
+  std::vector<StripSeam> seams(k);
+  inParallel(k, [&](std::uint32_t s) {
+    findSeam(d, runs[s].ghost, strips.first[s], runs[s].used, strips.first[s + 1],
+             strips.slab(s).first, strips.slab(s).second, state, seen, seams[s]);
+  });
+  std::vector<std::uint8_t>().swap(seen);
+  std::vector<std::uint8_t>().swap(state);
+  const std::uint64_t vertices = stats.inserted;
+  const auto slots = static_cast<std::int32_t>(2 * vertices - 2);
+  return joinStrips(d, d.options(), seams, slots, stats);
 }
 
 }  // namespace
@@ -318,110 +481,37 @@ Status Delaunay::insertStrip(const std::uint32_t* order, std::uint32_t count, st
 
 Status Delaunay::insertInStrips(std::uint32_t count, std::uint32_t* ids, bool& handled) {
   handled = false;
-  const std::uint32_t k = std::min(options_.threads, count / kMinStripPoints);
-  const double* p = xy.data();
-  const std::vector<double> cuts = stripCuts(p, count, k);
-  if (cuts.empty()) return Status::success();
-  // Each strip gathers its points from all of them (a pass over x per thread costs less than
-  // a pass that hands them out) and puts them in insertion order.
-  std::vector<std::vector<std::uint32_t>> strip(k);
-  std::vector<Bounds> box(k);
-  const double inf = std::numeric_limits<double>::infinity();
-  const auto slab = [&](std::uint32_t s) {
-    return std::make_pair(s == 0 ? -inf : cuts[s - 1], s + 1 == k ? inf : cuts[s]);
-  };
+  Strips strips;
+  strips.k = std::min(options_.threads, count / kMinStripPoints);
+  strips.cuts = stripCuts(xy.data(), count, strips.k);
+  if (strips.cuts.empty()) return Status::success();
   options_.progress(Phase::Sort, 0, count);
-  inParallel(k, [&](std::uint32_t s) {
-    const double lo = slab(s).first, hi = slab(s).second;
-    std::vector<std::uint32_t> mine;
-    mine.reserve(count / k + count / 32);
-    Bounds b{inf, inf, -inf, -inf};
-    forChunks(0, count, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        const double x = p[2 * i];
-        if (x < lo || x >= hi) continue;
-        const double y = p[2 * i + 1];
-        mine.push_back(static_cast<std::uint32_t>(i));
-        b.minX = std::min(b.minX, x);
-        b.maxX = std::max(b.maxX, x);
-        b.minY = std::min(b.minY, y);
-        b.maxY = std::max(b.maxY, y);
-      }
-    });
-    box[s] = b;
-    if (mine.size() < kMinStripPoints / 2) return;  // too few: checked below
-    strip[s] =
-        insertionOrder(p, mine.data(), static_cast<std::uint32_t>(mine.size()), options_.order);
-  });
+  const bool gathered = gatherStrips(xy.data(), count, options_.order, strips);
   options_.progress(Phase::Sort, count, count);
-  for (std::uint32_t s = 0; s < k; ++s)
-    if (strip[s].size() < kMinStripPoints / 2) return Status::success();
-
-  // Each strip's slots: two a point are enough (a strip of n points uses 2n - 2).
-  std::vector<std::int32_t> first(k + 1, 0);
-  for (std::uint32_t s = 0; s < k; ++s)
-    first[s + 1] = first[s] + 2 * static_cast<std::int32_t>(strip[s].size());
-  // The arrays side by side: most of their cost is the first touch of fresh memory, which one
-  // thread would pay alone (1.3 ms per million slots).
-  const std::uint32_t jobs = std::min(k, 3u);
-  const std::size_t halfEdges = 3 * static_cast<std::size_t>(first[k]);
-  inParallel(jobs, [&](std::uint32_t job) {
-    if (job == 0) topo.tri.resize(halfEdges);
-    if (job == 1) topo.adj.resize(halfEdges);
-    if (job == (jobs == 3 ? 2 : 0)) {  // the lighter arrays, with a job of their own if any
-      topo.fixed.resize(halfEdges);
-      std::fill(ids, ids + count, kGhost);
-    }
-  });
+  if (!gathered) return Status::success();
+  allocateStripSlots(topo, strips, ids, count);
   options_.progress(Phase::Points, 0, count);
-  Options workerOptions = options_;
-  workerOptions.threads = 1;
-  workerOptions.progress = Progress();  // the caller's callback is not for other threads
-  std::vector<Status> status(k);
-  std::vector<std::int32_t> used(k), ghost(k, -1);
-  std::vector<Stats> workerStats(k);
-  const std::uint32_t running = inParallel(k, [&](std::uint32_t s) {
-    Delaunay worker(workerOptions, *this, first[s]);
-    status[s] =
-        worker.insertStrip(strip[s].data(), static_cast<std::uint32_t>(strip[s].size()), ids);
-    used[s] = worker.usedSlots();
-    // A point right of the strip's box lies beyond one of its hull edges: a ghost triangle.
-    const double far = box[s].maxX + std::fabs(box[s].maxX) + 1;
-    const Hit h = worker.locate(far, box[s].minY, false);
-    if (h.kind == Hit::Kind::Outside) ghost[s] = h.edge / 3;
-    workerStats[s] = worker.stats;
-  });
-  for (const Status& s : status) {
-    if (s.ok()) continue;
-    if (s.code == StatusCode::InternalError) return s;
+  std::vector<StripRun> runs;
+  const std::uint32_t running = triangulateStrips(*this, strips, ids, runs);
+  for (const StripRun& run : runs) {
+    if (run.status.ok()) continue;
+    if (run.status.code == StatusCode::InternalError) return run.status;
     topo.clear();  // a strip of collinear points: one thread does it all
     return Status::success();
   }
-  for (std::vector<std::uint32_t>& s : strip) std::vector<std::uint32_t>().swap(s);
-  for (const std::int32_t g : ghost)
-    if (g < 0) return broken("no ghost triangle found right of a strip");
+  for (std::vector<std::uint32_t>& s : strips.order) std::vector<std::uint32_t>().swap(s);
+  for (const StripRun& run : runs)
+    if (run.ghost < 0) return broken("no ghost triangle found right of a strip");
   handled = true;
-  for (const Stats& w : workerStats) {
-    stats.inserted += w.inserted;
-    stats.duplicates += w.duplicates;
-    stats.walkSteps += w.walkSteps;
-    stats.locates += w.locates;
-    stats.flips += w.flips;
-    stats.walkFallbacks += w.walkFallbacks;
+  for (const StripRun& run : runs) {
+    stats.inserted += run.stats.inserted;
+    stats.duplicates += run.stats.duplicates;
+    stats.walkSteps += run.stats.walkSteps;
+    stats.locates += run.stats.locates;
+    stats.flips += run.stats.flips;
+    stats.walkFallbacks += run.stats.walkFallbacks;
   }
-
-  std::vector<std::uint8_t> state(static_cast<std::size_t>(first[k]));
-  std::vector<std::uint8_t> seen(count, 0);
-  std::vector<StripSeam> seams(k);
-  inParallel(k, [&](std::uint32_t s) {
-    findSeam(*this, ghost[s], first[s], used[s], first[s + 1], slab(s).first, slab(s).second, state,
-             seen, seams[s]);
-  });
-  std::vector<std::uint8_t>().swap(seen);
-  std::vector<std::uint8_t>().swap(state);
-  const std::uint64_t vertices = stats.inserted;
-  const auto slots = static_cast<std::int32_t>(2 * vertices - 2);
-  const Status joined = joinStrips(*this, options_, seams, slots, stats);
+  const Status joined = joinAlongSeams(*this, strips, runs, count, stats);
   if (!joined.ok()) return joined;
   built_ = true;
   stats.threads = running;
@@ -432,8 +522,8 @@ Status Delaunay::insertInStrips(std::uint32_t count, std::uint32_t* ids, bool& h
   } else {
     for (std::uint32_t i = 0; i < count; ++i) ids[i] = i;
   }
-  Bounds all = box[0];
-  for (const Bounds& b : box) {
+  Bounds all = strips.box[0];
+  for (const Bounds& b : strips.box) {
     all.minX = std::min(all.minX, b.minX);
     all.minY = std::min(all.minY, b.minY);
     all.maxX = std::max(all.maxX, b.maxX);

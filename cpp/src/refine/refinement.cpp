@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "exact/power_of_two.h"
@@ -228,9 +229,21 @@ void Refiner::weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], dou
   }
 }
 
-Outcome Refiner::splitTriangle(const BadTriangle& bad) {
+// Where a bad triangle is split: the circumcentre, or Ungor's off-centre when the triangle is
+// skinny and the off-centre is nearer to its shortest edge p q. Both lie on that edge's
+// bisector:
+//
+//              r
+//             / \        c  circumcentre
+//            /   \       o  off-centre, where p q subtends minAngle (a little nearer)
+//           /  c  \      m  the middle of p q
+//          /   o   \     (o replaces c when it is nearer to m)
+//         p----m----q
+//
+// False when the triangle is left as it is: skinny between two subsegments at a small input
+// angle, or a candidate out of range.
+inline bool Refiner::candidate(const BadTriangle& bad, double& cx, double& cy) const {
   const bool skinny = bad.skinny;
-  const std::int32_t t = bad.slot;
   // The shortest edge p -> q, the third corner r on its left.
   std::uint32_t corner[3] = {bad.a, bad.b, bad.c};
   int k0 = 0;
@@ -243,15 +256,12 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   const std::uint32_t p = corner[k0], q = corner[(k0 + 1) % 3], r = corner[(k0 + 2) % 3];
   // Most triangles have an end of their shortest edge on no subsegment. One too large (and
   // not skinny) is split wherever it lies: an input angle is no reason to leave it.
-  if (skinny && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q))
-    return Outcome::Skipped;
+  if (skinny && onSubsegment(p) && onSubsegment(q) && smallInputAngle(p, q)) return false;
   const double qx = x(q) - x(p), qy = y(q) - y(p), rx = x(r) - x(p), ry = y(r) - y(p);
   const double twice = 2 * (qx * ry - qy * rx);
   const double q2 = qx * qx + qy * qy, r2 = rx * rx + ry * ry;
-  double cx = (ry * q2 - qy * r2) / twice, cy = (qx * r2 - rx * q2) / twice;  // from p
+  cx = (ry * q2 - qy * r2) / twice, cy = (qx * r2 - rx * q2) / twice;  // from p
   if (skinny && offCentre_ > 0) {
-    // The off-centre lies on the shortest edge's bisector, like the circumcentre; use it
-    // when it is nearer to the edge.
     const double mx = 0.5 * qx, my = 0.5 * qy;
     const double ox = mx - offCentre_ * qy, oy = my + offCentre_ * qx;
     if ((ox - mx) * (ox - mx) + (oy - my) * (oy - my) <
@@ -262,11 +272,14 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   }
   cx += x(p);
   cy += y(p);
-  if (!std::isfinite(cx) || !std::isfinite(cy)) return Outcome::Skipped;
-  // Walk towards the candidate; a subsegment in the way is split if the candidate
-  // encroaches it (then the triangle is tried again), else the triangle is left.
-  std::int32_t cur = t;
-  bool onEdge = false;  // of cur, where the walk ends
+  return std::isfinite(cx) && std::isfinite(cy);
+}
+
+// Walks from slot cur towards the candidate; a subsegment in the way is split if the candidate
+// encroaches it (the triangle is then tried again), else the triangle is left. Nothing when
+// the walk arrives: cur then holds the candidate, on one of its edges if onEdge.
+inline std::optional<Outcome> Refiner::walkToCandidate(double cx, double cy, std::int32_t& cur,
+                                                       bool& onEdge) {
   // Each step starts one edge further round (step % 3), so that the walk cannot cycle.
   for (int step = 0, first = 0;; ++step, first = first == 2 ? 0 : first + 1) {
     if (step > 100000) return Outcome::Skipped;
@@ -283,7 +296,7 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
       onEdge |= side == Sign::Zero;
       k = next;
     }
-    if (exit < 0) break;
+    if (exit < 0) return std::nullopt;
     if (isSubsegment(exit)) {
       const std::uint32_t a = topo_.tri[exit], b = topo_.tri[nextEdge(exit)];
       if (!encroachedBy(x(a), y(a), x(b), y(b), cx, cy)) return Outcome::Skipped;
@@ -294,11 +307,14 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
     cur = topo_.adj[exit] / 3;
     if (topo_.isGhost(cur)) return Outcome::Skipped;
   }
-  // The cavity: the triangles whose circumcircles hold the candidate, reached without
-  // crossing subsegments. A subsegment on its border that the candidate encroaches is split
-  // instead.
-  // Its border's edges are kept for the insertion. Whether a slot is in it is looked up in
-  // the list while that is short (a few triangles, in the cache), in stamps beyond.
+}
+
+// The cavity (into cavity_, its border's edges into boundary_ for the insertion): the
+// triangles whose circumcircles hold the candidate, reached from cur without crossing
+// subsegments. A subsegment on its border that the candidate encroaches is queued to be split
+// instead; true when one was. Whether a slot is in the cavity is looked up in the list while
+// that is short (a few triangles, in the cache), in stamps beyond.
+inline bool Refiner::findCavity(std::int32_t cur, double cx, double cy) {
   cavity_.assign(1, cur);
   boundary_.clear();
   bool stamping = false;
@@ -350,25 +366,34 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
       }
     }
   }
-  if (subsegments_.size() > before) return Outcome::Retry;
+  return subsegments_.size() > before;
+}
+
+// The candidate as a new vertex, its cavity found from slot cur. Strictly inside cur, the
+// cavity's border joined to the point is its insertion; on an edge, or where the border does
+// not make a star, the point is located and inserted with flips (which repeat the cavity's
+// in-circle tests).
+inline Outcome Refiner::insertCandidate(std::int32_t cur, bool onEdge, double cx, double cy) {
   if (capReached()) {
     capped_ = true;
     return Outcome::Done;
   }
   const std::uint32_t v = newVertex(cx, cy);
-  // Strictly inside cur, the cavity's border joined to the point is its insertion; flips
-  // (below) are for the rest, and would repeat the cavity's in-circle tests.
-  if (!onEdge && orderStarBoundary(topo_, d_.xy, cavity_.size(), cx, cy, boundary_)) {
-    std::uint32_t parent[3] = {topo_.tri[3 * cur], topo_.tri[3 * cur + 1], topo_.tri[3 * cur + 2]};
-    double weight[3];
-    weightsInFace(parent, weight, cx, cy);
-    // The cavity is one region, joined across unconstrained edges: one winding for it all.
-    const std::int32_t winding = winding_[cur];
-    const std::int32_t from = d_.fillStar(v, cavity_, boundary_);
-    record(v, parent[0], parent[1], parent[2], weight[0], weight[1], weight[2]);
-    afterInsert(from, winding);
-    return Outcome::Done;
-  }
+  if (onEdge || !orderStarBoundary(topo_, d_.xy, cavity_.size(), cx, cy, boundary_))
+    return insertWithFlips(cur, v, cx, cy);
+  std::uint32_t parent[3] = {topo_.tri[3 * cur], topo_.tri[3 * cur + 1], topo_.tri[3 * cur + 2]};
+  double weight[3];
+  weightsInFace(parent, weight, cx, cy);
+  // The cavity is one region, joined across unconstrained edges: one winding for it all.
+  const std::int32_t winding = winding_[cur];
+  const std::int32_t from = d_.fillStar(v, cavity_, boundary_);
+  record(v, parent[0], parent[1], parent[2], weight[0], weight[1], weight[2]);
+  afterInsert(from, winding);
+  return Outcome::Done;
+}
+
+// Vertex v at (cx, cy), located from slot cur and inserted by the Delaunay kernel.
+Outcome Refiner::insertWithFlips(std::int32_t cur, std::uint32_t v, double cx, double cy) {
   d_.setLastTriangle(cur);
   const Hit h = d_.locate(cx, cy, false);
   if (h.kind != Hit::Kind::Face && h.kind != Hit::Kind::Edge) {
@@ -400,6 +425,16 @@ Outcome Refiner::splitTriangle(const BadTriangle& bad) {
   while (topo_.tri[from] != v) ++from;
   afterInsert(from);
   return Outcome::Done;
+}
+
+Outcome Refiner::splitTriangle(const BadTriangle& bad) {
+  double cx = 0, cy = 0;
+  if (!candidate(bad, cx, cy)) return Outcome::Skipped;
+  std::int32_t cur = bad.slot;
+  bool onEdge = false;
+  if (const std::optional<Outcome> stopped = walkToCandidate(cx, cy, cur, onEdge)) return *stopped;
+  if (findCavity(cur, cx, cy)) return Outcome::Retry;
+  return insertCandidate(cur, onEdge, cx, cy);
 }
 
 Refiner::Step Refiner::refineStep(std::vector<BadTriangle>& retry,
@@ -463,8 +498,7 @@ Status Refiner::run() {
     hull_.push_back({x(a), y(a), x(b), y(b)});
   }
   // The scan and the loop's steps in chunks (chunks.h): run() is called once, and with both
-  // inlined it was 18 KB of wasm that a first call ran in its baseline code throughout
-  // (bench/EXPERIMENTS.md, first call 21).
+  // inlined a first call ran it in baseline code throughout (bench/EXPERIMENTS.md, F21).
   forChunks(
       0, static_cast<std::size_t>(topo_.slotCount()), [&](std::size_t begin, std::size_t end) {
         for (auto t = static_cast<std::int32_t>(begin); t < static_cast<std::int32_t>(end); ++t) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -49,13 +50,11 @@ struct BadTriangle {
 
 // Bad triangles in buckets. First those with a corner on a subsegment, worst angle first
 // (buckets of sin^2 of the smallest angle, then those bad for their area alone): near small
-// input angles that is the order that ends. Then the rest, shortest shortest side first, in
-// buckets of half powers of two of its length, as Triangle orders them all: it places fewer
-// Steiner points (20,000 uniform points at 30 degrees: 7.6% fewer than worst angle first).
-// Triangle's order everywhere ran away on Natural Earth at 25 to 30 degrees (bench/
-// EXPERIMENTS.md, Refinement 6). The last queued comes first within a bucket, which keeps
-// to the neighbourhood just refined. A heap of them all spent most of its time missing the
-// cache.
+// input angles that is the order that ends. Then the rest, shortest side first, in buckets
+// of half powers of two of its length, as Triangle orders them all: it places fewer Steiner
+// points than worst angle first (bench/EXPERIMENTS.md, R7), but everywhere it ran away on
+// country borders (R6). The last queued comes first within a bucket, which keeps to the
+// neighbourhood just refined. A heap of them all spent most of its time missing the cache.
 class BadQueue {
  public:
   static constexpr int kAngleBuckets = 2048, kLengthBuckets = 4096;
@@ -89,7 +88,7 @@ class BadQueue {
     size_ = 0;
   }
   // The first bucket that is not empty, found in the bits of the occupied ones: walking the
-  // empty buckets one by one was 8% of refinement on US counties at 30 degrees.
+  // empty buckets one by one cost refinement dearly (bench/EXPERIMENTS.md, R18).
   BadTriangle pop() {
     std::size_t word = first_ / 64;
     std::uint64_t bits = occupied_[word] & (~std::uint64_t{0} << (first_ % 64));
@@ -191,7 +190,7 @@ class Refiner {
     if (encroached(e)) queueSubsegment(e, false);
   }
   // Of a real triangle. Inlined: in wasm, a returned Shape goes through the stack in memory
-  // (6.8% of refinement's time on 20k uniform points in checkTriangle around the call).
+  // (bench/EXPERIMENTS.md, R15).
   GEOCDT_ALWAYS_INLINE Shape shape(std::int32_t t) const;
   bool holds(const BadTriangle& b) const {  // whether b's slot still holds it
     const std::uint32_t* corner = &topo_.tri[3 * b.slot];
@@ -210,8 +209,36 @@ class Refiner {
   void noteCorners(std::int32_t t);
   void checkAround(std::int32_t t);  // the triangle and its subsegments
   void restoreDelaunay(std::vector<std::int32_t>& stack);
+  // A subsegment split near its middle (or on a shell), in these steps.
   Outcome splitSubsegment(std::int32_t e, bool forced);
+  // The subsegment e being split: its ends a -> b, the apexes c (of e's triangle) and dv (of
+  // its twin's), the segment s it lies on with its id (segmentOf), and what that says.
+  struct SplitSite {
+    std::int32_t e;
+    std::uint32_t a, b, c, dv;
+    InputSegment s;
+    std::uint64_t id;
+    const EdgeSource* sources = nullptr;
+    bool input;   // s is an input segment (else a hull edge)
+    bool hull;    // e is on the hull
+    bool shared;  // other input segments' chains hold e too
+  };
+  SplitSite splitSite(std::int32_t e) const;
+  void splitPoint(const SplitSite& site, double& px, double& py) const;
+  bool strictlyBetween(const SplitSite& site, const InputSegment& on, double qx, double qy) const;
+  bool fitsOthers(const SplitSite& site, double qx, double qy) const;
+  bool fitsAt(const SplitSite& site, double qx, double qy) const;
+  bool fitsOnHull(const SplitSite& site, double& px, double& py) const;
+  void insertSplitPoint(const SplitSite& site, double px, double py);
+  // A bad triangle split at its candidate (circumcentre or off-centre), in these steps; each
+  // runs once a split, inlined as one function was (its calls cost 0.4% of refinement).
   Outcome splitTriangle(const BadTriangle& bad);
+  GEOCDT_ALWAYS_INLINE bool candidate(const BadTriangle& bad, double& cx, double& cy) const;
+  GEOCDT_ALWAYS_INLINE std::optional<Outcome> walkToCandidate(double cx, double cy,
+                                                              std::int32_t& cur, bool& onEdge);
+  GEOCDT_ALWAYS_INLINE bool findCavity(std::int32_t cur, double cx, double cy);
+  GEOCDT_ALWAYS_INLINE Outcome insertCandidate(std::int32_t cur, bool onEdge, double cx, double cy);
+  Outcome insertWithFlips(std::int32_t cur, std::uint32_t v, double cx, double cy);
   // One step of run()'s loop: a subsegment or a bad triangle split (or found gone); and up
   // to kChunk of them in a call of their own (chunks.h).
   enum class Step { Go, Stop, Failed };

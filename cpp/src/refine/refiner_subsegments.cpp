@@ -106,22 +106,31 @@ bool Refiner::smallInputAngle(std::uint32_t p, std::uint32_t q) const {
   return false;
 }
 
-Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
-  if (topo_.isGhost(e / 3)) e = topo_.adj[e];
-  const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
-  const std::uint32_t c = topo_.tri[prevEdge(e)], dv = topo_.tri[prevEdge(topo_.adj[e])];
-  if (!forced && !encroached(e)) return Outcome::Done;
-  // The point is placed on the segment, from the segment's own ends, so that it stays within
-  // the chains' bound of it however often it is split.
-  std::uint64_t id;
-  const EdgeSource* sources = nullptr;
-  const InputSegment s = segmentOf(e, id, &sources);
-  const bool input = id < (std::uint64_t{1} << 32);
+Refiner::SplitSite Refiner::splitSite(std::int32_t e) const {
+  SplitSite site;
+  site.e = e;
+  site.a = topo_.tri[e];
+  site.b = topo_.tri[nextEdge(e)];
+  site.c = topo_.tri[prevEdge(e)];
+  site.dv = topo_.tri[prevEdge(topo_.adj[e])];
+  site.s = segmentOf(e, site.id, &site.sources);
+  site.input = site.id < (std::uint64_t{1} << 32);
+  site.hull = topo_.isGhost(topo_.adj[e] / 3);
+  // A segment with s's ends (a border two rings share) answers as s does: skipped.
+  site.shared = site.input && site.sources && site.sources->extra >= 0;
+  return site;
+}
+
+// The point is placed on the segment, from the segment's own ends, so that it stays within
+// the chains' bound of it however often it is split: halfway, or on concentric shells next
+// to an input vertex where constraints meet (a power of two from it), so that the splits on
+// its segments line up instead of chasing each other.
+void Refiner::splitPoint(const SplitSite& site, double& px, double& py) const {
+  const std::uint32_t a = site.a, b = site.b;
+  const InputSegment& s = site.s;
   const double dx = s.bx - s.ax, dy = s.by - s.ay, length2 = dx * dx + dy * dy;
   const double ta = ((x(a) - s.ax) * dx + (y(a) - s.ay) * dy) / length2;
   const double tb = ((x(b) - s.ax) * dx + (y(b) - s.ay) * dy) / length2;
-  // Concentric shells: next to an input vertex where constraints meet, split at a power of
-  // two from it, so that the splits on its segments line up instead of chasing each other.
   const bool acuteA = !(a < steinerFlag_.size() && steinerFlag_[a]) && constrainedDegree(a) > 1;
   const bool acuteB = !(b < steinerFlag_.size() && steinerFlag_[b]) && constrainedDegree(b) > 1;
   double f = 0.5;
@@ -135,74 +144,81 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
     f = acuteA ? n / length : 1 - n / length;
   }
   const double t = ta + (tb - ta) * f;
-  double px = (1 - t) * s.ax + t * s.bx, py = (1 - t) * s.ay + t * s.by;
-  const bool hull = topo_.isGhost(topo_.adj[e] / 3);
-  const auto strictlyBetween = [&](const InputSegment& on, double qx, double qy) {
-    const int along = signAlong(on, x(a), y(a), x(b), y(b));
-    return along != 0 && signAlong(on, x(a), y(a), qx, qy) == along &&
-           signAlong(on, qx, qy, x(b), y(b)) == along;
-  };
-  // The other input segments whose chains hold the edge (segments that overlap, or pass
-  // within their bound of the same vertices): the point goes into their chains too. Placed
-  // from s's ends, it can fall behind an end along one of them where s and it part at an end
-  // ulps away (a subnormal y from a segment 1e67 long).
-  // A segment with s's ends (a border two rings share) answers as s does: skipped.
-  const bool shared = input && sources && sources->extra >= 0;
-  const auto fitsOthers = [&](double qx, double qy) {
-    bool fit = true;
-    d_.constraints.forEachSegment(*sources, [&](std::uint32_t other) {
-      if (!fit || other == id) return;
-      const InputSegment o = d_.constraints.geometry(other, d_.xy);
-      const bool same = (o.ax == s.ax && o.ay == s.ay && o.bx == s.bx && o.by == s.by) ||
-                        (o.ax == s.bx && o.ay == s.by && o.bx == s.ax && o.by == s.ay);
-      if (!same)
-        fit = strictlyBetween(o, qx, qy) && withinDistance(o, qx, qy, chainBoundExponent(o));
-    });
-    return fit;
-  };
-  // The four triangles around the point must be counter-clockwise, and a constrained
-  // edge's point within the bound of its segments, strictly between the ends along each.
-  const auto fitsAt = [&](double qx, double qy) {
-    if (!ccw(c, a, qx, qy) || !ccw(b, c, qx, qy) || !strictlyBetween(s, qx, qy)) return false;
-    if (!hull && !(ccw(a, dv, qx, qy) && ccw(dv, b, qx, qy))) return false;
-    if (!input) return true;
-    return withinDistance(s, qx, qy, chainBoundExponent(s)) && (!shared || fitsOthers(qx, qy));
-  };
-  bool fits = fitsAt(px, py);
-  // Left whole where another input segment runs along it ulps away (overlapping_segments.h).
-  const unsigned splitEnds =
-      (segmentAt(a) != kNoSegment ? 1u : 0u) | (segmentAt(b) != kNoSegment ? 2u : 0u);
-  if (fits && input && runsAlongAnotherSegment(d_, vertexEdge_, a, b, id, s, splitEnds))
-    fits = false;
-  if (hull) {
-    // On the hull the point must neither fall inside (the hull would turn reflex) nor
-    // beyond the hull's next edges (the hull would wrap round it, and the vertices it wraps
-    // would encroach the new hull edges ulps away from them): try it and its neighbouring
-    // doubles.
-    const std::int32_t f = topo_.adj[e];
-    const std::uint32_t before = topo_.tri[prevEdge(topo_.adj[nextEdge(f)])];
-    const std::uint32_t after = topo_.tri[prevEdge(topo_.adj[prevEdge(f)])];
-    const double x0 = px, y0 = py;
-    fits = false;
-    for (int k = 0; k < 9 && !fits; ++k) {
-      px = k % 3 == 0 ? x0 : std::nextafter(x0, k % 3 == 1 ? -INFINITY : INFINITY);
-      py = k / 3 == 0 ? y0 : std::nextafter(y0, k / 3 == 1 ? -INFINITY : INFINITY);
-      fits =
-          !ccw(a, b, px, py) && !ccw(a, before, px, py) && !ccw(after, b, px, py) && fitsAt(px, py);
-    }
+  px = (1 - t) * s.ax + t * s.bx;
+  py = (1 - t) * s.ay + t * s.by;
+}
+
+bool Refiner::strictlyBetween(const SplitSite& site, const InputSegment& on, double qx,
+                              double qy) const {
+  const std::uint32_t a = site.a, b = site.b;
+  const int along = signAlong(on, x(a), y(a), x(b), y(b));
+  return along != 0 && signAlong(on, x(a), y(a), qx, qy) == along &&
+         signAlong(on, qx, qy, x(b), y(b)) == along;
+}
+
+// The other input segments whose chains hold the edge (segments that overlap, or pass within
+// their bound of the same vertices): the point goes into their chains too. Placed from s's
+// ends, it can fall behind an end along one of them where s and it part at an end ulps away
+// (a subnormal y from a segment 1e67 long).
+bool Refiner::fitsOthers(const SplitSite& site, double qx, double qy) const {
+  const InputSegment& s = site.s;
+  bool fit = true;
+  d_.constraints.forEachSegment(*site.sources, [&](std::uint32_t other) {
+    if (!fit || other == site.id) return;
+    const InputSegment o = d_.constraints.geometry(other, d_.xy);
+    const bool same = (o.ax == s.ax && o.ay == s.ay && o.bx == s.bx && o.by == s.by) ||
+                      (o.ax == s.bx && o.ay == s.by && o.bx == s.ax && o.by == s.ay);
+    if (!same)
+      fit = strictlyBetween(site, o, qx, qy) && withinDistance(o, qx, qy, chainBoundExponent(o));
+  });
+  return fit;
+}
+
+// The four triangles around the point must be counter-clockwise, and a constrained edge's
+// point within the bound of its segments, strictly between the ends along each.
+//
+//          c
+//        /   \         e runs from a to b; c and dv are the apexes of its two
+//       a--p--b        triangles (no dv on the hull); p must see c a, b c, a dv
+//        \   /         and dv b on its left.
+//          dv
+bool Refiner::fitsAt(const SplitSite& site, double qx, double qy) const {
+  const std::uint32_t a = site.a, b = site.b, c = site.c, dv = site.dv;
+  if (!ccw(c, a, qx, qy) || !ccw(b, c, qx, qy) || !strictlyBetween(site, site.s, qx, qy))
+    return false;
+  if (!site.hull && !(ccw(a, dv, qx, qy) && ccw(dv, b, qx, qy))) return false;
+  if (!site.input) return true;
+  return withinDistance(site.s, qx, qy, chainBoundExponent(site.s)) &&
+         (!site.shared || fitsOthers(site, qx, qy));
+}
+
+// On the hull the point must neither fall inside (the hull would turn reflex) nor beyond the
+// hull's next edges (the hull would wrap round it, and the vertices it wraps would encroach
+// the new hull edges ulps away from them): it and its neighbouring doubles are tried, and
+// (px, py) is left at the last one tried.
+bool Refiner::fitsOnHull(const SplitSite& site, double& px, double& py) const {
+  const std::uint32_t a = site.a, b = site.b;
+  const std::int32_t f = topo_.adj[site.e];
+  const std::uint32_t before = topo_.tri[prevEdge(topo_.adj[nextEdge(f)])];
+  const std::uint32_t after = topo_.tri[prevEdge(topo_.adj[prevEdge(f)])];
+  const double x0 = px, y0 = py;
+  bool fits = false;
+  for (int k = 0; k < 9 && !fits; ++k) {
+    px = k % 3 == 0 ? x0 : std::nextafter(x0, k % 3 == 1 ? -INFINITY : INFINITY);
+    py = k / 3 == 0 ? y0 : std::nextafter(y0, k / 3 == 1 ? -INFINITY : INFINITY);
+    fits = !ccw(a, b, px, py) && !ccw(a, before, px, py) && !ccw(after, b, px, py) &&
+           fitsAt(site, px, py);
   }
-  if (!fits) {
-    unsplittable_.insert(ConstraintStore::key(a, b));
-    return Outcome::Skipped;
-  }
-  if (capReached()) {
-    capped_ = true;
-    return Outcome::Done;
-  }
+  return fits;
+}
+
+// The new vertex p splits the edge, its constraint and its hull entry in two.
+void Refiner::insertSplitPoint(const SplitSite& site, double px, double py) {
+  const std::uint32_t a = site.a, b = site.b;
   const std::uint32_t p = newVertex(px, py);
   markOnSubsegment(p);
-  if (input) noteSegment(p, static_cast<std::uint32_t>(id));
-  if (topo_.fixed[e]) d_.constraints.split(a, b, p);
+  if (site.input) noteSegment(p, static_cast<std::uint32_t>(site.id));
+  if (topo_.fixed[site.e]) d_.constraints.split(a, b, p);
   const auto hullEdge = hullOf_.find(ConstraintStore::key(a, b));
   if (hullEdge != hullOf_.end()) {
     const std::uint32_t original = hullEdge->second;
@@ -210,7 +226,7 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
     hullOf_[ConstraintStore::key(a, p)] = original;
     hullOf_[ConstraintStore::key(p, b)] = original;
   }
-  const std::int32_t spoke = d_.splitEdge(e, p);
+  const std::int32_t spoke = d_.splitEdge(site.e, p);
   // The weight from where the point landed, projected on the edge it split: accurate to the
   // edge's length, where the segment's parameters are accurate to the segment's.
   const double w = projection(x(a), y(a), x(b), y(b), px, py);
@@ -225,6 +241,31 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
     if (h == spoke) break;
   }
   restoreDelaunay(stack);
+}
+
+Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
+  if (topo_.isGhost(e / 3)) e = topo_.adj[e];
+  if (!forced && !encroached(e)) return Outcome::Done;
+  const SplitSite site = splitSite(e);
+  double px = 0, py = 0;
+  splitPoint(site, px, py);
+  bool fits = fitsAt(site, px, py);
+  // Left whole where another input segment runs along it ulps away (overlapping_segments.h).
+  const unsigned splitEnds =
+      (segmentAt(site.a) != kNoSegment ? 1u : 0u) | (segmentAt(site.b) != kNoSegment ? 2u : 0u);
+  if (fits && site.input &&
+      runsAlongAnotherSegment(d_, vertexEdge_, site.a, site.b, site.id, site.s, splitEnds))
+    fits = false;
+  if (site.hull) fits = fitsOnHull(site, px, py);
+  if (!fits) {
+    unsplittable_.insert(ConstraintStore::key(site.a, site.b));
+    return Outcome::Skipped;
+  }
+  if (capReached()) {
+    capped_ = true;
+    return Outcome::Done;
+  }
+  insertSplitPoint(site, px, py);
   return Outcome::Done;
 }
 

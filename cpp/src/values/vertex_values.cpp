@@ -65,14 +65,10 @@ void VertexValues::derive(std::uint32_t v, const std::uint32_t* parents, const d
   explicitOffsets_.push_back(static_cast<std::uint32_t>(explicitParents_.size()));
 }
 
-const std::vector<double>& VertexValues::update(const Delaunay& d, Mesh* mesh) {
-  if (!active_ || (fresh_ && mesh == nullptr)) return values_;
-  const std::uint32_t n = d.vertexCount();
-  grow(n);
-  const std::size_t k = perPoint_;
+// (vertex, input segment) for every derived vertex on a constrained edge, sorted.
+std::vector<std::uint64_t> VertexValues::segmentsThroughDerived(const Delaunay& d) const {
   const Topology& topo = d.topo;
   const ConstraintStore& store = d.constraints;
-  // (vertex, input segment) for every derived vertex on a constrained edge.
   std::vector<std::uint64_t> pairs;
   for (std::size_t e = 0; e < topo.tri.size(); ++e) {
     if (!topo.fixed[e]) continue;
@@ -85,25 +81,82 @@ const std::vector<double>& VertexValues::update(const Delaunay& d, Mesh* mesh) {
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
 
-  std::vector<std::uint32_t> vertices, offsets{0}, parents;
-  std::vector<double> weights;
-  std::vector<double> along;  // each segment's values at the vertex, k per segment
+// Vertex v's parents along the input segments through it, pairs[next ..) while they are v's
+// (next moves past them): each segment's ends, weighted by v's projection on it, the segments
+// averaged. False when no segment has ends with values to give.
+inline bool VertexValues::deriveAlongSegments(const Delaunay& d, std::uint32_t v,
+                                              const std::vector<std::uint64_t>& pairs,
+                                              std::size_t& next, Derivations& out) {
+  const std::size_t k = perPoint_;
   const double* p = d.xy.data();
+  const std::size_t from = out.parents.size();
+  std::vector<double>& along = out.along;
+  along.clear();
+  double largest = 0;
+  for (; next < pairs.size() && (pairs[next] >> 32) == v; ++next) {
+    const std::uint32_t start =
+        d.constraints.segmentStarts[static_cast<std::uint32_t>(pairs[next])];
+    if (start == kNoSegment || start + 1 >= polylinePointVertex_.size()) continue;
+    const std::uint32_t s0 = polylinePointVertex_[start], s1 = polylinePointVertex_[start + 1];
+    if (s0 == kGhost || s1 == kGhost) continue;
+    // The vertex's projection on the segment between its ends (a crossing moved by rounding
+    // still gets values between theirs).
+    const double dx = p[2 * s1] - p[2 * s0], dy = p[2 * s1 + 1] - p[2 * s0 + 1];
+    const double length2 = dx * dx + dy * dy;
+    double t = length2 > 0
+                   ? ((p[2 * v] - p[2 * s0]) * dx + (p[2 * v + 1] - p[2 * s0 + 1]) * dy) / length2
+                   : 0;
+    t = std::min(1.0, std::max(0.0, t));
+    out.parents.push_back(s0);
+    out.weights.push_back(1 - t);
+    out.parents.push_back(s1);
+    out.weights.push_back(t);
+    for (std::size_t j = 0; j < k; ++j) {
+      const double f0 = values_[s0 * k + j], f1 = values_[s1 * k + j];
+      along.push_back(f0 + t * (f1 - f0));
+      largest = std::max({largest, std::fabs(f0), std::fabs(f1)});
+    }
+  }
+  const std::size_t segments = (out.parents.size() - from) / 2;
+  if (segments == 0) return false;
+  for (std::size_t q = from; q < out.parents.size(); ++q)
+    out.weights[q] /= static_cast<double>(segments);
+  bool disagree = false;
+  for (std::size_t j = 0; j < k && !disagree; ++j)
+    for (std::size_t s = 1; s < segments && !disagree; ++s)
+      disagree = std::fabs(along[s * k + j] - along[j]) > 1e-9 * largest;
+  disagreements_ += disagree;
+  return true;
+}
+
+// Vertex v's values: its parents' from out.parents[from ..), weighted.
+inline void VertexValues::evaluate(std::uint32_t v, const Derivations& out, std::size_t from) {
+  const std::size_t k = perPoint_;
+  double* to = values_.data() + v * k;
+  for (std::size_t j = 0; j < k; ++j) to[j] = 0;
+  for (std::size_t q = from; q < out.parents.size(); ++q)
+    for (std::size_t j = 0; j < k; ++j) to[j] += out.weights[q] * values_[out.parents[q] * k + j];
+}
+
+// The derived vertices in vertex order, merged from two sorted lists: the explicit
+// derivations (each vertex's last one winning, and overriding the constraints') and the
+// vertices on input segments.
+const std::vector<double>& VertexValues::update(const Delaunay& d, Mesh* mesh) {
+  if (!active_ || (fresh_ && mesh == nullptr)) return values_;
+  const std::uint32_t n = d.vertexCount();
+  grow(n);
+  const std::vector<std::uint64_t> pairs = segmentsThroughDerived(d);
+  Derivations out;
   disagreements_ = 0;
   std::size_t next = 0, nextExplicit = 0;
-  // Explicit derivations in vertex order, each vertex's last one winning.
   std::vector<std::uint32_t> order(explicitVertices_.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return explicitVertices_[a] < explicitVertices_[b];
   });
-  const auto evaluate = [&](std::uint32_t v, std::size_t from) {
-    double* to = values_.data() + v * k;
-    for (std::size_t j = 0; j < k; ++j) to[j] = 0;
-    for (std::size_t q = from; q < parents.size(); ++q)
-      for (std::size_t j = 0; j < k; ++j) to[j] += weights[q] * values_[parents[q] * k + j];
-  };
   for (;;) {
     const std::uint32_t a =
         next < pairs.size() ? static_cast<std::uint32_t>(pairs[next] >> 32) : kGhost;
@@ -111,7 +164,7 @@ const std::vector<double>& VertexValues::update(const Delaunay& d, Mesh* mesh) {
         nextExplicit < order.size() ? explicitVertices_[order[nextExplicit]] : kGhost;
     const std::uint32_t v = std::min(a, b);
     if (v == kGhost) break;
-    const std::size_t from = parents.size();
+    const std::size_t from = out.parents.size();
     if (b == v) {
       std::uint32_t i = order[nextExplicit];
       while (nextExplicit < order.size() && explicitVertices_[order[nextExplicit]] == v)
@@ -119,57 +172,23 @@ const std::vector<double>& VertexValues::update(const Delaunay& d, Mesh* mesh) {
       while (next < pairs.size() && (pairs[next] >> 32) == v) ++next;
       if (v >= n || given_[v]) continue;
       for (std::uint32_t q = explicitOffsets_[i]; q < explicitOffsets_[i + 1]; ++q) {
-        parents.push_back(explicitParents_[q]);
-        weights.push_back(explicitWeights_[q]);
+        out.parents.push_back(explicitParents_[q]);
+        out.weights.push_back(explicitWeights_[q]);
       }
-    } else {
-      along.clear();
-      double largest = 0;
-      for (; next < pairs.size() && (pairs[next] >> 32) == v; ++next) {
-        const std::uint32_t start = store.segmentStarts[static_cast<std::uint32_t>(pairs[next])];
-        if (start == kNoSegment || start + 1 >= polylinePointVertex_.size()) continue;
-        const std::uint32_t s0 = polylinePointVertex_[start], s1 = polylinePointVertex_[start + 1];
-        if (s0 == kGhost || s1 == kGhost) continue;
-        // The vertex's projection on the segment between its ends (a crossing moved by
-        // rounding still gets values between theirs).
-        const double dx = p[2 * s1] - p[2 * s0], dy = p[2 * s1 + 1] - p[2 * s0 + 1];
-        const double length2 = dx * dx + dy * dy;
-        double t =
-            length2 > 0
-                ? ((p[2 * v] - p[2 * s0]) * dx + (p[2 * v + 1] - p[2 * s0 + 1]) * dy) / length2
-                : 0;
-        t = std::min(1.0, std::max(0.0, t));
-        parents.push_back(s0);
-        weights.push_back(1 - t);
-        parents.push_back(s1);
-        weights.push_back(t);
-        for (std::size_t j = 0; j < k; ++j) {
-          const double f0 = values_[s0 * k + j], f1 = values_[s1 * k + j];
-          along.push_back(f0 + t * (f1 - f0));
-          largest = std::max({largest, std::fabs(f0), std::fabs(f1)});
-        }
-      }
-      const std::size_t segments = (parents.size() - from) / 2;
-      if (segments == 0) continue;
-      for (std::size_t q = from; q < parents.size(); ++q)
-        weights[q] /= static_cast<double>(segments);
-      bool disagree = false;
-      for (std::size_t j = 0; j < k && !disagree; ++j)
-        for (std::size_t s = 1; s < segments && !disagree; ++s)
-          disagree = std::fabs(along[s * k + j] - along[j]) > 1e-9 * largest;
-      disagreements_ += disagree;
+    } else if (!deriveAlongSegments(d, v, pairs, next, out)) {
+      continue;
     }
-    vertices.push_back(v);
-    offsets.push_back(static_cast<std::uint32_t>(parents.size()));
-    evaluate(v, from);
+    out.vertices.push_back(v);
+    out.offsets.push_back(static_cast<std::uint32_t>(out.parents.size()));
+    evaluate(v, out, from);
   }
   fresh_ = true;
   if (mesh != nullptr) {
     mesh->values = values_;
-    mesh->derivedVertices = std::move(vertices);
-    mesh->derivedOffsets = std::move(offsets);
-    mesh->derivedParents = std::move(parents);
-    mesh->derivedWeights = std::move(weights);
+    mesh->derivedVertices = std::move(out.vertices);
+    mesh->derivedOffsets = std::move(out.offsets);
+    mesh->derivedParents = std::move(out.parents);
+    mesh->derivedWeights = std::move(out.weights);
   }
   return values_;
 }

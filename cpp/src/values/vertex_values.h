@@ -1,6 +1,6 @@
 #pragma once
 // Values carried by the vertices: those the input points gave, and those derived for vertices
-// no input point became (constraint crossings; later, Steiner points), as weighted sums of
+// no input point became (constraint crossings, Steiner points), as weighted sums of
 // their parents' values.
 #include <cstddef>
 #include <cstdint>
@@ -46,6 +46,17 @@ class VertexValues {
 
  private:
   void grow(std::uint32_t vertexCount);
+  // update()'s derivations, in the Mesh's layout (derivedVertices, ...).
+  struct Derivations {
+    std::vector<std::uint32_t> vertices, offsets{0}, parents;
+    std::vector<double> weights;
+    std::vector<double> along;  // scratch: each segment's values at a vertex, k per segment
+  };
+  std::vector<std::uint64_t> segmentsThroughDerived(const Delaunay& d) const;
+  bool deriveAlongSegments(const Delaunay& d, std::uint32_t v,
+                           const std::vector<std::uint64_t>& pairs, std::size_t& next,
+                           Derivations& out);
+  void evaluate(std::uint32_t v, const Derivations& out, std::size_t from);
 
   std::uint32_t perPoint_;
   bool active_ = false;
