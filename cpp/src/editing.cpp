@@ -289,7 +289,9 @@ Status rebuildConstraints(State& state) {
 // Moves vertex id to (x, y), whose vertex `there` (or kGhost) nothing needs: the segments
 // ending at id are taken off, the vertices only they needed removed, id removed and inserted
 // at its new place, and the segments inserted again from it.
-Status moveVertex(State& state, std::uint32_t id, double x, double y, std::uint32_t there) {
+// near: a triangle at or near (x, y), for the insertion's walk (-1: none).
+Status moveVertex(State& state, std::uint32_t id, double x, double y, std::uint32_t there,
+                  std::int32_t near) {
   Delaunay& d = state.delaunay;
   state.changed();
   if (state.edit.snapped) {
@@ -301,7 +303,7 @@ Status moveVertex(State& state, std::uint32_t id, double x, double y, std::uint3
     Status s = d.removeVertex(id, out, true);
     d.xy[2 * static_cast<std::size_t>(id)] = x;
     d.xy[2 * static_cast<std::size_t>(id) + 1] = y;
-    if (s.ok()) s = d.reinsertVertex(id);
+    if (s.ok()) s = d.reinsertVertex(id, near);
     if (s.ok()) s = insertPendingSegments(d, state.options);  // (if it went collinear and back)
     state.values.invalidate();
     return s;
@@ -335,7 +337,7 @@ Status moveVertex(State& state, std::uint32_t id, double x, double y, std::uint3
   if (!s.ok()) return s;
   d.xy[2 * static_cast<std::size_t>(id)] = x;
   d.xy[2 * static_cast<std::size_t>(id) + 1] = y;
-  s = d.reinsertVertex(id);
+  s = d.reinsertVertex(id, near);
   if (!s.ok()) return s;
   for (const std::uint32_t segment : moved) editor.queueSegment(segment);
   return finishEdit(state, editor, ends, keep);
@@ -493,9 +495,11 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
   // A vertex there already: a crossing or Steiner point goes; a point or polyline vertex
   // stays, and the move is refused.
   std::uint32_t there = kGhost;
+  std::int32_t near = -1;
   if (d.built()) {
     const Hit h = d.locate(x, y, true);
     if (h.kind == Hit::Kind::Vertex) there = d.topo.tri[h.edge];
+    if (h.edge >= 0) near = h.edge / 3;
   } else {
     for (const std::uint32_t v : d.waiting())
       if (p[2 * static_cast<std::size_t>(v)] == x && p[2 * static_cast<std::size_t>(v) + 1] == y)
@@ -506,7 +510,7 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
                        " is that of vertex " + std::to_string(there) + " (" +
                        describe(edit, there) + ")",
                    id);
-  return catchOutOfMemory([&] { return moveVertex(state, id, x, y, there); },
+  return catchOutOfMemory([&] { return moveVertex(state, id, x, y, there, near); },
                           [&] { state.clear(); });
 }
 

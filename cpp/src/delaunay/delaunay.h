@@ -103,8 +103,9 @@ class Delaunay {
   Status removeVertex(std::uint32_t v, std::int32_t out = -1, bool moving = false,
                       bool freed = false);
   // Inserts vertex v again, at its coordinates in xy, keeping its id (a move). Its place must
-  // not hold another vertex.
-  Status reinsertVertex(std::uint32_t v);
+  // not hold another vertex. near: a triangle to walk from (a slot near the new place), or -1
+  // for the grid. The two slots the removal kept spare take the two new triangles.
+  Status reinsertVertex(std::uint32_t v, std::int32_t near = -1);
   // Into an empty triangulation: the vertices of from[0 .. 2 * count), each keeping its id,
   // but those removed (NaN), which stay removed (kept_ids.cpp). For rebuilds after edits.
   Status insertKeepingIds(const double* from, std::uint32_t count);
@@ -197,6 +198,9 @@ class Delaunay {
   void fillFan(std::uint32_t p, const std::uint32_t (&ring)[k], const std::int32_t (&outer)[k],
                const std::int32_t (&slot)[k]);
   std::int32_t addSlots(std::int32_t n);  // n zeroed slots at the end; returns the first
+  // The two slots an insertion splits into: those a move's removal kept spare, else two new
+  // ones at the end.
+  void takeSlotPair(std::int32_t& t1, std::int32_t& t2);
   void pushLawson(std::int32_t e) {
     if (lawsonTop_ == lawson_.size()) lawson_.resize(2 * lawson_.size() + 64);
     lawson_[lawsonTop_++] = e;
@@ -234,6 +238,9 @@ class Delaunay {
   std::vector<std::int32_t> lawson_;
   std::size_t lawsonTop_ = 0;
   StarRing ring_;  // a removal's scratch
+  // A move's removal keeps its two freed slots for the insertion that follows, instead of
+  // moving the last triangles into them: -1 when there are none.
+  std::int32_t spare_[2] = {-1, -1};
   Status error_;
 
   friend class VertexRemoval;

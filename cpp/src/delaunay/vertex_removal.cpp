@@ -30,7 +30,7 @@ class VertexRemoval {
   explicit VertexRemoval(Delaunay& d) : d_(d), topo_(d.topo), ring_(d.ring_) {}
 
   Status run(std::uint32_t v, std::int32_t out, bool moving, bool freed);
-  Status reinsert(std::uint32_t v);
+  Status reinsert(std::uint32_t v, std::int32_t near);
 
  private:
   Sign orient(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
@@ -48,7 +48,8 @@ class VertexRemoval {
   bool cutInterior(double x, double y);
   bool isEarAnyway(std::int32_t b) const;  // the full test, for a polygon that finds no ear
   void cutHull(std::int32_t g);
-  void freeSlots();
+  void freeSlots(std::size_t count);  // the star's `count` highest slots
+  bool isSpare(std::int32_t t) const { return t == d_.spare_[0] || t == d_.spare_[1]; }
   // Lawson flips of the new edges, which stay inside the polygon: its border edges are
   // Delaunay already (each outer triangle's circumcircle is empty), so only edges between two
   // new triangles are tested, before and after each flip.
@@ -74,7 +75,9 @@ Status Delaunay::removeVertex(std::uint32_t v, std::int32_t out, bool moving, bo
   return VertexRemoval(*this).run(v, out, moving, freed);
 }
 
-Status Delaunay::reinsertVertex(std::uint32_t v) { return VertexRemoval(*this).reinsert(v); }
+Status Delaunay::reinsertVertex(std::uint32_t v, std::int32_t near) {
+  return VertexRemoval(*this).reinsert(v, near);
+}
 
 void VertexRemoval::markRemoved(std::uint32_t v, bool moving) {
   d_.xy[2 * static_cast<std::size_t>(v)] = std::numeric_limits<double>::quiet_NaN();
@@ -115,7 +118,12 @@ Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving, bool f
   // The border's edges by their half-edges inside (in new triangles, which do not move).
   for (std::int32_t& e : ring_.border) e = topo_.adj[e];
   const std::int32_t kept = ring_.slot[0];
-  freeSlots();
+  if (moving) {  // the insertion that follows takes them
+    d_.spare_[0] = ring_.slot[ring_.slot.size() - 2];
+    d_.spare_[1] = ring_.slot.back();
+  } else {
+    freeSlots(2);
+  }
   if (freed) {  // what the freed edges hid may show across the border: flips may spread
     std::vector<std::int32_t>& stack = d_.flipStack();
     stack.insert(stack.end(), ring_.diagonals.begin(), ring_.diagonals.end());
@@ -125,7 +133,7 @@ Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving, bool f
     flipInside();
   }
   // The grid's cells around here may name the freed slots, which now hold triangles from
-  // elsewhere: they name a new triangle instead.
+  // elsewhere (or, spare, will at the moved vertex's new place): they name a new triangle.
   d_.grid_.cellAt(x, y) = kept;
   for (const std::uint32_t r : ring_.vertex)
     if (r != kGhost)
@@ -282,9 +290,9 @@ void VertexRemoval::flipInside() {
   }
 }
 
-void VertexRemoval::freeSlots() {
+void VertexRemoval::freeSlots(std::size_t count) {
   const std::size_t n = ring_.slot.size();
-  for (std::size_t k = n; k-- > n - 2;) {
+  for (std::size_t k = n; k-- > n - count;) {
     const std::int32_t t = ring_.slot[k];
     const std::int32_t moved = topo_.dropSlot(t);
     if (moved == t) continue;
@@ -318,10 +326,15 @@ void VertexRemoval::collapse(std::uint32_t v, bool moving) {
   markRemoved(v, moving);
 }
 
-Status VertexRemoval::reinsert(std::uint32_t v) {
+Status VertexRemoval::reinsert(std::uint32_t v, std::int32_t near) {
   if (d_.built_) {
-    d_.batchStart_ = true;  // from the grid
-    const std::uint32_t r = d_.insertVertex(v);
+    // The grid's cells may name a spare slot, whose contents are stale: with spares, the walk
+    // starts from near or else from the triangle the removal made last.
+    const bool nearValid = near >= 0 && near < topo_.slotCount() && !isSpare(near);
+    if (nearValid) d_.last_ = near;
+    const bool fromGrid = !nearValid && d_.spare_[0] < 0;
+    const Hit h = d_.locate(d_.xy[2 * std::size_t{v}], d_.xy[2 * std::size_t{v} + 1], fromGrid);
+    const std::uint32_t r = d_.insertLocated(h, v);
     if (r == kGhost) return d_.error_;
     if (r != v) return broken(v, "moved onto another vertex");
     return Status::success();
