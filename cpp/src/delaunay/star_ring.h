@@ -14,6 +14,7 @@ struct StarRing {
   std::vector<std::int32_t> carrier;  // per node: the half-edge beyond edge node -> next
   std::vector<std::uint8_t> fixed;    // per node: that edge's constrained flag
   std::vector<std::int32_t> next, prev;
+  std::vector<double> key;              // per node: its ear's priority (cutInterior)
   std::vector<std::int32_t> diagonals;  // new edges inside the polygon, for Lawson flips
   std::vector<std::int32_t> border;     // the half-edges outside the polygon's edges
   std::size_t used = 0;                 // slots filled so far

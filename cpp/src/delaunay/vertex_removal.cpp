@@ -7,7 +7,8 @@
 // its left (or on it) holds no other polygon vertex: the ear lies in the wedge from a to c
 // seen from x, beyond a-c, where no other vertex lies. Cutting it leaves the rest star-shaped
 // from x, and one such ear always exists (two ears that do not overlap cannot both hold x),
-// so an ear is found by orientation tests alone, no test against the other vertices.
+// so an ear is found by orientation tests alone, no test against the other vertices. Inside
+// the hull the ears go in Devillers' order (earKey), which makes the flips afterwards rare.
 //
 // On the hull, the ghost is one of the ring's vertices and x lies outside what is left. The
 // real vertices v1 .. vk of the ring are in angular order around x over at most half a turn:
@@ -45,6 +46,7 @@ class VertexRemoval {
   // Triangle (a, b, c) of nodes a, b = next[a], c = next[b] in the next free slot; b leaves
   // the polygon. Returns the slot.
   std::int32_t cut(std::int32_t a, std::int32_t b, std::int32_t c, std::uint32_t third);
+  double earKey(std::int32_t b, double x, double y) const;
   bool cutInterior(double x, double y);
   bool isEarAnyway(std::int32_t b) const;  // the full test, for a polygon that finds no ear
   void cutHull(std::int32_t g);
@@ -201,27 +203,65 @@ std::int32_t VertexRemoval::cut(std::int32_t a, std::int32_t b, std::int32_t c,
   return s;
 }
 
+// How well ear (prev[b], b, next[b]) suits a Delaunay triangulation of the hole, after
+// Devillers: the power of x with respect to the ear's circumcircle (the in-circle determinant
+// over the orientation, negated), in floating point. The ear with the largest power, x the
+// least deep inside its circle, is Delaunay: cut in that order, the new edges need no flips
+// but where rounding swapped two ears. A corner that is not convex in floating point gets
+// -infinity.
+double VertexRemoval::earKey(std::int32_t b, double x, double y) const {
+  const double* p = d_.xy.data();
+  const std::uint32_t va = at(ring_.prev[b]), vb = at(b), vc = at(ring_.next[b]);
+  const double ax = p[2 * va] - x, ay = p[2 * va + 1] - y;
+  const double bx = p[2 * vb] - x, by = p[2 * vb + 1] - y;
+  const double cx = p[2 * vc] - x, cy = p[2 * vc + 1] - y;
+  const double orientation = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  if (!(orientation > 0)) return -std::numeric_limits<double>::infinity();
+  const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const double inCircle =
+      a2 * (bx * cy - by * cx) + b2 * (cx * ay - cy * ax) + c2 * (ax * by - ay * bx);
+  return -inCircle / orientation;
+}
+
+// Ears by their keys, each checked exactly before it is cut (convex, x on the left of its new
+// edge a -> c, so empty: see the top of the file); one that fails drops out until its
+// neighbours change.
 bool VertexRemoval::cutInterior(double x, double y) {
   const double* p = d_.xy.data();
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
   auto count = static_cast<std::int32_t>(ring_.vertex.size());
-  std::int32_t a = 0, since = 0;
+  std::vector<double>& key = ring_.key;
+  key.resize(static_cast<std::size_t>(count));
+  for (std::int32_t b = 0; b < count; ++b) key[b] = earKey(b, x, y);
+  std::int32_t start = 0;
   while (count > 3) {
-    const std::int32_t b = ring_.next[a], c = ring_.next[b];
-    const std::uint32_t va = at(a), vc = at(c);
-    const bool ear =
-        orient(va, at(b), vc) == Sign::Positive &&
-        orient2d(p[2 * va], p[2 * va + 1], p[2 * vc], p[2 * vc + 1], x, y) != Sign::Negative;
-    if (ear || (since > count && isEarAnyway(b))) {
-      cut(a, b, c, at(c));
-      --count;
-      a = ring_.prev[a];
-      since = 0;
-      continue;
+    std::int32_t best = start;
+    for (std::int32_t b = ring_.next[start]; b != start; b = ring_.next[b])
+      if (key[b] > key[best]) best = b;
+    std::int32_t a = ring_.prev[best], c = ring_.next[best];
+    if (key[best] != kNone) {
+      const std::uint32_t va = at(a), vc = at(c);
+      if (orient(va, at(best), vc) != Sign::Positive ||
+          orient2d(p[2 * va], p[2 * va + 1], p[2 * vc], p[2 * vc + 1], x, y) == Sign::Negative) {
+        key[best] = kNone;
+        continue;
+      }
+    } else {  // no ear passed: the full test, as a safety net
+      best = -1;
+      for (std::int32_t b = ring_.next[start]; best < 0; b = ring_.next[b]) {
+        if (isEarAnyway(b)) best = b;
+        if (b == start && best < 0) return false;
+      }
+      a = ring_.prev[best];
+      c = ring_.next[best];
     }
-    if (++since > 2 * count + 2) return false;
-    a = b;
+    cut(a, best, c, at(c));
+    --count;
+    key[a] = earKey(a, x, y);
+    key[c] = earKey(c, x, y);
+    start = a;
   }
-  const std::int32_t b = ring_.next[a], c = ring_.next[b];
+  const std::int32_t a = start, b = ring_.next[a], c = ring_.next[b];
   const std::int32_t s = ring_.slot[ring_.used++];
   topo_.setTriangle(s, at(a), at(b), at(c));
   for (const std::int32_t node : {a, b, c}) {
