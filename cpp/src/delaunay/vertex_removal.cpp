@@ -46,6 +46,7 @@ class VertexRemoval {
   // Triangle (a, b, c) of nodes a, b = next[a], c = next[b] in the next free slot; b leaves
   // the polygon. Returns the slot.
   std::int32_t cut(std::int32_t a, std::int32_t b, std::int32_t c, std::uint32_t third);
+  bool isStarEar(std::int32_t b, double x, double y) const;
   double earKey(std::int32_t b, double x, double y) const;
   bool cutInterior(double x, double y);
   bool isEarAnyway(std::int32_t b) const;  // the full test, for a polygon that finds no ear
@@ -209,6 +210,14 @@ std::int32_t VertexRemoval::cut(std::int32_t a, std::int32_t b, std::int32_t c,
 // least deep inside its circle, is Delaunay: cut in that order, the new edges need no flips
 // but where rounding swapped two ears. A corner that is not convex in floating point gets
 // -infinity.
+// The exact test: corner b convex, x on the left of (or on) the new edge a -> c.
+bool VertexRemoval::isStarEar(std::int32_t b, double x, double y) const {
+  const double* p = d_.xy.data();
+  const std::uint32_t va = at(ring_.prev[b]), vc = at(ring_.next[b]);
+  return orient(va, at(b), vc) == Sign::Positive &&
+         orient2d(p[2 * va], p[2 * va + 1], p[2 * vc], p[2 * vc + 1], x, y) != Sign::Negative;
+}
+
 double VertexRemoval::earKey(std::int32_t b, double x, double y) const {
   const double* p = d_.xy.data();
   const std::uint32_t va = at(ring_.prev[b]), vb = at(b), vc = at(ring_.next[b]);
@@ -227,7 +236,6 @@ double VertexRemoval::earKey(std::int32_t b, double x, double y) const {
 // edge a -> c, so empty: see the top of the file); one that fails drops out until its
 // neighbours change.
 bool VertexRemoval::cutInterior(double x, double y) {
-  const double* p = d_.xy.data();
   constexpr double kNone = -std::numeric_limits<double>::infinity();
   auto count = static_cast<std::int32_t>(ring_.vertex.size());
   std::vector<double>& key = ring_.key;
@@ -238,23 +246,24 @@ bool VertexRemoval::cutInterior(double x, double y) {
     std::int32_t best = start;
     for (std::int32_t b = ring_.next[start]; b != start; b = ring_.next[b])
       if (key[b] > key[best]) best = b;
-    std::int32_t a = ring_.prev[best], c = ring_.next[best];
-    if (key[best] != kNone) {
-      const std::uint32_t va = at(a), vc = at(c);
-      if (orient(va, at(best), vc) != Sign::Positive ||
-          orient2d(p[2 * va], p[2 * va + 1], p[2 * vc], p[2 * vc + 1], x, y) == Sign::Negative) {
-        key[best] = kNone;
-        continue;
-      }
-    } else {  // no ear passed: the full test, as a safety net
-      best = -1;
-      for (std::int32_t b = ring_.next[start]; best < 0; b = ring_.next[b]) {
-        if (isEarAnyway(b)) best = b;
-        if (b == start && best < 0) return false;
-      }
-      a = ring_.prev[best];
-      c = ring_.next[best];
+    if (key[best] != kNone && !isStarEar(best, x, y)) {
+      key[best] = kNone;
+      continue;
     }
+    if (key[best] == kNone) {  // none left by the keys (rounding): every corner exactly
+      best = -1;
+      std::int32_t b = start;
+      do {
+        if (isStarEar(b, x, y)) best = b;
+        b = ring_.next[b];
+      } while (best < 0 && b != start);
+      do {  // the full test, as a safety net
+        if (best < 0 && isEarAnyway(b)) best = b;
+        b = ring_.next[b];
+      } while (best < 0 && b != start);
+      if (best < 0) return false;
+    }
+    const std::int32_t a = ring_.prev[best], c = ring_.next[best];
     cut(a, best, c, at(c));
     --count;
     key[a] = earKey(a, x, y);
