@@ -180,9 +180,12 @@ Status removeUnneeded(State& state, ConstraintEditor& editor, VertexEdges& ends,
   for (const std::uint32_t v : candidates)
     if (!stays(v) && v < d.vertexCount() && !d.isRemoved(v) && !needed(state, ends, v))
       gone.push_back(v);
+  const std::size_t checked = gone.size();
   addSteinerDescendants(state, gone);
-  for (const std::uint32_t v : gone) {
-    if (stays(v) || d.isRemoved(v)) continue;
+  for (std::size_t i = 0; i < gone.size(); ++i) {
+    const std::uint32_t v = gone[i];
+    // A Steiner point that a later insertion gave as a point or polyline vertex stays.
+    if (stays(v) || d.isRemoved(v) || (i >= checked && needed(state, ends, v))) continue;
     const Status s = editor.removeVertex(v);
     if (!s.ok()) return s;
   }
@@ -417,8 +420,10 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
         std::vector<std::uint32_t> gone{id};
         addSteinerDescendants(state, gone);
         const std::uint32_t keep = d.vertexCount();
-        for (const std::uint32_t v : gone) {
-          if (d.isRemoved(v)) continue;
+        for (std::size_t i = 0; i < gone.size(); ++i) {
+          const std::uint32_t v = gone[i];
+          // (A Steiner point given again as a point or polyline vertex stays.)
+          if (d.isRemoved(v) || (i > 0 && needed(state, ends, v))) continue;
           const Status s = editor.removeVertex(v);
           if (!s.ok()) return s;
         }

@@ -298,6 +298,43 @@ bool randomEdits(std::uint64_t seed, int steps, double grid, bool compare) {
   return t.stats().snapRoundings > 0;
 }
 
+// A Steiner point that a later insertPoints gives as a point (a point at its place) is
+// needed as a point: it stays when what it was placed from goes, by removePolyline or by
+// removePoint (fuzz_edits found it removed with its parent's other Steiner points).
+std::uint32_t steinerGivenAsAPoint(Triangulation& t) {
+  RefineOptions options;
+  options.maxArea = 2.0;
+  EXPECT_TRUE(t.refine(options).ok());
+  const Mesh m = t.mesh();
+  EXPECT_FALSE(m.steiner.empty());
+  const std::uint32_t s = m.steiner.back();
+  std::uint32_t id = 0;
+  EXPECT_TRUE(t.insertPoints(&m.points[2 * std::size_t{s}], 1, &id).ok());
+  EXPECT_EQ(id, s);
+  return id;
+}
+
+TEST(Editing, SteinerPointGivenAgainAsAPointStays) {
+  {
+    Triangulation t;
+    const std::vector<double> ring{0, 0, 10, 0, 10, 4, 0, 4, 0, 0};
+    ASSERT_TRUE(t.insertPolyline(ring.data(), ring.size() / 2).ok());
+    const std::uint32_t id = steinerGivenAsAPoint(t);
+    ASSERT_TRUE(t.removePolyline(0).ok());
+    EXPECT_TRUE(t.hasVertex(id));
+    EXPECT_GT(t.stats().removed, 0u);  // the other Steiner points went
+  }
+  {
+    Triangulation t;
+    const std::vector<double> corners{0, 0, 10, 0, 10, 4, 0, 4};
+    std::uint32_t ids[4];
+    ASSERT_TRUE(t.insertPoints(corners.data(), 4, ids).ok());
+    const std::uint32_t id = steinerGivenAsAPoint(t);
+    for (const std::uint32_t corner : ids) ASSERT_TRUE(t.removePoint(corner).ok());
+    EXPECT_TRUE(t.hasVertex(id));
+  }
+}
+
 TEST(Editing, RandomSequencesOfEveryEdit) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) randomEdits(seed, 200, 1.0 / 64, true);
 }
