@@ -46,6 +46,7 @@ Delaunay& Delaunay::operator=(Delaunay&& other) noexcept {
   ring_ = std::move(other.ring_);
   spare_[0] = other.spare_[0];
   spare_[1] = other.spare_[1];
+  slotsReused_ = other.slotsReused_;
   error_ = std::move(other.error_);
   return *this;
 }
@@ -63,6 +64,7 @@ void Delaunay::clear() {
   stats = Stats();
   steiner.clear();
   spare_[0] = spare_[1] = -1;
+  slotsReused_ = false;
 }
 
 std::uint32_t Delaunay::insertVertex(std::uint32_t v) {

@@ -183,6 +183,7 @@ class Delaunay {
   Hit walkFrom(double x, double y, std::int32_t t, std::int64_t& step) const;
   Hit scan(double x, double y) const;
   std::int32_t startTriangle(double x, double y, bool fromGrid);
+  bool startsNear(std::int32_t t, double x, double y) const;  // t's first real corner
 
   // The splits and flips, on slots already allocated: the new vertex p ends in third place
   // of every triangle around it, so that the edge facing it is the triangle's first.
@@ -241,6 +242,7 @@ class Delaunay {
   // A move's removal keeps its two freed slots for the insertion that follows, instead of
   // moving the last triangles into them: -1 when there are none.
   std::int32_t spare_[2] = {-1, -1};
+  bool slotsReused_ = false;  // a removal moved or reused slots: grid hints may lie far
   Status error_;
 
   friend class VertexRemoval;

@@ -142,6 +142,7 @@ Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving, bool f
     if (r != kGhost)
       d_.grid_.cellAt(d_.xy[2 * std::size_t{r}], d_.xy[2 * std::size_t{r} + 1]) = kept;
   d_.last_ = kept;
+  d_.slotsReused_ = true;
   markRemoved(v, moving);
   return Status::success();
 }
