@@ -2,10 +2,13 @@
 // a change leaves the results as they were: run it before and after, and compare the lines.
 // The cases cover the Natural Earth rings at three scales and the arcs, US counties, snap
 // rounding, many random crossings, refinement, values (derivation, interpolation, rasters),
-// locate(), polylines one call at a time, a buffer taken over, and 2 and 4 threads.
+// locate(), polylines one call at a time, a buffer taken over, 2 and 4 threads, and edits
+// (removals and moves of points, removals of polylines, snap-rounded ones included).
 // Usage: mesh_hashes [--data DIR] [case name prefix...]
 // The datasets are written by `node scripts/datasets/natural_earth.mjs DIR` (ctest does it
 // into build/data).
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -79,6 +82,7 @@ class Report {
     add("steiner", m.steiner);
     add("steinerParents", m.steinerParents);
     add("steinerWeights", m.steinerWeights);
+    if (!m.vertexIds.empty()) add("vertexIds", m.vertexIds);
   }
 
   // The counters too: walks, flips and fallbacks move when the algorithm does.
@@ -246,6 +250,77 @@ Case incrementalCase(const Data& data, const std::string& file) {
   };
 }
 
+// The edits' counter, on a line of its own (the other cases' lines stay as they were).
+void addRemoved(Report& r, const geocdt::Stats& s) {
+  const std::uint64_t removed = s.removed;
+  r.add("removed", &removed, 1);
+}
+
+// The triangles by vertex id, each from its least id, sorted: the mesh whatever slots its
+// triangles took (edits may reuse slots in another order and still make the same mesh).
+void addCanonical(Report& r, const geocdt::Mesh& m) {
+  std::vector<std::array<std::uint32_t, 3>> t(m.triangles.size() / 3);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    std::uint32_t v[3];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t local = m.triangles[3 * i + k];
+      v[k] = m.vertexIds.empty() ? local : m.vertexIds[local];
+    }
+    const int first = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    t[i] = {v[first], v[(first + 1) % 3], v[(first + 2) % 3]};
+  }
+  std::sort(t.begin(), t.end());
+  r.add("canonical", t.data(), t.size());
+}
+
+// Points removed and moved one call each, in an order of their own, on n uniform points.
+Case pointEditsCase(std::size_t n) {
+  return [=](Report& r) {
+    const std::vector<double> xy = bench::uniformPoints(n, 13);
+    const std::vector<double> to = bench::uniformPoints(n / 5, 17);
+    geocdt::Triangulation t;
+    std::vector<std::uint32_t> ids(n);
+    check(t.insertPoints(xy.data(), n, ids.data()), "points");
+    // Every 5th point removed, every 5th from the 2nd moved, in a scattered order.
+    for (std::size_t k = 0; k < n / 5; ++k) {
+      const std::size_t i = (k * 7919) % (n / 5);
+      check(t.removePoint(ids[5 * i]), "removePoint");
+      check(t.movePoint(ids[5 * i + 1], to[2 * i], to[2 * i + 1]), "movePoint");
+    }
+    r.add(t.stats());
+    addRemoved(r, t.stats());
+    const geocdt::Mesh m = t.release();
+    addCanonical(r, m);
+    r.add(m);
+  };
+}
+
+// A file's polylines with points among them; then every 4th polyline removed, every 3rd
+// point removed, and every 50th polyline's first vertex moved a little.
+Case polylineEditsCase(const Data& data, const std::string& file, geocdt::Options options = {}) {
+  return [=, &data](Report& r) {
+    const geocdt::testing::PolylineSet set = data.rings(file);
+    const std::vector<geocdt::PolylineView> views = set.views();
+    geocdt::Triangulation t(options);
+    const std::vector<double> q = queriesOver(set.xy, 3000);
+    std::vector<std::uint32_t> pointIds(q.size() / 2), ids(set.pointCount());
+    check(t.insertPoints(q.data(), q.size() / 2, pointIds.data()), file);
+    check(t.insertPolylines(views.data(), views.size(), ids.data()), file);
+    for (std::size_t i = 0; i < views.size(); i += 4) check(t.removePolyline(i), file);
+    for (std::size_t i = 0; i < pointIds.size(); i += 3) check(t.removePoint(pointIds[i]), file);
+    for (std::size_t i = 1; i < views.size(); i += 50) {
+      const std::size_t first = set.offsets[i];
+      const double x = set.xy[2 * first], y = set.xy[2 * first + 1];
+      check(t.movePoint(ids[first], x + 1e-3, y - 1e-3), file);
+    }
+    r.add(t.stats());
+    addRemoved(r, t.stats());
+    const geocdt::Mesh m = t.release(everything());
+    addCanonical(r, m);
+    r.add(m);
+  };
+}
+
 // insertPolylines taking over a buffer in GeoArrow's layout.
 Case adoptedCase(const Data& data, const std::string& file) {
   return [=, &data](Report& r) {
@@ -331,6 +406,9 @@ int main(int argc, char** argv) {
       {"clusters_200k_2threads", pointsCase(bench::clustersOfManySpreads(200000, 5), 2)},
       {"lattice_300_2threads", pointsCase(geocdt::testing::latticePoints(300), 2)},
       {"ne_10m_rings_2threads", polylineCase(data, "ne_10m_rings", twoThreads)},
+      {"edits_uniform_100k", pointEditsCase(100000)},
+      {"edits_counties", polylineEditsCase(data, "us_counties_rings")},
+      {"edits_ne_110m_snap", polylineEditsCase(data, "ne_110m_rings", always)},
   };
   Hash all;
   for (const auto& [name, run] : cases) {

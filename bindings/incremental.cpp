@@ -1,5 +1,6 @@
 #include "incremental.h"
 
+#include <numeric>
 #include <utility>
 
 #include "guard.h"
@@ -62,12 +63,40 @@ bool Incremental::mesh(Output& out, Input& input, Keep keep, FillRule fill, bool
       [&] {
         out.mesh = triangulation_.mesh(meshOptions(keep, fill, insideFlags, segmentSources, input));
         out.stats = triangulation_.stats();
+        // Each output vertex's id (vertex i is id i until something was removed).
+        out.vertexIds = std::move(out.mesh.vertexIds);
+        if (out.vertexIds.empty()) {
+          out.vertexIds.resize(out.mesh.points.size() / 2);
+          std::iota(out.vertexIds.begin(), out.vertexIds.end(), 0u);
+        }
         return Status::success();
       },
       "out of memory while copying the triangulation out; it is unchanged");
   input.clear();
   relay_.finish();
   return ok;
+}
+
+int Incremental::removePoint(Output& out, double id) {
+  bool removed = false;
+  const char* oom = "out of memory while editing: the triangulation was cleared";
+  if (!guarded(
+          out, [&] { return triangulation_.removePoint(static_cast<std::uint32_t>(id), &removed); },
+          oom))
+    return -1;
+  return removed ? 1 : 0;
+}
+
+bool Incremental::removePolyline(Output& out, double polyline) {
+  return guarded(
+      out, [&] { return triangulation_.removePolyline(static_cast<std::size_t>(polyline)); },
+      "out of memory while editing: the triangulation was cleared");
+}
+
+bool Incremental::movePoint(Output& out, double id, double x, double y) {
+  return guarded(
+      out, [&] { return triangulation_.movePoint(static_cast<std::uint32_t>(id), x, y); },
+      "out of memory while editing: the triangulation was cleared");
 }
 
 void Incremental::interpolate(Output& out, Input& input, Interpolation method) {

@@ -42,6 +42,19 @@ class Incremental {
   // as six doubles at into.
   void locate(double x, double y, std::uintptr_t into) const;
 
+  // Editing: the status lands in out when it is not ok. removePoint returns 1 when the
+  // vertex went, 0 when it stays as a polyline's, -1 on an error; the others whether they
+  // succeeded. Ids come as doubles that JS checked to be integers in [0, 2^32).
+  int removePoint(Output& out, double id);
+  bool removePolyline(Output& out, double polyline);
+  bool movePoint(Output& out, double id, double x, double y);
+  bool hasVertex(double id) const {
+    return triangulation_.hasVertex(static_cast<std::uint32_t>(id));
+  }
+  bool hasPolyline(double polyline) const {
+    return triangulation_.hasPolyline(static_cast<std::size_t>(polyline));
+  }
+
   double vertexCount() const { return static_cast<double>(triangulation_.vertexCount()); }
   double triangleCount() const { return static_cast<double>(triangulation_.triangleCount()); }
   double polylineCount() const { return static_cast<double>(triangulation_.polylineCount()); }

@@ -103,6 +103,11 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("rasterize", &Incremental::rasterize)
       .function("valuesPerPoint", &Incremental::valuesPerPoint)
       .function("hasValues", &Incremental::hasValues)
+      .function("removePoint", &Incremental::removePoint)
+      .function("removePolyline", &Incremental::removePolyline)
+      .function("movePoint", &Incremental::movePoint)
+      .function("hasVertex", &Incremental::hasVertex)
+      .function("hasPolyline", &Incremental::hasPolyline)
       .function("vertexCount", &Incremental::vertexCount)
       .function("triangleCount", &Incremental::triangleCount)
       .function("polylineCount", &Incremental::polylineCount);

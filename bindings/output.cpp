@@ -47,6 +47,7 @@ constexpr StatField kStatFields[] = {
     GEOCDT_STAT(refineSkipped),
     GEOCDT_STAT(refineCapped),
     GEOCDT_STAT(threads),
+    GEOCDT_STAT(removed),
 };
 #undef GEOCDT_STAT
 // Every counter takes 8 bytes (gridSize with its padding): a counter added to Stats and not

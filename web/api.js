@@ -159,6 +159,18 @@ export function createApi(instantiate) {
     ? new FinalizationRegistry((incremental) => incremental.delete())
     : null;
 
+  // An id or polyline number: an integer in [0, 2^32).
+  function checkId(id, call) {
+    if (typeof id !== 'number') {
+      throw new TypeError(`geocdt: ${call}: the id must be a number, got ${describe(id)}`);
+    }
+    if (!Number.isInteger(id) || id < 0 || id > 0xffffffff) {
+      throw new RangeError(`geocdt: ${call}: the id must be an integer from 0 to 2^32 - 1, `
+        + `got ${id}`);
+    }
+    return id;
+  }
+
   // insertPoints(xy, values?, options?): values is an array or typed array, options an object.
   const splitValues = (values, options) => (values != null && typeof values === 'object'
     && !Array.isArray(values) && !ArrayBuffer.isView(values)
@@ -222,6 +234,37 @@ export function createApi(instantiate) {
     }
 
     get valuesPerPoint() { return this.#valuesPerPoint; }
+
+    // Editing in place. Ids are those the insertions returned; a bad one (removed, out of
+    // range, not an integer) throws a RangeError and changes nothing.
+    // Removes a point of insertPoints: true when its vertex went, false when it stays as a
+    // vertex of a polyline.
+    removePoint(id) {
+      const live = this.#live();
+      return this.#kernel.removePoint(live, checkId(id, 'removePoint(id)'));
+    }
+
+    // Removes polyline k (numbered in insertion order from 0; the others keep their numbers).
+    removePolyline(k) {
+      const live = this.#live();
+      this.#kernel.removePolyline(live, checkId(k, 'removePolyline(k)'));
+    }
+
+    // Moves the vertex of a point or of a polyline to (x, y); its polylines follow.
+    movePoint(id, x, y) {
+      const live = this.#live();
+      const checked = checkId(id, 'movePoint(id, x, y)');
+      if (typeof x !== 'number' || typeof y !== 'number') {
+        throw new TypeError('geocdt: movePoint(id, x, y): x and y must be numbers, '
+          + `got ${describe(x)} and ${describe(y)}`);
+      }
+      this.#kernel.movePoint(live, checked, x, y);
+    }
+
+    // Whether id names a vertex now.
+    hasVertex(id) {
+      return Number.isInteger(id) && id >= 0 && id <= 0xffffffff && this.#live().hasVertex(id);
+    }
 
     locate(x, y) {
       if (typeof x !== 'number' || typeof y !== 'number') {

@@ -156,6 +156,8 @@ export interface CoreStats {
    * build and the batch was large enough for strips (about 16,000 points a thread).
    */
   threads: number;
+  /** Vertices removed by edits (removePoint, removePolyline, and what those take along). */
+  removed: number;
 }
 
 /** triangulate()'s options. */
@@ -238,6 +240,12 @@ export interface Mesh {
   steiner?: Uint32Array;
   steinerParents?: Uint32Array;
   steinerWeights?: Float64Array;
+  /**
+   * Triangulation.results() only: the id of each vertex (what the insertions returned and
+   * locate() names). Vertex i is id i until vertices are removed; after that the vertices are
+   * numbered without gaps here and this maps them back to their ids.
+   */
+  vertexIds?: Uint32Array;
   stats: Stats;
 }
 
@@ -769,8 +777,29 @@ export class Triangulation {
   readonly valuesPerPoint: number;
   /** @throws RangeError when x or y is NaN or infinite. */
   locate(x: number, y: number): Location;
-  /** A copy of the current mesh; insertions can go on. */
-  results(options?: ResultsOptions): Mesh;
+  /**
+   * Removes a point inserted with insertPoints. Returns true when its vertex went, false when
+   * it stays as a vertex of a polyline (until that polyline is removed too).
+   * @throws RangeError when id names no point now (removed, out of range, not an integer);
+   *   nothing changes then.
+   */
+  removePoint(id: number): boolean;
+  /**
+   * Removes polyline k (insertion order; the others keep their numbers): its edges become
+   * free, and its vertices, crossings and Steiner points that nothing else needs go.
+   * @throws RangeError when k names no polyline now.
+   */
+  removePolyline(polyline: number): void;
+  /**
+   * Moves the vertex of a point or of a polyline to (x, y); the polylines through it follow.
+   * @throws RangeError on a bad id, a coordinate that is not finite (or beyond 1e150), or a
+   *   place that another point or polyline vertex holds; nothing changes then.
+   */
+  movePoint(id: number, x: number, y: number): void;
+  /** Whether id names a vertex now. */
+  hasVertex(id: number): boolean;
+  /** A copy of the current mesh, with vertexIds; insertions and edits can go on. */
+  results(options?: ResultsOptions): Mesh & { vertexIds: Uint32Array };
   /**
    * Delaunay refinement of what is there now (keep: 'inside' refines only the inside); later
    * insertions leave quality to a later call. Returns the stats.

@@ -203,7 +203,7 @@ export class Kernel {
 
   // Copies the output's mesh out, then frees it; the flags say which optional arrays to take
   // (the Steiner records come whenever there are any, or refinement was asked for).
-  takeMesh({ inputToVertex, inside, regions, values, steiner, segmentSources }) {
+  takeMesh({ inputToVertex, inside, regions, values, steiner, segmentSources, vertexIds }) {
     try {
       const mesh = {
         points: this.read('points'),
@@ -212,6 +212,7 @@ export class Kernel {
         constrained: this.readConstrained(),
       };
       if (inputToVertex) mesh.inputToVertex = this.read('inputToVertex');
+      if (vertexIds) mesh.vertexIds = this.read('vertexIds');
       mesh.constraintEdges = this.read('constraintEdges');
       mesh.sourceOffsets = this.read('sourceOffsets');
       mesh.sources = this.read('sources');
@@ -597,7 +598,7 @@ export class Kernel {
     progress.rethrow();
     const mesh = this.takeMesh({
       inside: o.insideFlags, regions: polygons !== undefined, values: incremental.hasValues(),
-      segmentSources: o.segmentSources,
+      segmentSources: o.segmentSources, vertexIds: true,
     });
     mesh.stats.coreMilliseconds = coreMilliseconds;
     return mesh;
@@ -661,6 +662,37 @@ export class Kernel {
     this.check(ok, () => null);
     this.output.clear();
     return incremental.stats();
+  }
+
+  // Editing: the core's refusal of an id or polyline (InvalidArgument) is a RangeError here,
+  // as for ids JS checks itself.
+  checkEdit(ok) {
+    if (ok) return;
+    const o = this.output;
+    const code = this.statusCodes[o.code().value];
+    if (code !== 'InvalidArgument') this.check(false, () => null);
+    const error = new RangeError(`geocdt: ${o.message()}`);
+    error.code = code;
+    if (o.index() >= 0) error.index = o.index();
+    o.clear();
+    throw error;
+  }
+
+  removePoint(incremental, id) {
+    this.idle();
+    const result = incremental.removePoint(this.output, id);
+    this.checkEdit(result >= 0);
+    return result === 1;
+  }
+
+  removePolyline(incremental, k) {
+    this.idle();
+    this.checkEdit(incremental.removePolyline(this.output, k));
+  }
+
+  movePoint(incremental, id, x, y) {
+    this.idle();
+    this.checkEdit(incremental.movePoint(this.output, id, x, y));
   }
 
   locate(incremental, x, y) {

@@ -274,6 +274,12 @@ export class RemoteTriangulation {
 
   locate(x, y) { return this.#call('locate', [x, y]); }
 
+  // Editing: the worker's Triangulation answers (a bad id rejects with its RangeError).
+  removePoint(id) { return this.#call('removePoint', [id]); }
+  removePolyline(k) { return this.#call('removePolyline', [k]); }
+  movePoint(id, x, y) { return this.#call('movePoint', [id, x, y]); }
+  hasVertex(id) { return this.#call('hasVertex', [id]); }
+
   async results(options) {
     const { onProgress, rest } = takeProgress(options);
     if (rest.polygons != null) {

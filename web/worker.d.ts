@@ -81,6 +81,11 @@ export class RemoteTriangulation {
   rasterize(options: RasterOptions): Promise<Float32Array>;
   readonly valuesPerPoint: number;
   locate(x: number, y: number): Promise<Location>;
+  /** As Triangulation's: resolves to whether the vertex went; a bad id rejects (RangeError). */
+  removePoint(id: number): Promise<boolean>;
+  removePolyline(polyline: number): Promise<void>;
+  movePoint(id: number, x: number, y: number): Promise<void>;
+  hasVertex(id: number): Promise<boolean>;
   results(options?: ResultsOptions): Promise<Mesh>;
   refine(options?: RefineOptions & { keep?: Keep; fillRule?: FillRule }): Promise<CoreStats>;
   stats(): Promise<CoreStats>;

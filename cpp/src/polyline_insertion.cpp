@@ -273,7 +273,13 @@ Status Triangulation::insertPolylines(const PolylineView* polylines, std::size_t
                                       std::uint32_t* vertexIds, const double* values) {
   if (count > 0 && polylines == nullptr)
     return {StatusCode::InvalidArgument, "null polylines with a count"};
-  return insertPolylineBatch(polylines, count, vertexIds, values, nullptr);
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < count; ++i) total += polylines[i].count;
+  std::vector<std::uint32_t> scratch;
+  std::uint32_t* ids = idsFor(vertexIds, total, scratch);
+  const std::size_t before = polylineCount();
+  return recordInsertion(*state_, insertPolylineBatch(polylines, count, ids, values, nullptr), ids,
+                         total, kPolylineVertex, before, polylines);
 }
 
 Status Triangulation::insertPolylines(std::vector<double>&& xy, const std::uint32_t* offsets,
@@ -303,7 +309,11 @@ Status Triangulation::insertPolylines(std::vector<double>&& xy, const std::uint3
     return {StatusCode::InvalidArgument,
             "polyline offsets must not decrease (offset " + std::to_string(decreasing + 1) + ")",
             decreasing};
-  return insertPolylineBatch(views.data(), count, vertexIds, values, &xy);
+  std::vector<std::uint32_t> scratch;
+  std::uint32_t* ids = idsFor(vertexIds, points, scratch);
+  const std::size_t before = polylineCount();
+  return recordInsertion(*state_, insertPolylineBatch(views.data(), count, ids, values, &xy), ids,
+                         points, kPolylineVertex, before, views.data());
 }
 
 Status Triangulation::insertPolylineBatch(const PolylineView* polylines, std::size_t count,

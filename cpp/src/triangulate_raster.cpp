@@ -234,7 +234,7 @@ void steinerHeights(Build& b, const Delaunay& d, std::size_t first, const Raster
 // Greedy insertion; then with minAngle, rounds of refinement and of insertion where the
 // refined mesh misses the bound, until a round inserts nothing (or after a few). One refiner
 // serves every round, told of the pixels inserted between them: setting one up again each
-// round cost most of what refinement did (bench/EXPERIMENTS.md, T11).
+// round cost most of what refinement did (bench/EXPERIMENTS.md, TN11).
 Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
             const terrain::MesherLimits& limits, TerrainStats& stats) {
   Delaunay& d = StateAccess::of(b.triangulation).delaunay;

@@ -51,7 +51,10 @@ Triangulation::~Triangulation() = default;
 Triangulation::Triangulation(Triangulation&&) noexcept = default;
 Triangulation& Triangulation::operator=(Triangulation&&) noexcept = default;
 
-std::size_t Triangulation::vertexCount() const { return state_->delaunay.vertexCount(); }
+std::size_t Triangulation::vertexCount() const {
+  const Delaunay& d = state_->delaunay;
+  return d.vertexCount() - d.stats.removed;
+}
 const std::vector<double>& Triangulation::points() const { return state_->delaunay.xy; }
 Stats Triangulation::stats() const {
   Stats s = state_->delaunay.stats;
@@ -82,7 +85,10 @@ Status Triangulation::insertPoints(const double* xy, std::size_t count, std::uin
                                    const double* values) {
   const Status s = checkCoordinates(xy, count, "point", state_->delaunay.options().threads);
   if (!s.ok()) return s;
-  return insertCheckedPoints(xy, count, vertexIds, values);
+  std::vector<std::uint32_t> scratch;
+  std::uint32_t* ids = idsFor(vertexIds, count, scratch);
+  return recordInsertion(*state_, insertCheckedPoints(xy, count, ids, values), ids, count,
+                         kPointVertex, 0);
 }
 
 Status Triangulation::insertPoints(std::vector<double>&& xy, std::uint32_t* vertexIds,
@@ -90,7 +96,11 @@ Status Triangulation::insertPoints(std::vector<double>&& xy, std::uint32_t* vert
   const Status s =
       checkCoordinates(xy.data(), xy.size() / 2, "point", state_->delaunay.options().threads);
   if (!s.ok()) return s;
-  return insertCheckedPoints(xy.data(), xy.size() / 2, vertexIds, values, &xy);
+  const std::size_t count = xy.size() / 2;
+  std::vector<std::uint32_t> scratch;
+  std::uint32_t* ids = idsFor(vertexIds, count, scratch);
+  return recordInsertion(*state_, insertCheckedPoints(xy.data(), count, ids, values, &xy), ids,
+                         count, kPointVertex, 0);
 }
 
 Status Triangulation::insertCheckedPoints(const double* xy, std::size_t count,
@@ -172,6 +182,7 @@ Mesh exportWithValues(Triangulation::State& state, const MeshOptions& options, b
   m.derivedOffsets = std::move(values.derivedOffsets);
   m.derivedParents = std::move(values.derivedParents);
   m.derivedWeights = std::move(values.derivedWeights);
+  dropRemovedVertices(state.delaunay, m);
   return m;
 }
 
@@ -186,6 +197,9 @@ Status Triangulation::refine(const RefineOptions& options) {
       [&] {
         const std::size_t before = state.delaunay.steiner.size();
         const Status s = refineTriangulation(state.delaunay, options, &state.windings);
+        for (std::size_t i = before; i < state.delaunay.steiner.size(); ++i)
+          state.edit.mark(&state.delaunay.steiner[i].vertex, 1, kSteinerVertex);
+        state.edit.steinerStale = true;
         // Steiner vertices interpolate their values linearly from where they were placed.
         if (state.values.active()) {
           for (std::size_t i = before; i < state.delaunay.steiner.size(); ++i) {

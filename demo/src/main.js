@@ -3,6 +3,7 @@ import 'leaflet/dist/leaflet.css';
 import './style.css';
 import L from 'leaflet';
 import { MapEditing } from './map-editing.js';
+import { VertexEditing } from './vertex-editing.js';
 import { DEFAULT_STYLE } from './mesh-style.js';
 import { MeshView } from './mesh-view.js';
 import { MeshWorker } from './worker-client.js';
@@ -118,8 +119,23 @@ for (const input of document.querySelectorAll('input[name="show"]')) {
 for (const id of ['fill', 'edges', 'constraints']) {
   $(id).addEventListener('change', (e) => restyle({ [id]: e.target.checked }));
 }
+// Edit mode: requests that change the mesh redraw it; a pick only asks.
+const vertexEditing = new VertexEditing(map, {
+  request: (type, payload, redraw) => (redraw
+    ? run(state.source, () => worker.request(type, payload), { isEdit: true })
+    : worker.request(type, payload)),
+  onSelect: (picked) => {
+    $('delete-point').disabled = !picked?.point;
+    $('delete-lines').disabled = !picked?.lines.length;
+  },
+});
+$('delete-point').addEventListener('click', () => vertexEditing.removePoint());
+$('delete-lines').addEventListener('click', () => vertexEditing.removeLines());
 for (const input of document.querySelectorAll('input[name="mode"]')) {
-  input.addEventListener('change', () => editing.setMode(input.value));
+  input.addEventListener('change', () => {
+    editing.setMode(input.value);
+    vertexEditing.setActive(input.value === 'edit');
+  });
 }
 $('finish-line').addEventListener('click', () => editing.finishLine());
 const angleLabel = (degrees) => (degrees > 0 ? `${degrees}°` : 'off');

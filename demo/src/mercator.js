@@ -17,3 +17,8 @@ export function projectLonLat(from, to = new Float64Array(from.length)) {
   }
   return to;
 }
+
+// The inverse of projectLonLat for one x, y pair: [lon, lat] (for the editing handles).
+export function unprojectXY([x, y]) {
+  return [x / EARTH_RADIUS / RAD, (2 * Math.atan(Math.exp(y / EARTH_RADIUS)) - Math.PI / 2) / RAD];
+}

@@ -6,6 +6,7 @@ import { init, triangulate, Triangulation } from 'geocdt';
 import { decodeDataset } from './dataset-codec.js';
 import { parseGeoJSONText } from './geojson-input.js';
 import { projectLonLat } from './mercator.js';
+import { VertexBook } from './vertex-book.js';
 import { meshBuffers, surfaceBuffers, transferablesOf } from './mesh-buffers.js';
 
 const MESH_OPTIONS = { keep: 'all', insideFlags: true };
@@ -69,6 +70,14 @@ async function handle(request, onProgress) {
       return addSegment(request.from, request.to);
     case 'refine':
       return refineAgain(request.minAngle, onProgress);
+    case 'pick':
+      return pick(request.lonLat);
+    case 'movePoint':
+      return edit({ kind: 'move', id: request.vertex, xy: projectLonLat(request.lonLat) });
+    case 'removePoint':
+      return edit({ kind: 'removePoint', id: request.vertex });
+    case 'removeLines':
+      return edit({ kind: 'removeLines', id: request.vertex });
     default:
       throw new Error(`unknown request ${request.type}`);
   }
@@ -143,40 +152,68 @@ function incremental() {
   if (!current) throw new Error('nothing is loaded yet');
   if (!current.incremental) {
     const t = new Triangulation();
+    const book = new VertexBook();
     const { points, polylines, values } = current.input;
-    if (points.length) t.insertPoints(points, values?.points);
-    polylines.forEach((line, i) => t.insertPolyline(line, values?.polylines[i]));
-    for (const edit of current.edits) applyEdit(t, edit);
+    if (points.length) book.addPoints(t.insertPoints(points, values?.points), points);
+    polylines.forEach((line, i) => {
+      book.addLine(t.insertPolyline(line, values?.polylines[i]), line);
+    });
+    current.book = book;
+    for (const edit of current.edits) applyEdit(t, book, edit);
     if (minAngle > 0) t.refine(refineOptions());
     current.incremental = t;
   }
   return current.incremental;
 }
 
-function applyEdit(t, { kind, xy }) {
-  if (kind === 'point') t.insertPoints(xy);
-  else t.insertPolyline(xy);
+// Edits replay in order on a fresh Triangulation (after a new minimum angle): the same calls
+// give the same ids.
+function applyEdit(t, book, { kind, xy, id }) {
+  if (kind === 'point') {
+    book.addPoints(t.insertPoints(xy), xy);
+  } else if (kind === 'segment') {
+    book.addLine(t.insertPolyline(xy), xy);
+  } else if (kind === 'move') {
+    t.movePoint(id, xy[0], xy[1]);
+    book.places.set(id, [xy[0], xy[1]]);
+  } else if (kind === 'removePoint') {
+    if (t.hasVertex(id) && book.points.has(id)) t.removePoint(id);
+    book.points.delete(id);
+  } else if (kind === 'removeLines') {
+    for (const k of book.linesOf(id)) {
+      t.removePolyline(k);
+      book.lines[k].live = false;
+    }
+  }
 }
 
-function edit(kind, xy) {
+// What a click picks: the nearest point or line vertex of the triangle (or edge) under it.
+function pick(lonLat) {
+  const t = incremental();
+  const [x, y] = projectLonLat(lonLat);
+  return { picked: current.book.pick(t.locate(x, y), x, y) };
+}
+
+function edit(change) {
+  const { kind } = change;
   const t = incremental();
   const started = performance.now();
-  applyEdit(t, { kind, xy });
-  current.edits.push({ kind, xy });
+  applyEdit(t, current.book, change);
+  current.edits.push(change);
   // Refinement again, around what the edit changed (its Steiner points add up).
   if (minAngle > 0) t.refine(refineOptions());
   const result = t.results(MESH_OPTIONS);
   if (kind === 'point') current.input.addedPoints++;
-  else current.input.addedSegments++;
+  else if (kind === 'segment') current.input.addedSegments++;
   return reply(result, performance.now() - started, 0, null);
 }
 
 function addPoint(lonLat) {
-  return edit('point', projectLonLat(lonLat));
+  return edit({ kind: 'point', xy: projectLonLat(lonLat) });
 }
 
 function addSegment(from, to) {
-  return edit('segment', projectLonLat([...from, ...to]));
+  return edit({ kind: 'segment', xy: projectLonLat([...from, ...to]) });
 }
 
 // A new minimum angle: what is loaded, edits included, triangulated afresh and refined.

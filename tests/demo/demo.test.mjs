@@ -200,6 +200,41 @@ test('clicks add points and constraint segments through the incremental API', as
   assert.deepEqual(consoleErrors, []);
 });
 
+test('edit mode drags a vertex, then deletes the point and the line', async () => {
+  const before = await readStats();
+  await page.check('input[name="mode"][value="edit"]');
+  const box = await page.locator('#map').boundingBox();
+  const at = (dx, dy) => ({ x: box.x + box.width / 2 + dx, y: box.y + box.height / 2 + dy });
+  // The point the previous test added: picked, then dragged (the mesh follows live).
+  await page.mouse.click(at(-150, 90).x, at(-150, 90).y);
+  await page.waitForFunction(() => !document.getElementById('delete-point').disabled);
+  await settle(async () => {
+    await page.mouse.move(at(-150, 90).x, at(-150, 90).y);
+    await page.mouse.down();
+    await page.mouse.move(at(-120, 60).x, at(-120, 60).y, { steps: 5 });
+    await page.mouse.up();
+  });
+  const moved = await readStats();
+  assert.equal(moved.status, 'ready', moved.error);
+  assert.equal(moved.vertices, before.vertices);
+  assert.equal(moved.triangles, 2 * moved.vertices - 4 - 2);
+  await settle(() => page.click('#delete-point'));
+  const deleted = await readStats();
+  assert.equal(deleted.vertices, before.vertices - 1);
+  assert.equal(deleted.triangles, before.triangles - 2);
+  // The drawn line's first vertex: its line goes, with the crossings it made.
+  await page.mouse.click(at(-200, -120).x, at(-200, -120).y);
+  await page.waitForFunction(() => !document.getElementById('delete-lines').disabled);
+  await settle(() => page.click('#delete-lines'));
+  const lineGone = await readStats();
+  assert.equal(lineGone.status, 'ready', lineGone.error);
+  assert.ok(lineGone.vertices < deleted.vertices - 2, 'its ends and crossings went');
+  assert.equal(lineGone.triangles, 2 * lineGone.vertices - 4 - 2);
+  await page.check('input[name="mode"][value="pan"]');
+  await page.screenshot({ path: join(OUTPUT, 'demo-vertex-editing.png') });
+  assert.deepEqual(consoleErrors, []);
+});
+
 // Heights on a grid of points and on a ring: the surface view colours the triangles.
 function hill() {
   const coordinates = [];

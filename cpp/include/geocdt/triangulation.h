@@ -181,6 +181,11 @@ struct Mesh {
   std::vector<std::uint32_t> steiner;
   std::vector<std::uint32_t> steinerParents;
   std::vector<double> steinerWeights;
+  // Once vertices were removed (Triangulation::removePoint, removePolyline), the vertices
+  // are renumbered without gaps in the arrays above: vertexIds[i] is the id of vertex i (what
+  // the insertions returned, what locate() names). Empty when nothing was removed: vertex i
+  // is then id i.
+  std::vector<std::uint32_t> vertexIds;
 };
 
 // A raster for rasterize(): width x height pixels over [minX, maxX] x [minY, maxY]. Pixel
@@ -244,6 +249,9 @@ struct Stats {
   bool refineCapped = false;
   // Threads that triangulated the last batch of points (1 when it ran on one thread).
   std::uint64_t threads = 1;
+  // Vertices removed by edits (removePoint, removePolyline, and the crossings and Steiner
+  // points those take with them). A moved vertex is not counted.
+  std::uint64_t removed = 0;
 };
 
 // One Triangulation serves one thread at a time. Its const functions leave the mesh as it
@@ -317,8 +325,38 @@ class Triangulation {
   std::uint32_t valuesPerPoint() const;
   bool hasValues() const;  // whether any insertion gave values
 
-  std::size_t vertexCount() const;
+  // Editing, in place (README, "Editing"). Ids stay valid until their vertex is removed, and
+  // a removed id is never given again; Mesh::vertexIds names each output vertex's id. After
+  // any edits the triangulation is the constrained Delaunay triangulation of what remains:
+  // where no four points are cocircular, the one triangulate() gives for the remaining input
+  // (in tangles that needed snap rounding, the one that inserting the remaining polylines
+  // again gives). An id or polyline that names nothing now (removed, out of range) is
+  // reported as InvalidArgument and changes nothing.
+  //
+  // A refined triangulation can be edited: an edit drops the Steiner points it invalidates
+  // (those placed from a vertex removed or moved, directly or through other Steiner points,
+  // and those on a removed polyline's edges); refine() again restores the quality there.
+  //
+  // Removes a point inserted with insertPoints. While a polyline has it among its points, the
+  // vertex stays as that polyline's and *removed (if not null) is false; otherwise the vertex
+  // goes, chains that only passed through it are joined again, and *removed is true. Costs
+  // the vertex's degree plus the constraints through it.
+  Status removePoint(std::uint32_t id, bool* removed = nullptr);
+  // Removes polyline `polyline` (numbered in insertion order; the others keep their
+  // numbers): its edges are freed and made Delaunay again, its vertices that no point and no
+  // other polyline has go, and so do the crossings and Steiner points on it that nothing
+  // else needs, the polylines split there joined again. Costs its length and crossings.
+  Status removePolyline(std::size_t polyline);
+  // Moves vertex id (a point's, or a polyline's: the polylines through it follow, crossing
+  // what they now cross) to (x, y), which must be a valid coordinate and not another point's
+  // or polyline vertex's place. About a removal plus an insertion.
+  Status movePoint(std::uint32_t id, double x, double y);
+  bool hasVertex(std::uint32_t id) const;  // whether id names a vertex now
+  bool hasPolyline(std::size_t polyline) const;
+
+  std::size_t vertexCount() const;    // vertices now (ids given, less those removed)
   std::size_t triangleCount() const;  // real triangles
+  // Coordinates by vertex id (NaN for removed ids).
   const std::vector<double>& points() const;
   Stats stats() const;  // a copy of the counters as they are now
 

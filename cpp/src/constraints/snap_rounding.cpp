@@ -346,14 +346,11 @@ struct SnapRound {
   std::vector<std::vector<std::uint32_t>> candidates;  // per segment, with repeats
 };
 
-// The hot pixels that are vertices: the first keep vertices of d, with their ids, and d's
-// segments in fresh's store.
+// The hot pixels that are vertices: the first keep vertices of d, with their ids (those removed
+// by edits stay removed), and d's segments in fresh's store.
 Status startRound(const Delaunay& d, std::uint32_t keep, Delaunay& fresh) {
-  std::vector<std::uint32_t> ids(keep);
-  const Status status = fresh.insertBatch(d.xy.data(), keep, ids.data());
+  const Status status = fresh.insertKeepingIds(d.xy.data(), keep);
   if (!status.ok()) return status;
-  for (std::uint32_t i = 0; i < keep; ++i)
-    if (ids[i] != i) return {StatusCode::InternalError, "snap rounding renumbered a vertex"};
   ConstraintStore& store = fresh.constraints;
   store.segments = d.constraints.segments;
   store.segmentStarts = d.constraints.segmentStarts;
@@ -375,6 +372,7 @@ Status findNearTriangles(Delaunay& fresh, SnapRound& round) {
   ends.build(fresh);
   std::vector<std::int32_t> outOf(n);
   for (std::size_t i = 0; i < n; ++i) {
+    if (!store.live(static_cast<std::uint32_t>(i))) continue;
     outOf[i] = ends.find(fresh, store.segments[i].a);
     if (outOf[i] < 0) return {StatusCode::InternalError, "snap rounding lost the end of a segment"};
   }
@@ -383,6 +381,7 @@ Status findNearTriangles(Delaunay& fresh, SnapRound& round) {
   std::vector<std::int32_t> found;
   round.candidates.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
+    if (!store.live(static_cast<std::uint32_t>(i))) continue;
     int ex, ey;
     const InputSegment s = segmentOf(fresh, i);
     boxExponents(s, ex, ey);
@@ -474,6 +473,7 @@ Status insertChains(Delaunay& fresh, SnapRound& round, bool& bent) {
   std::vector<std::uint32_t> chain;
   const std::uint32_t hotPixels = fresh.vertexCount();
   for (std::size_t i = 0; i < store.segments.size(); ++i) {
+    if (!store.live(static_cast<std::uint32_t>(i))) continue;
     std::vector<std::uint32_t>& list = round.candidates[i];
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());

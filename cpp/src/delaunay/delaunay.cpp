@@ -43,6 +43,10 @@ Delaunay& Delaunay::operator=(Delaunay&& other) noexcept {
   star_ = std::move(other.star_);
   lawson_ = std::move(other.lawson_);
   lawsonTop_ = other.lawsonTop_;
+  ring_ = std::move(other.ring_);
+  spare_[0] = other.spare_[0];
+  spare_[1] = other.spare_[1];
+  slotsReused_ = other.slotsReused_;
   error_ = std::move(other.error_);
   return *this;
 }
@@ -59,6 +63,8 @@ void Delaunay::clear() {
   gridStale_ = false;
   stats = Stats();
   steiner.clear();
+  spare_[0] = spare_[1] = -1;
+  slotsReused_ = false;
 }
 
 std::uint32_t Delaunay::insertVertex(std::uint32_t v) {
@@ -88,8 +94,9 @@ std::uint32_t Delaunay::insertAt(const Hit& h, std::uint32_t v) {
       return topo.tri[h.edge];
     case Hit::Kind::Face:
     case Hit::Kind::Outside: {
-      const std::int32_t t1 = addSlots(2);
-      last_ = splitFace<kConstrained>(h.edge / 3, v, t1, t1 + 1);
+      std::int32_t t1, t2;
+      takeSlotPair(t1, t2);
+      last_ = splitFace<kConstrained>(h.edge / 3, v, t1, t2);
       break;
     }
     case Hit::Kind::Edge: {
@@ -103,8 +110,9 @@ std::uint32_t Delaunay::insertAt(const Hit& h, std::uint32_t v) {
           constraints.split(split[0], split[1], split[2]);
         }
       }
-      const std::int32_t t3 = addSlots(2);
-      last_ = splitEdgeAt<kConstrained>(h.edge, v, t3, t3 + 1);
+      std::int32_t t3, t4;
+      takeSlotPair(t3, t4);
+      last_ = splitEdgeAt<kConstrained>(h.edge, v, t3, t4);
       break;
     }
     case Hit::Kind::Empty:
@@ -174,6 +182,19 @@ std::int32_t Delaunay::addSlots(std::int32_t n) {
   const std::int32_t first = topo.slotCount();
   topo.appendSlots(static_cast<std::size_t>(n));
   return first;
+}
+
+void Delaunay::takeSlotPair(std::int32_t& t1, std::int32_t& t2) {
+  if (spare_[0] < 0) {
+    t1 = addSlots(2);
+    t2 = t1 + 1;
+    return;
+  }
+  t1 = spare_[0];
+  t2 = spare_[1];
+  spare_[0] = spare_[1] = -1;
+  for (const std::int32_t t : {t1, t2})  // as new slots are: zeroed flags
+    topo.fixed[3 * t] = topo.fixed[3 * t + 1] = topo.fixed[3 * t + 2] = 0;
 }
 
 // Fills the k slots around p in counter-clockwise order: slot i becomes (ring[i],

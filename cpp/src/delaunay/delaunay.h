@@ -3,11 +3,13 @@
 // triangle or edge split, then Lawson flips. The hull is closed by a ghost vertex, so points
 // outside the hull need no special case beyond the ghost's in-circle rule.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "base/chunks.h"
 #include "delaunay/point_grid.h"
+#include "delaunay/star_ring.h"
 #include "geocdt/status.h"
 #include "geocdt/triangulation.h"
 #include "mesh/constraint_store.h"
@@ -88,6 +90,28 @@ class Delaunay {
   // Bowyer-Watson insertion). Returns the half-edge from v to the first boundary edge's start.
   std::int32_t fillStar(std::uint32_t v, const std::vector<std::int32_t>& slots,
                         const std::vector<std::int32_t>& boundary);
+  // Editing (vertex_removal.cpp). Removes vertex v, none of whose edges may be constrained
+  // (the caller takes its constraints first): the border of its star is cut into triangles
+  // again and made Delaunay by flips, and two slots are freed. Its coordinates become NaN
+  // and its id is never given again. When the vertices left are all collinear, the
+  // triangulation goes back to having no triangles: its vertices wait again and its
+  // constrained edges become pending segments. out: a half-edge out of v, or -1. With
+  // moving, v is about to be inserted again elsewhere (reinsertVertex): not counted removed.
+  // With freed, some of v's edges were constrained until the caller freed them: what was
+  // hidden behind them may now be seen across the star's border, whose edges are flipped
+  // too where they are no longer Delaunay.
+  Status removeVertex(std::uint32_t v, std::int32_t out = -1, bool moving = false,
+                      bool freed = false);
+  // Inserts vertex v again, at its coordinates in xy, keeping its id (a move). Its place must
+  // not hold another vertex. near: a triangle to walk from (a slot near the new place), or -1
+  // for the grid. The two slots the removal kept spare take the two new triangles.
+  Status reinsertVertex(std::uint32_t v, std::int32_t near = -1);
+  // Into an empty triangulation: the vertices of from[0 .. 2 * count), each keeping its id,
+  // but those removed (NaN), which stay removed (kept_ids.cpp). For rebuilds after edits.
+  Status insertKeepingIds(const double* from, std::uint32_t count);
+  bool isRemoved(std::uint32_t v) const { return std::isnan(xy[2 * static_cast<std::size_t>(v)]); }
+  const std::vector<std::uint32_t>& waiting() const { return pending_; }
+
   // Flips non-constrained edges on the stack until each is locally Delaunay, checking all
   // four edges around each flip: for any edges, not only those around a new vertex.
   void restoreDelaunay();
@@ -159,6 +183,7 @@ class Delaunay {
   Hit walkFrom(double x, double y, std::int32_t t, std::int64_t& step) const;
   Hit scan(double x, double y) const;
   std::int32_t startTriangle(double x, double y, bool fromGrid);
+  bool startsNear(std::int32_t t, double x, double y) const;  // t's first real corner
 
   // The splits and flips, on slots already allocated: the new vertex p ends in third place
   // of every triangle around it, so that the edge facing it is the triangle's first.
@@ -174,6 +199,9 @@ class Delaunay {
   void fillFan(std::uint32_t p, const std::uint32_t (&ring)[k], const std::int32_t (&outer)[k],
                const std::int32_t (&slot)[k]);
   std::int32_t addSlots(std::int32_t n);  // n zeroed slots at the end; returns the first
+  // The two slots an insertion splits into: those a move's removal kept spare, else two new
+  // ones at the end.
+  void takeSlotPair(std::int32_t& t1, std::int32_t& t2);
   void pushLawson(std::int32_t e) {
     if (lawsonTop_ == lawson_.size()) lawson_.resize(2 * lawson_.size() + 64);
     lawson_[lawsonTop_++] = e;
@@ -210,7 +238,14 @@ class Delaunay {
   std::vector<StarEdge> star_;  // fillStar's boundary as it was
   std::vector<std::int32_t> lawson_;
   std::size_t lawsonTop_ = 0;
+  StarRing ring_;  // a removal's scratch
+  // A move's removal keeps its two freed slots for the insertion that follows, instead of
+  // moving the last triangles into them: -1 when there are none.
+  std::int32_t spare_[2] = {-1, -1};
+  bool slotsReused_ = false;  // a removal moved or reused slots: grid hints may lie far
   Status error_;
+
+  friend class VertexRemoval;
 };
 
 }  // namespace geocdt

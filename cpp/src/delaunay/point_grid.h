@@ -29,6 +29,18 @@ class PointGrid {
     return cells_[static_cast<std::size_t>(row(y)) * m_ + column(x)];
   }
 
+  // Whether (ax, ay) lies within two cells of (bx, by) along both axes.
+  bool near(double ax, double ay, double bx, double by) const {
+    const std::uint32_t i = column(ax), j = row(ay), k = column(bx), l = row(by);
+    return (i > k ? i - k : k - i) <= 2 && (j > l ? j - l : l - j) <= 2;
+  }
+  // The hint of the cell di columns and dj rows from (x, y)'s, or -1 beyond the grid.
+  std::int32_t neighbour(double x, double y, int di, int dj) const {
+    const std::int64_t i = std::int64_t{column(x)} + di, j = std::int64_t{row(y)} + dj;
+    if (i < 0 || j < 0 || i >= m_ || j >= m_) return -1;
+    return cells_[static_cast<std::size_t>(j) * m_ + static_cast<std::size_t>(i)];
+  }
+
   // Called after each insertion with the number of points inserted so far.
   void grow(std::uint64_t inserted) {
     if (static_cast<double>(inserted) <= density_ * m_ * m_ || m_ >= kMaxSize) return;

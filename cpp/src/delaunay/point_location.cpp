@@ -1,6 +1,7 @@
 // Point location: a visibility walk from the grid's cell hint or the last triangle, with
 // an exhaustive scan as the guaranteed answer when a walk gives up.
 #include <algorithm>
+#include <utility>
 
 #include "delaunay/delaunay.h"
 #include "geocdt/predicates.h"
@@ -24,6 +25,11 @@ Along alongSegment(const double* a, const double* b, const double* q) {
 }
 
 }  // namespace
+bool Delaunay::startsNear(std::int32_t t, double x, double y) const {
+  const std::uint32_t v = topo.tri[3 * t] != kGhost ? topo.tri[3 * t] : topo.tri[3 * t + 1];
+  return grid_.near(xy[2 * std::size_t{v}], xy[2 * std::size_t{v} + 1], x, y);
+}
+
 std::int32_t Delaunay::startTriangle(double x, double y, bool fromGrid) {
   if (fromGrid) {
     if (gridStale_) {
@@ -31,7 +37,15 @@ std::int32_t Delaunay::startTriangle(double x, double y, bool fromGrid) {
       gridStale_ = false;
     }
     const std::int32_t t = grid_.cellAt(x, y);
-    if (t >= 0 && t < topo.slotCount()) return t;
+    if (t >= 0 && t < topo.slotCount()) {
+      // After removals a cell may name a slot reused far away: a neighbour cell then.
+      if (!slotsReused_ || startsNear(t, x, y)) return t;
+      for (const auto& [di, dj] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
+        const std::int32_t n = grid_.neighbour(x, y, di, dj);
+        if (n >= 0 && n < topo.slotCount() && startsNear(n, x, y)) return n;
+      }
+      return t;
+    }
   }
   if (last_ >= 0 && last_ < topo.slotCount()) return last_;
   return topo.slotCount() > 0 ? 0 : -1;

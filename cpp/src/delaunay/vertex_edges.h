@@ -30,6 +30,9 @@ class VertexEdges {
   }
 
   bool built() const { return !out_.empty(); }
+  // For a table kept across calls (editing): a hint that has gone far (its slot was reused
+  // elsewhere) is replaced by a location from the grid, not a walk from the hint.
+  void locateFromGrid() { fromGrid_ = true; }
 
   // Remembers half-edge e out of vertex v (once built: a call that inserts a few segments
   // into a large triangulation locates their ends instead of paying for a table).
@@ -59,9 +62,12 @@ class VertexEdges {
         const std::int32_t found = n >= 0 ? cornerOf(topo, v, n / 3) : -1;
         if (found >= 0) return remember(v, found);
       }
-      d.setLastTriangle(t);
+      if (!fromGrid_) d.setLastTriangle(t);
     }
-    const Hit h = d.locate(d.xy[2 * v], d.xy[2 * v + 1], false);
+    // From the hint's triangle when there is one, else from the grid (the last triangle may
+    // lie anywhere: an edit's vertices come in no order).
+    const Hit h =
+        d.locate(d.xy[2 * v], d.xy[2 * v + 1], fromGrid_ || !(hint >= 0 && hint < 3 * slots));
     if (h.kind != Hit::Kind::Vertex || topo.tri[h.edge] != v) return -1;
     return remember(v, h.edge);
   }
@@ -78,6 +84,7 @@ class VertexEdges {
   }
 
   std::vector<std::int32_t> out_;
+  bool fromGrid_ = false;
 };
 
 }  // namespace geocdt

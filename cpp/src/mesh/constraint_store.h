@@ -19,6 +19,8 @@ namespace geocdt {
 
 // A polyline point index past what 32 bits number (see ConstraintStore::segmentStarts).
 inline constexpr std::uint32_t kNoSegment = 0xFFFFFFFFu;
+// The ends of a segment whose polyline was removed.
+inline constexpr std::uint32_t kRemovedSegment = 0xFFFFFFFFu;
 
 struct EdgeSource {
   std::uint32_t segment = 0;   // the first input segment: index into ConstraintStore::segments
@@ -129,6 +131,57 @@ class ConstraintStore {
     mark(w, v, src);
   }
 
+  // Editing: takes the pair (polyline, segment) off edge u-v, with its share of the winding.
+  // Returns false when the edge does not carry it; sets emptied (and erases the edge) when it
+  // was the edge's last pair.
+  bool dropPair(std::uint32_t u, std::uint32_t v, std::uint32_t polyline, std::uint32_t segment,
+                bool& emptied) {
+    emptied = false;
+    EdgeSource* e = edges_.find(key(u, v));
+    if (e == nullptr || !dropPair(*e, polyline, segment, emptied)) return false;
+    if (emptied) edges_.erase(key(u, v));
+    return true;
+  }
+  // The same on a source held outside the table (a pending segment's).
+  bool dropPair(EdgeSource& e, std::uint32_t polyline, std::uint32_t segment, bool& emptied) {
+    emptied = false;
+    if (e.polyline == polyline && e.segment == segment) {
+      if (e.extra < 0) {
+        emptied = true;
+        return true;
+      }
+      // The first extra pair takes the first place: the total less this pair's share.
+      std::int32_t extras = 0;
+      for (std::int32_t k = e.extra; k >= 0; k = members_[k].next) extras += members_[k].winding;
+      const ExtraMember promoted = members_[e.extra];
+      e.winding = extras;
+      e.polyline = promoted.polyline;
+      e.segment = promoted.segment;
+      e.extra = promoted.next;
+      return true;
+    }
+    for (std::int32_t k = e.extra, before = -1; k >= 0; before = k, k = members_[k].next) {
+      const ExtraMember m = members_[k];
+      if (m.polyline != polyline || m.segment != segment) continue;
+      e.winding -= m.winding;
+      (before < 0 ? e.extra : members_[before].next) = m.next;
+      return true;
+    }
+    return false;
+  }
+  // f(lower, higher, source) for every constrained edge (windings from lower to higher).
+  template <typename F>
+  void forEachEdge(F&& f) const {
+    edges_.forEach([&](std::uint64_t k, const EdgeSource& e) {
+      f(static_cast<std::uint32_t>(k >> 32), static_cast<std::uint32_t>(k), e);
+    });
+  }
+  // Forgets every constrained edge, keeping the extra pairs they listed (pending segments
+  // made from them hold their lists).
+  void clearEdges() { edges_.clear(); }
+  // Whether segment i is still an input segment (its polyline was not removed).
+  bool live(std::uint32_t i) const { return segments[i].a != kRemovedSegment; }
+
   const EdgeSource* find(std::uint32_t u, std::uint32_t v) const { return edges_.find(key(u, v)); }
   const EdgeSource* find(std::uint64_t edgeKey) const { return edges_.find(edgeKey); }
   // Brings the entries of n keys into the cache before they are looked up (EdgeMap::touch).
@@ -166,6 +219,18 @@ class ConstraintStore {
         seen = members_[j].polyline == p;
       if (!seen) f(p);
     }
+  }
+
+  // f(polyline, segment, winding) for each pair of a stored edge, with its share of the
+  // winding from the lower vertex id to the higher.
+  template <typename F>
+  void forEachPair(const EdgeSource& e, F&& f) const {
+    std::int32_t first = e.winding;
+    for (std::int32_t k = e.extra; k >= 0; k = members_[k].next) {
+      first -= members_[k].winding;
+      f(members_[k].polyline, members_[k].segment, members_[k].winding);
+    }
+    f(e.polyline, e.segment, first);
   }
 
   // Every input segment whose chain holds the edge (several where segments overlap or were

@@ -149,6 +149,13 @@ class EdgeMap {
     return false;
   }
 
+  // f(key, value) for every entry, in no useful order.
+  template <typename F>
+  void forEach(F&& f) const {
+    for (const Entry& e : entries_)
+      if (e.key != kEmpty) f(e.key, e.value);
+  }
+
   void clear() {
     entries_.clear();
     size_ = inserts_ = probes_ = 0;

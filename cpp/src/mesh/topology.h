@@ -1,7 +1,10 @@
 #pragma once
 // Triangles as flat arrays in delaunator's layout, closed by a ghost vertex at infinity so
 // that every half-edge has a twin. Insertions split and flips rewrite triangles in their own
-// slots; no triangle is ever removed, so slots never need recycling.
+// slots. Removing a vertex frees two slots: the last triangles move into them (dropSlot), so
+// the slots stay dense and every loop over them sees only triangles. Whatever remembers a
+// slot (the grid's cells, the last triangle, vertex-to-edge tables) holds hints that are
+// checked when read.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -71,6 +74,24 @@ struct Topology {
       e = adj[prevEdge(e)];
     } while (e != start);
     return -1;
+  }
+
+  // Frees slot t: the last slot's triangle moves into it (its twins told where it went) and
+  // the arrays shrink by one slot. Returns the slot the moved triangle came from (t itself
+  // when t was the last).
+  std::int32_t dropSlot(std::int32_t t) {
+    const std::int32_t last = slotCount() - 1;
+    if (t != last) {
+      for (int k = 0; k < 3; ++k) {
+        const std::int32_t from = 3 * last + k, to = 3 * t + k;
+        tri[to] = tri[from];
+        fixed[to] = fixed[from];
+        adj[to] = adj[from];
+        adj[adj[to]] = to;
+      }
+    }
+    resizeSlots(static_cast<std::size_t>(last));
+    return last;
   }
 
   void link(std::int32_t e, std::int32_t f) {

@@ -71,6 +71,13 @@ async function main(): Promise<void> {
   const where = tri.locate(0.2, 0.2);
   const kind: 'empty' | 'outside' | 'face' | 'edge' | 'vertex' = where.kind;
   const flips: number = tri.stats.flips;
+  const wentAway: boolean = tri.removePoint(v[0]);
+  tri.movePoint(v[1], 0.5, 0.5);
+  surface.removePolyline(0);
+  const outputIds: Uint32Array = tri.results().vertexIds;
+  const stillThere: boolean = tri.hasVertex(v[2]);
+  const removedCount: number = tri.stats.removed;
+  void [wentAway, outputIds, stillThere, removedCount];
   tri.dispose();
   const heap: number = memoryUsage().heapBytes;
 
@@ -117,6 +124,10 @@ async function main(): Promise<void> {
   const rt = worker.createTriangulation();
   await rt.insertPoints(new Int32Array(6), { onProgress: () => {} });
   const located = await rt.locate(0, 0);
+  const remoteWent: boolean = await rt.removePoint(0);
+  await rt.movePoint(1, 0.5, 0.5);
+  await rt.removePolyline(0);
+  void remoteWent;
   const rv = worker.createTriangulation({ valuesPerPoint: 1 });
   await rv.insertPoints([0, 0, 1, 0, 0, 1], [1, 2, 3], { transfer: false });
   const remoteAt: Float64Array = await rv.interpolate([0.1, 0.1], { method: 'linear' });

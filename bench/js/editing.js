@@ -1,0 +1,118 @@
+// Editing in place through the wasm build: 100,000 removals and 100,000 moves of free points
+// from a 1M-point Triangulation, one call each, against the time to insert the 1M points;
+// and removing polylines from meshes of 100k and 1M points of the same density (the larger
+// spreads wider), whose cost must not grow with the mesh. Alternating rounds in one process,
+// medians; each target printed as met or missed.
+//   node --expose-gc bench/js/editing.js [--rounds N] [--quick]
+import { init, Triangulation } from '../../web/index.node.js';
+
+// Uniform points in [0, 1000)^2 (datasets.js's generator, without loading its GeoJSON).
+function uniform(count, seed = 12345) {
+  let s = seed;
+  const xy = new Float64Array(2 * count);
+  for (let i = 0; i < 2 * count; i++) {
+    s = (s * 16807) % 2147483647;
+    xy[i] = (s / 2147483647) * 1000;
+  }
+  return xy;
+}
+
+const option = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i >= 0 ? Number(process.argv[i + 1]) : fallback;
+};
+const quick = process.argv.includes('--quick');
+const rounds = option('--rounds', quick ? 2 : 3);
+const size = quick ? 100_000 : 1_000_000;
+const edits = size / 10;
+const now = () => performance.now();
+const median = (v) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
+const verdict = (met) => (met ? 'met' : 'MISSED');
+const n = (x) => x.toLocaleString('en-US');
+
+await init();
+
+// A deterministic shuffle and places to move to.
+function shuffled(ids, seed) {
+  let s = seed;
+  const next = () => {
+    s = (s * 1103515245 + 12345) % 2147483648;
+    return s / 2147483648;
+  };
+  const out = Uint32Array.from(ids);
+  for (let i = out.length - 1; i > 0; i--) {
+    const j = Math.floor(next() * (i + 1));
+    [out[i], out[j]] = [out[j], out[i]];
+  }
+  return out;
+}
+
+function pointRound(xy, round) {
+  globalThis.gc?.();
+  const t = new Triangulation();
+  const a = now();
+  const ids = t.insertPoints(xy);
+  const b = now();
+  const order = shuffled(ids, 7 + round);
+  const places = uniform(edits, 99 + round);
+  const c = now();
+  for (let k = 0; k < edits; k++) t.removePoint(order[k]);
+  const d = now();
+  for (let k = 0; k < edits; k++) t.movePoint(order[edits + k], places[2 * k], places[2 * k + 1]);
+  const e = now();
+  t.dispose();
+  return { insert: b - a, removals: d - c, moves: e - d };
+}
+
+// 200 polylines of 20 points, alternately near-horizontal and near-vertical across
+// [100, 900]^2, in a mesh of `points` at 0.1 points a square unit: the time to remove them
+// all, one call each, per crossing they had made.
+function lineRound(points, round) {
+  globalThis.gc?.();
+  const t = new Triangulation();
+  const side = Math.sqrt(points * 10);
+  const xy = uniform(points, 31 + round).map((v) => (v * side) / 1000);
+  t.insertPoints(xy);
+  const jitter = uniform(4000, 41 + round);
+  for (let k = 0; k < 200; k++) {
+    const base = 100 + 0.8 * jitter[k];
+    const line = [];
+    for (let i = 0; i < 20; i++) {
+      const along = 100 + (800 * i) / 19, across = base + (jitter[200 + 20 * k + i] - 500) * 0.01;
+      line.push(k % 2 ? across : along, k % 2 ? along : across);
+    }
+    t.insertPolyline(line);
+  }
+  const crossings = t.stats.crossings;
+  const a = now();
+  for (let k = 0; k < 200; k++) t.removePolyline(k);
+  const ms = now() - a;
+  t.dispose();
+  return { perCrossing: ms / crossings, crossings };
+}
+
+const xy = uniform(size, 1);
+const rows = [];
+const small = [], large = [];
+for (let round = 0; round < rounds; round++) {
+  rows.push(pointRound(xy, round));
+  small.push(lineRound(size / 10, round));
+  large.push(lineRound(size, round));
+}
+const insert = median(rows.map((r) => r.insert));
+const removalRatio = median(rows.map((r) => r.removals / r.insert));
+const moveRatio = median(rows.map((r) => r.moves / r.insert));
+const smallCost = median(small.map((r) => r.perCrossing));
+const largeCost = median(large.map((r) => r.perCrossing));
+console.log(`## Editing, ${n(size)} points (${rounds} rounds, medians)\n`);
+console.log(`- inserting the points: ${insert.toFixed(0)} ms`);
+console.log(`- ${n(edits)} removals, one call each: `
+  + `${median(rows.map((r) => r.removals)).toFixed(0)} ms = ${removalRatio.toFixed(3)}× `
+  + `(target ≤ 0.5×, aim 0.25×): ${verdict(removalRatio <= 0.5)}`);
+console.log(`- ${n(edits)} moves of free points: `
+  + `${median(rows.map((r) => r.moves)).toFixed(0)} ms = ${moveRatio.toFixed(3)}× `
+  + `(target ≤ 1.0×): ${verdict(moveRatio <= 1.0)}`);
+console.log(`- removing 200 polylines: ${(1000 * smallCost).toFixed(2)} µs a crossing at `
+  + `${n(size / 10)} points (${n(small[0].crossings)} crossings), `
+  + `${(1000 * largeCost).toFixed(2)} µs at ${n(size)}: ${(largeCost / smallCost).toFixed(2)}× `
+  + `(target: within 1.5×): ${verdict(largeCost / smallCost <= 1.5)}`);
