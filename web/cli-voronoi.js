@@ -1,9 +1,9 @@
 // geocdt voronoi in.geojson -o out.geojson [--clip rings|hull|xmin,ymin,xmax,ymax] [--lloyd N]
 // The cells of a GeoJSON's points clipped to its polygons (or a box, or their hull), written as
 // a FeatureCollection with one feature per point.
-import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
+import { readInput } from './cli-input.js';
 import { init, voronoiGeoJSON } from './index.node.js';
 import { cellsToGeoJSON } from './voronoi-geojson.js';
 
@@ -62,13 +62,6 @@ function clipOf(text) {
     throw new VoronoiUsageError(`--clip must be rings, hull or xmin,ymin,xmax,ymax, not ${text}`);
   }
   return box;
-}
-
-async function readInput(path) {
-  if (path !== '-') return readFile(path, 'utf8');
-  const chunks = [];
-  for await (const chunk of process.stdin) chunks.push(chunk);
-  return Buffer.concat(chunks).toString('utf8');
 }
 
 // Feature by feature, so that no string of the whole collection is ever made.

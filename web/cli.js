@@ -5,6 +5,7 @@
 import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
+import { readInput } from './cli-input.js';
 import { geoJSONToInput, init, triangulate, triangulateRaster } from './index.node.js';
 import { geoJSONResult } from './geojson.js';
 import { writeGeoJSON } from './geojson-writer.js';
@@ -117,13 +118,6 @@ function parseArgs(argv) {
     throw new UsageError(`--fill-rule must be evenodd or nonzero, not ${args.fillRule}`);
   }
   return args;
-}
-
-async function readInput(path) {
-  if (path !== '-') return readFile(path, 'utf8');
-  const chunks = [];
-  for await (const chunk of process.stdin) chunks.push(chunk);
-  return Buffer.concat(chunks).toString('utf8');
 }
 
 const n = (x) => x.toLocaleString('en-US');

@@ -55,6 +55,17 @@ function copyOffsets(heap, at, offsets, name) {
   }
 }
 
+// The error for the bad coordinate `point` of the points (polyline < 0) or of a polyline, as
+// checkInput() gave them.
+function inputCoordinateError(points, lines, polyline, point) {
+  if (polyline < 0) return coordinateError(points, 'points', 0, point, '');
+  return lines.arrays === undefined
+    ? coordinateError(lines.coords, 'polylines.coords', 2 * lines.offsets[polyline], point,
+      ` of polyline ${polyline}`)
+    : coordinateError(lines.arrays[polyline], `polylines[${polyline}]`, 0, point,
+      ` of polyline ${polyline}`);
+}
+
 export class Kernel {
   // threads: what the core may use for a large batch of points (1 in the single-threaded
   // build).
@@ -372,13 +383,7 @@ export class Kernel {
       this.input.clear();
       this.leave();
     }
-    this.check(ok, (polyline, point) => polyline < 0
-      ? coordinateError(points, 'points', 0, point, '')
-      : lines.arrays === undefined
-        ? coordinateError(lines.coords, 'polylines.coords', 2 * lines.offsets[polyline], point,
-          ` of polyline ${polyline}`)
-        : coordinateError(lines.arrays[polyline], `polylines[${polyline}]`, 0, point,
-          ` of polyline ${polyline}`));
+    this.check(ok, (polyline, point) => inputCoordinateError(points, lines, polyline, point));
     progress.rethrow();
     const mesh = this.takeMesh({
       inputToVertex: true, inside: o.insideFlags, regions: polygons !== undefined,
@@ -517,13 +522,7 @@ export class Kernel {
       this.input.clear();
       this.leave();
     }
-    this.check(ok, (polyline, point) => polyline < 0
-      ? coordinateError(points, 'points', 0, point, '')
-      : lines.arrays === undefined
-        ? coordinateError(lines.coords, 'polylines.coords', 2 * lines.offsets[polyline], point,
-          ` of polyline ${polyline}`)
-        : coordinateError(lines.arrays[polyline], `polylines[${polyline}]`, 0, point,
-          ` of polyline ${polyline}`));
+    this.check(ok, (polyline, point) => inputCoordinateError(points, lines, polyline, point));
     try {
       const cells = {
         coords: this.read('coords'),

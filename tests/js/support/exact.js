@@ -20,7 +20,7 @@ function decompose(v) {
 }
 
 // The values as BigInts over their lowest common unit.
-function integers(values) {
+export function integers(values) {
   const parts = values.map(decompose);
   const base = Math.min(...parts.map(([m, e]) => (m === 0n ? Infinity : e)));
   return parts.map(([m, e]) => (m === 0n ? 0n : m << BigInt(e - base)));

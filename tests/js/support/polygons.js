@@ -12,31 +12,13 @@
 //    triangulate({ polylines: rings }, { keep: 'inside' }) with the same fill rule.
 import assert from 'node:assert/strict';
 import { triangulate } from 'geocdt';
-import { chainBound, withinDistance } from './exact.js';
+import { chainBound, integers, withinDistance } from './exact.js';
 import { inCircle, orient } from './predicates.js';
-
-const view = new DataView(new ArrayBuffer(8));
-
-// v as [mantissa BigInt, exponent]: v = mantissa * 2^exponent.
-function decompose(v) {
-  view.setFloat64(0, v);
-  const hi = view.getUint32(0), lo = view.getUint32(4);
-  const biased = (hi >>> 20) & 0x7ff;
-  let mantissa = (BigInt(hi & 0xfffff) << 32n) | BigInt(lo);
-  let exponent = -1074;
-  if (biased !== 0) {
-    mantissa |= 1n << 52n;
-    exponent = biased - 1075;
-  }
-  return [hi >>> 31 ? -mantissa : mantissa, exponent];
-}
 
 // Twice the area of the triangles (flat x, y of each corner, 6 numbers a triangle), exactly:
 // the numbers as BigInts over their lowest common unit.
 function exactDoubledArea(corners) {
-  const parts = Array.from(corners, decompose);
-  const base = Math.min(...parts.map(([m, e]) => (m === 0n ? Infinity : e)));
-  const n = parts.map(([m, e]) => (m === 0n ? 0n : m << BigInt(e - base)));
+  const n = integers(Array.from(corners));
   let sum = 0n;
   for (let i = 0; i < n.length; i += 6) {
     sum += (n[i + 2] - n[i]) * (n[i + 5] - n[i + 1]) - (n[i + 3] - n[i + 1]) * (n[i + 4] - n[i]);
