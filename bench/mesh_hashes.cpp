@@ -276,8 +276,8 @@ void addCanonical(Report& r, const geocdt::Mesh& m) {
 // Points removed and moved one call each, in an order of their own, on n uniform points.
 Case pointEditsCase(std::size_t n) {
   return [=](Report& r) {
-    const std::vector<double> xy = bench::uniformPoints(n, 13);
-    const std::vector<double> to = bench::uniformPoints(n / 5, 17);
+    const std::vector<double> xy = bench::uniformPointsMt19937(n, 13);
+    const std::vector<double> to = bench::uniformPointsMt19937(n / 5, 17);
     geocdt::Triangulation t;
     std::vector<std::uint32_t> ids(n);
     check(t.insertPoints(xy.data(), n, ids.data()), "points");
