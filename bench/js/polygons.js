@@ -164,7 +164,7 @@ function encodeSet(set) {
   const keys = ['coords', 'ringOffsets', 'polygonOffsets'];
   const header = Buffer.from(JSON.stringify({ arrays: keys.map((key) =>
     ({ key, type: set[key].constructor.name, length: set[key].length })) }));
-  const padded = 4 + Math.ceil(header.length / 8) * 8;
+  const padded = Math.ceil((4 + header.length) / 8) * 8;  // 8-aligned arrays (Float64Array)
   const parts = [Buffer.alloc(padded)];
   parts[0].writeUInt32LE(header.length, 0);
   header.copy(parts[0], 4);
@@ -208,7 +208,7 @@ async function inPage(names, rounds) {
     const buffer = await (await fetch(`/data/${name}`)).arrayBuffer();
     const length = new DataView(buffer).getUint32(0, true);
     const header = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, length)));
-    let at = 4 + Math.ceil(length / 8) * 8;
+    let at = Math.ceil((4 + length) / 8) * 8;
     const set = {};
     for (const { key, type, length: n } of header.arrays) {
       set[key] = new types[type](buffer, at, n);
