@@ -8,7 +8,7 @@
 import { Delaunay } from 'd3-delaunay';
 import { init, triangulate, voronoi } from 'geocdt';
 import { median, threadCpuClock } from './timing.js';
-import { countryRings, uniform } from './datasets.js';
+import { countryRings, uniformLehmer as uniform } from './datasets.js';
 
 function option(name, fallback) {
   const i = process.argv.indexOf(name);
