@@ -35,6 +35,17 @@ int locateInRing(const XY* p, std::size_t n, XY q) {
   return winding != 0 ? 1 : 0;
 }
 
+// Whether the ring p[0 .. n) (no repeated neighbours) runs counter-clockwise, exactly: every
+// corner at its lowest-leftmost vertex is convex. Its area in doubles can underflow to zero.
+bool counterClockwise(const XY* p, std::size_t n) {
+  if (n < 3) return false;
+  std::size_t low = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (p[i].y < p[low].y || (p[i].y == p[low].y && p[i].x < p[low].x)) low = i;
+  const XY a = p[low == 0 ? n - 1 : low - 1], b = p[low], c = p[low + 1 == n ? 0 : low + 1];
+  return orient2d(a.x, a.y, b.x, b.y, c.x, c.y) == Sign::Positive;
+}
+
 }  // namespace
 
 Status CellAssembler::assemble(std::uint32_t v, const std::int32_t* pieces, std::size_t count,
@@ -161,8 +172,8 @@ void CellAssembler::addLoops() {
     if (p->exit >= 0) continue;
     const auto begin = static_cast<std::uint32_t>(scratch_.size());
     emitPiece(*p);
-    const std::uint32_t ring = finishRing(begin);
-    isOuter_.push_back(rings_[ring].area > 0);
+    const Ring& ring = rings_[finishRing(begin)];
+    isOuter_.push_back(counterClockwise(scratch_.data() + ring.begin, ring.end - ring.begin));
   }
 }
 
@@ -192,9 +203,21 @@ std::uint32_t CellAssembler::finishRing(std::uint32_t begin) {
   return static_cast<std::uint32_t>(rings_.size() - 1);
 }
 
-// Each hole goes to the smallest outer ring that holds one of its points not on that ring
-// (outer rings of one cell nest only where an island lies in a lake). Should rounding leave a
-// hole in none, it goes to the largest.
+// Whether ring `inner` lies inside ring `outer`, by its first point not on `outer` (rings of one
+// cell meet only at vertices, so one point decides).
+bool CellAssembler::holds(const Ring& outer, const Ring& inner) const {
+  if (inner.low.x < outer.low.x || inner.low.y < outer.low.y || inner.high.x > outer.high.x ||
+      inner.high.y > outer.high.y)
+    return false;
+  int where = -1;
+  for (std::uint32_t i = inner.begin; i < inner.end && where < 0; ++i)
+    where = locateInRing(scratch_.data() + outer.begin, outer.end - outer.begin, scratch_[i]);
+  return where == 1;
+}
+
+// Each hole goes to the innermost outer ring that holds it (outer rings of one cell nest only
+// where an island lies in a lake). Decided by position, not area, which can underflow. Should
+// rounding leave a hole in none, it goes to the largest.
 void CellAssembler::placeHoles() {
   for (std::size_t h = 0; h < rings_.size(); ++h) {
     if (isOuter_[h]) continue;
@@ -204,14 +227,8 @@ void CellAssembler::placeHoles() {
       const Ring& ring = rings_[o];
       if (!isOuter_[o]) continue;
       if (largest < 0 || ring.area > rings_[largest].area) largest = static_cast<std::int32_t>(o);
-      if (hole.low.x < ring.low.x || hole.low.y < ring.low.y || hole.high.x > ring.high.x ||
-          hole.high.y > ring.high.y)
-        continue;
-      if (best >= 0 && ring.area >= rings_[best].area) continue;
-      int where = -1;
-      for (std::uint32_t i = hole.begin; i < hole.end && where < 0; ++i)
-        where = locateInRing(scratch_.data() + ring.begin, ring.end - ring.begin, scratch_[i]);
-      if (where == 1) best = static_cast<std::int32_t>(o);
+      if (best >= 0 && !holds(rings_[best], ring)) continue;
+      if (holds(ring, hole)) best = static_cast<std::int32_t>(o);
     }
     hole.container = best >= 0 ? best : largest;
   }

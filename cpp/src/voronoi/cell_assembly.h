@@ -51,6 +51,7 @@ class CellAssembler {
   void addLoops();
   void addWholeCell(std::uint32_t v);
   std::uint32_t finishRing(std::uint32_t begin);
+  bool holds(const Ring& outer, const Ring& inner) const;
   void placeHoles();
   void write(CellPolygons& out) const;
 
