@@ -188,11 +188,37 @@ Hit GreedyMesher::locateIn(std::int32_t t, double x, double y) {
   return {Hit::Kind::Vertex, -1};
 }
 
+// A pixel in a face within kEdgeReach of one of its constrained edges (a breakline whose
+// chain runs through a rounded crossing passes beside the pixels on it) goes onto that edge:
+// the chain bends through it, by no more than that, instead of passing a pixel-less sliver
+// away with the heights of its far ends. Only where all four triangles of the split keep
+// their orientation, and not on the hull, which must stay convex.
+Hit GreedyMesher::ontoConstraint(const Hit& face, double x, double y) const {
+  const double* xy = d_.xy.data();
+  const auto orient = [&](std::uint32_t a, std::uint32_t b) {
+    return orient2d(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1], x, y);
+  };
+  const std::int32_t t = face.edge / 3;
+  for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e) {
+    if (!topo_.fixed[e]) continue;
+    const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
+    const double ax = xy[2 * a], ay = xy[2 * a + 1], bx = xy[2 * b], by = xy[2 * b + 1];
+    const double cross = (bx - ax) * (y - ay) - (by - ay) * (x - ax);
+    if (!(std::fabs(cross) <= kEdgeReach * std::hypot(bx - ax, by - ay))) continue;
+    const std::uint32_t beyond = topo_.tri[prevEdge(topo_.adj[e])];
+    if (beyond == kGhost) continue;
+    if (orient(beyond, b) == Sign::Positive && orient(a, beyond) == Sign::Positive)
+      return {Hit::Kind::Edge, e};
+  }
+  return face;
+}
+
 bool GreedyMesher::insertTriangleCandidate(std::int32_t t) {
   const auto pixel = static_cast<std::size_t>(candidate_[t]);
   const double x = static_cast<double>(pixel % raster_.width());
   const double y = static_cast<double>(pixel / raster_.width());
-  const Hit h = locateIn(t, x, y);
+  Hit h = locateIn(t, x, y);
+  if (h.kind == Hit::Kind::Face) h = ontoConstraint(h, x, y);
   if (h.kind == Hit::Kind::Vertex) {  // a vertex not made from this pixel sits on it
     skip_[pixel] = 1;
     measureTriangle(t);

@@ -68,6 +68,7 @@ class GreedyMesher {
   // Inserts the pixel at (i, j) as vertex, located by h; false on a failure of the core.
   bool insertPixel(std::size_t pixel, const Hit& h);
   Hit locateIn(std::int32_t t, double x, double y);
+  Hit ontoConstraint(const Hit& face, double x, double y) const;
   std::int32_t edgeBetween(std::uint32_t a, std::uint32_t b) const;
   // Returns a half-edge out of v.
   std::int32_t afterInsert(std::uint32_t v);

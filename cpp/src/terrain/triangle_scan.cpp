@@ -31,15 +31,8 @@ Edge edge(const Corner& p, const Corner& q) {
   return {p.x, p.y, p.y < q.y ? (q.x - p.x) / (q.y - p.y) : 0.0};
 }
 
-// Spans reach this far (in pixels) past their edges' computed crossings: a pixel on an edge,
-// which rounding may put a little outside both triangles beside it (a sliver's two edges can
-// cross a row in the wrong order), is then scanned by both. Rounding errs far less (a few
-// ulps of the raster's size), and a pixel that close to an edge is on it: the plane it is
-// measured against is the neighbour's, extended by nothing that shows.
-constexpr double kReach = 0x1p-20;
-
 // The pixels of rows first..last between two edges, `left` of `right` all the way (their
-// crossings with a row, widened by kReach and rounded inwards). The triangle lies inside the
+// crossings with a row, widened by kEdgeReach and rounded inwards). The triangle lies inside the
 // raster, but a widened span may reach past its first or last column: clamped.
 struct Rows {
   const double* heights;
@@ -56,8 +49,8 @@ void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t f
   const auto lastColumn = static_cast<std::int64_t>(r.width) - 1;
   for (std::int64_t j = first; j <= last; ++j) {
     const auto y = static_cast<double>(j);
-    const std::int64_t i0 = std::max<std::int64_t>(0, ceilOf(left.at(y) - kReach));
-    const std::int64_t i1 = std::min(lastColumn, std::int64_t{floorOf(right.at(y) + kReach)});
+    const std::int64_t i0 = std::max<std::int64_t>(0, ceilOf(left.at(y) - kEdgeReach));
+    const std::int64_t i1 = std::min(lastColumn, std::int64_t{floorOf(right.at(y) + kEdgeReach)});
     if (i1 < i0) continue;
     scanned += static_cast<std::uint64_t>(i1 - i0 + 1);
     const std::size_t rowStart = static_cast<std::size_t>(j) * r.width;
@@ -95,13 +88,13 @@ ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raste
   const double gx = (uz * vy - vz * uy) * inverse, gy = (ux * vz - vx * uz) * inverse;
   const Rows rows{raster.heights(), skip, raster.width(), a.z - gx * a.x - gy * a.y, gx, gy};
   // Rows below b lie between edges ac and ab, rows from b on between ac and bc; b is right
-  // of ac when det > 0. Rows within kReach of a corner's row count (rounding aside, a corner's
+  // of ac when det > 0. Rows within kEdgeReach of a corner's row count (rounding aside, a corner's
   // row is an integer only when it is a pixel's).
   const Edge ac = edge(a, c);
   const auto lastRow = static_cast<std::int64_t>(raster.height()) - 1;
-  const std::int64_t first = std::max<std::int64_t>(0, ceilOf(a.y - kReach));
+  const std::int64_t first = std::max<std::int64_t>(0, ceilOf(a.y - kEdgeReach));
   const std::int64_t middle = ceilOf(b.y);
-  const std::int64_t last = std::min(lastRow, std::int64_t{floorOf(c.y + kReach)});
+  const std::int64_t last = std::min(lastRow, std::int64_t{floorOf(c.y + kEdgeReach)});
   const bool bRight = det > 0;
   if (middle > first) {
     const Edge ab = edge(a, b);

@@ -8,6 +8,14 @@
 
 namespace geocdt::terrain {
 
+// Spans reach this far (in pixels) past their edges' computed crossings: a pixel on an edge,
+// which rounding may put a little outside both triangles beside it (a sliver's two edges can
+// cross a row in the wrong order), is then scanned by both. Rounding errs far less (a few
+// ulps of the raster's size), and a pixel that close to an edge is on it: the plane it is
+// measured against is the neighbour's, extended by nothing that shows. The mesher inserts a
+// pixel that close to a constrained edge onto the edge.
+constexpr double kEdgeReach = 0x1p-20;
+
 struct Corner {
   double x, y, z;
 };
