@@ -266,14 +266,14 @@ Outcome Refiner::splitSubsegment(std::int32_t e, bool forced) {
   const SplitSite site = splitSite(e);
   double px = 0, py = 0;
   splitPoint(site, px, py);
-  bool fits = fitsAt(site, px, py);
-  // Left whole where another input segment runs along it ulps away (overlapping_segments.h).
+  bool fits = site.hull ? fitsOnHull(site, px, py) : fitsAt(site, px, py);
+  // Left whole where another input segment runs along it ulps away (overlapping_segments.h),
+  // on the hull too.
   const unsigned splitEnds =
       (segmentAt(site.a) != kNoSegment ? 1u : 0u) | (segmentAt(site.b) != kNoSegment ? 2u : 0u);
   if (fits && site.input &&
       runsAlongAnotherSegment(d_, vertexEdge_, site.a, site.b, site.id, site.s, splitEnds))
     fits = false;
-  if (site.hull) fits = fitsOnHull(site, px, py);
   if (!fits) {
     unsplittable_.insert(ConstraintStore::key(site.a, site.b));
     return Outcome::Skipped;
