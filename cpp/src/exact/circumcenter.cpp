@@ -29,7 +29,8 @@ XY exactCircumcenter(XY a, XY b, XY c) {
 // (2 d x e). In doubles each difference errs by u (2^-53) of itself, |d|^2 by 4u, the
 // numerators by 7u of M = |e.y| |d|^2 + |d.y| |e|^2 (M' alike), d x e by 4u of its permanent P;
 // so an offset o = n / (2 det) errs by at most (3.5u M / |det| + |o| (rho + u)) / (1 - rho),
-// rho = 4u P / |det|, and the sum with a by u of itself more. The bound below rounds those
+// rho = 4u P / |det|, and the sum with a by u of itself more; a numerator's products that
+// underflow add 2^-1075 each. The bound below rounds those
 // constants up (its own roundings are far smaller). The exact path's quotients err by 2^-49
 // of R, the final sums by 2^-53 of M + R.
 XY circumcenter(XY a, XY b, XY c) {
@@ -46,8 +47,11 @@ XY circumcenter(XY a, XY b, XY c) {
   const double m =
       std::fabs(ey) * bl + std::fabs(dy) * cl + std::fabs(dx) * cl + std::fabs(ex) * bl;
   const double offset = std::fabs(ox) + std::fabs(oy);
-  const double error = (4 * u * m / absDet + offset * (rho + u)) / (1 - 2 * rho) +
-                       u * (std::fabs(centre.x) + std::fabs(centre.y));
+  // The numerators' products can underflow where bl, cl and det do not (they are of degree
+  // three): each then errs by up to 2^-1075 absolutely, which 2^-1070 / |det| covers.
+  const double error =
+      (4 * u * m / absDet + 0x1p-1070 / absDet + offset * (rho + u)) / (1 - 2 * rho) +
+      u * (std::fabs(centre.x) + std::fabs(centre.y));
   // a's coordinates alone: a tolerance no larger than the stated one.
   const double tolerance = kCircumcenterTolerance * (larger(std::fabs(a.x), std::fabs(a.y)) +
                                                      larger(std::fabs(ox), std::fabs(oy)));
