@@ -70,6 +70,40 @@ void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t f
   out.scanned += scanned;
 }
 
+// Whether p is a pixel of the raster (whole coordinates inside it), and which.
+bool pixelAt(const Corner& p, const RasterSampler& raster, std::size_t& pixel) {
+  // Below 2^26, so that det is exact.
+  if (!(p.x >= 0 && p.y >= 0 && p.x < raster.width() && p.y < raster.height() && p.x < 0x1p26 &&
+        p.y < 0x1p26))
+    return false;
+  const auto i = static_cast<std::uint32_t>(p.x), j = static_cast<std::uint32_t>(p.y);
+  if (static_cast<double>(i) != p.x || static_cast<double>(j) != p.y) return false;
+  pixel = raster.pixel(i, j);
+  return true;
+}
+
+// Whether abc is a lattice triangle of area 1/2 or 1 (|det| 1 or 2, exact for pixel
+// positions) whose corners are skipped: it then holds no other pixel, or exactly one more, at
+// the middle of the edge whose ends differ by even numbers (Pick's theorem), and its rows need
+// not be walked. Most triangles are such at fine error bounds.
+bool smallLatticeTriangle(const Corner& a, const Corner& b, const Corner& c, double det,
+                          const RasterSampler& raster, const std::uint8_t* skip) {
+  const double size = std::fabs(det);
+  if (size != 1 && size != 2) return false;
+  std::size_t pa, pb, pc;
+  return pixelAt(a, raster, pa) && pixelAt(b, raster, pb) && pixelAt(c, raster, pc) && skip[pa] &&
+         skip[pb] && skip[pc];
+}
+
+// The pixel in the middle of the lattice edge pq whose ends differ by even numbers, if pq is it.
+bool middlePixel(const Corner& p, const Corner& q, double& x, double& y) {
+  const auto dx = static_cast<std::int64_t>(q.x - p.x), dy = static_cast<std::int64_t>(q.y - p.y);
+  if ((dx & 1) != 0 || (dy & 1) != 0) return false;
+  x = p.x + static_cast<double>(dx / 2);
+  y = p.y + static_cast<double>(dy / 2);
+  return true;
+}
+
 }  // namespace
 
 ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raster,
@@ -83,10 +117,27 @@ ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raste
   const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
   const double det = ux * vy - vx * uy;
   if (!(det != 0)) return r;
+  const bool small = smallLatticeTriangle(a, b, c, det, raster, skip);
+  if (small && std::fabs(det) == 1) return r;
   // The plane z = a.z + gx (x - a.x) + gy (y - a.y).
   const double inverse = 1 / det;
   const double gx = (uz * vy - vz * uy) * inverse, gy = (ux * vz - vx * uz) * inverse;
   const Rows rows{raster.heights(), skip, raster.width(), a.z - gx * a.x - gy * a.y, gx, gy};
+  if (small) {
+    // One pixel besides the corners, measured as scanRows would.
+    double x = 0, y = 0;
+    if (!middlePixel(a, b, x, y) && !middlePixel(b, c, x, y)) middlePixel(a, c, x, y);
+    const std::size_t pixel =
+        raster.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+    const double rowBase = rows.base + rows.gy * y;
+    const double e = std::fabs(rows.heights[pixel] - (rowBase + rows.gx * x));
+    r.scanned = 1;
+    if (e > 0 && !skip[pixel]) {
+      r.error = e;
+      r.pixel = static_cast<std::int64_t>(pixel);
+    }
+    return r;
+  }
   // Rows below b lie between edges ac and ab, rows from b on between ac and bc; b is right
   // of ac when det > 0. Rows within kEdgeReach of a corner's row count (rounding aside, a corner's
   // row is an integer only when it is a pixel's).
