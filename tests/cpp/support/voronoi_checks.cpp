@@ -332,9 +332,14 @@ std::string checkVertices(const VoronoiCells& c, const std::vector<double>& site
         continue;
       const double size = std::max(std::fabs(x), std::fabs(y));
       const double own = std::hypot(x - sx, y - sy);
-      const double along = std::max(0.0, grid.segmentAt(x, y, [&](double length) {
-        return kVertexSlack * (size + own + length) + kSubnormalSlack;
-      }));
+      // The longest segment through v (as in vertexMove): near a domain vertex a crossing
+      // of a long segment, rounded by its length, also lies within rounding of a short one.
+      const double along = std::max(
+          0.0,
+          grid.segmentAt(
+              x, y,
+              [&](double length) { return kVertexSlack * (size + own + length) + kSubnormalSlack; },
+              true));
       const double excess = own - std::hypot(x - tx, y - ty);
       if (excess > kVertexSlack * (size + own + along) + kSubnormalSlack)
         return "vertex (" + number(x) + ", " + number(y) + ") of site " + std::to_string(i) + " (" +
