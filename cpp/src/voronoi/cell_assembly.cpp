@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "exact/fixed_point.h"
 #include "voronoi/crossing_point.h"
 #include "voronoi/perturbation.h"
 
@@ -35,15 +36,33 @@ int locateInRing(const XY* p, std::size_t n, XY q) {
   return winding != 0 ? 1 : 0;
 }
 
-// Whether the ring p[0 .. n) (no repeated neighbours) runs counter-clockwise, exactly: every
-// corner at its lowest-leftmost vertex is convex. Its area in doubles can underflow to zero.
+// Whether the ring p[0 .. n) (not closed) runs counter-clockwise: the sign of its area, from
+// doubles where their error bound decides it, else exactly. Its area in doubles can underflow
+// to zero, and a loop that touches itself at a vertex has no corner to read the sign from.
 bool counterClockwise(const XY* p, std::size_t n) {
-  if (n < 3) return false;
-  std::size_t low = 0;
-  for (std::size_t i = 1; i < n; ++i)
-    if (p[i].y < p[low].y || (p[i].y == p[low].y && p[i].x < p[low].x)) low = i;
-  const XY a = p[low == 0 ? n - 1 : low - 1], b = p[low], c = p[low + 1 == n ? 0 : low + 1];
-  return orient2d(a.x, a.y, b.x, b.y, c.x, c.y) == Sign::Positive;
+  double twice = 0, magnitude = 0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double ax = p[i].x - p[0].x, ay = p[i].y - p[0].y;
+    const double bx = p[i + 1].x - p[0].x, by = p[i + 1].y - p[0].y;
+    twice += ax * by - ay * bx;
+    magnitude += std::fabs(ax * by) + std::fabs(ay * bx);
+  }
+  // Differences, products and sums each err by 2^-53 of what they add, products that
+  // underflow by 2^-1075.
+  const auto count = static_cast<double>(n);
+  const double bound = 8 * count * 0x1p-53 * magnitude + count * 0x1p-1070;
+  if (std::fabs(twice) > bound) return twice > 0;
+  int base = 1 << 20;
+  for (std::size_t i = 0; i < n; ++i)
+    base = std::min({base, fixed::unitExponent(p[i].x), fixed::unitExponent(p[i].y)});
+  if (base == 1 << 20) return false;  // every point at the origin
+  fixed::Number sum;
+  for (std::size_t i = 0; i < n; ++i) {
+    const XY a = p[i], b = p[i + 1 == n ? 0 : i + 1];
+    sum = fixed::sum(sum, fixed::product(fixed::fixed(a.x, base), fixed::fixed(b.y, base)));
+    sum = fixed::difference(sum, fixed::product(fixed::fixed(b.x, base), fixed::fixed(a.y, base)));
+  }
+  return fixed::signOf(sum) == Sign::Positive;
 }
 
 }  // namespace
