@@ -317,18 +317,23 @@ std::string checkInside(const PolygonView& v, FillRule fill, std::size_t p) {
       strictlyInside = strictlyInside && orient2d(u.x, u.y, w.x, w.y, q.x, q.y) == Sign::Positive;
     }
     if (!strictlyInside) continue;
-    int winding = 0;
-    if (!v.winding(q, winding))
-      return describe("polygon ", p, " triangle ", t, ": a ring segment passes through it");
-    if (inside(winding, fill)) continue;
     // Within the crossings' bound of two segments that cross, the rings' chains bend (README,
-    // known limitations): the exact segments' winding says nothing there.
+    // known limitations): the exact segments say nothing there, neither the winding nor
+    // whether one of them passes through the triangle.
     const double slack =
         4 * PolygonView::spacing(std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(bb.x),
                                            std::fabs(bb.y), std::fabs(cc.x), std::fabs(cc.y)}));
-    if (v.crossingNear(std::min({a.x, bb.x, cc.x}) - slack, std::min({a.y, bb.y, cc.y}) - slack,
-                       std::max({a.x, bb.x, cc.x}) + slack, std::max({a.y, bb.y, cc.y}) + slack))
-      continue;
+    const auto nearCrossing = [&] {
+      return v.crossingNear(
+          std::min({a.x, bb.x, cc.x}) - slack, std::min({a.y, bb.y, cc.y}) - slack,
+          std::max({a.x, bb.x, cc.x}) + slack, std::max({a.y, bb.y, cc.y}) + slack);
+    };
+    int winding = 0;
+    if (!v.winding(q, winding)) {
+      if (nearCrossing()) continue;
+      return describe("polygon ", p, " triangle ", t, ": a ring segment passes through it");
+    }
+    if (inside(winding, fill) || nearCrossing()) continue;
     return describe("polygon ", p, " triangle ", t, " is outside (winding ", winding, ")");
   }
   return "";
