@@ -30,9 +30,9 @@ XY exactCircumcenter(XY a, XY b, XY c) {
 // numerators by 7u of M = |e.y| |d|^2 + |d.y| |e|^2 (M' alike), d x e by 4u of its permanent P;
 // so an offset o = n / (2 det) errs by at most (3.5u M / |det| + |o| (rho + u)) / (1 - rho),
 // rho = 4u P / |det|, and the sum with a by u of itself more; a numerator's products that
-// underflow add 2^-1075 each. The bound below rounds those
-// constants up (its own roundings are far smaller). The exact path's quotients err by 2^-49
-// of R, the final sums by 2^-53 of M + R.
+// underflow add 2^-1075 each. The bound below rounds those constants up (its own roundings
+// are far smaller). The exact path's quotients err by 2^-49 of R, the final sums by 2^-53 of
+// M + R.
 XY circumcenter(XY a, XY b, XY c) {
   constexpr double u = bounded::kUnit;
   const double dx = b.x - a.x, dy = b.y - a.y, ex = c.x - a.x, ey = c.y - a.y;

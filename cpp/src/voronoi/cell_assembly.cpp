@@ -10,11 +10,17 @@
 namespace geocdt {
 namespace {
 
-// Twice the signed area of the ring p[0 .. n) (not closed), from differences to its first point.
-double twiceArea(const XY* p, std::size_t n) {
-  double twice = 0;
-  for (std::size_t i = 1; i + 1 < n; ++i)
-    twice += (p[i].x - p[0].x) * (p[i + 1].y - p[0].y) - (p[i].y - p[0].y) * (p[i + 1].x - p[0].x);
+// Twice the signed area of the ring p[0 .. n) (not closed), from differences to its first point;
+// magnitude, if asked for, gets the sum of its products' sizes (for an error bound).
+double twiceArea(const XY* p, std::size_t n, double* magnitude = nullptr) {
+  double twice = 0, size = 0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double ax = p[i].x - p[0].x, ay = p[i].y - p[0].y;
+    const double bx = p[i + 1].x - p[0].x, by = p[i + 1].y - p[0].y;
+    twice += ax * by - ay * bx;
+    size += std::fabs(ax * by) + std::fabs(ay * bx);
+  }
+  if (magnitude != nullptr) *magnitude = size;
   return twice;
 }
 
@@ -40,13 +46,8 @@ int locateInRing(const XY* p, std::size_t n, XY q) {
 // doubles where their error bound decides it, else exactly. Its area in doubles can underflow
 // to zero, and a loop that touches itself at a vertex has no corner to read the sign from.
 bool counterClockwise(const XY* p, std::size_t n) {
-  double twice = 0, magnitude = 0;
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    const double ax = p[i].x - p[0].x, ay = p[i].y - p[0].y;
-    const double bx = p[i + 1].x - p[0].x, by = p[i + 1].y - p[0].y;
-    twice += ax * by - ay * bx;
-    magnitude += std::fabs(ax * by) + std::fabs(ay * bx);
-  }
+  double magnitude = 0;
+  const double twice = twiceArea(p, n, &magnitude);
   // Differences, products and sums each err by 2^-53 of what they add, products that
   // underflow by 2^-1075.
   const auto count = static_cast<double>(n);
