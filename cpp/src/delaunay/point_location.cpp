@@ -37,15 +37,17 @@ std::int32_t Delaunay::startTriangle(double x, double y, bool fromGrid) {
       gridStale_ = false;
     }
     const std::int32_t t = grid_.cellAt(x, y);
-    if (t >= 0 && t < topo.slotCount()) {
-      // After removals a cell may name a slot reused far away: a neighbour cell then.
-      if (!slotsReused_ || startsNear(t, x, y)) return t;
+    const bool valid = t >= 0 && t < topo.slotCount();
+    if (valid && (!slotsReused_ || startsNear(t, x, y))) return t;
+    // After removals a cell may name a slot reused far away, or one past the last: a
+    // neighbour cell's then.
+    if (slotsReused_) {
       for (const auto& [di, dj] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
         const std::int32_t n = grid_.neighbour(x, y, di, dj);
         if (n >= 0 && n < topo.slotCount() && startsNear(n, x, y)) return n;
       }
-      return t;
     }
+    if (valid) return t;
   }
   if (last_ >= 0 && last_ < topo.slotCount()) return last_;
   return topo.slotCount() > 0 ? 0 : -1;
