@@ -157,12 +157,20 @@ std::int32_t freeVertexEdge(State& state, std::uint32_t v) {
   }
   const std::int32_t out = editEdges(state).find(d, v);
   if (out < 0) return -1;
-  std::int32_t e = out;
-  do {
-    if (d.topo.fixed[e]) return -1;
-    e = d.topo.adj[prevEdge(e)];
-  } while (e != out);
-  return out;
+  if (!d.constrained()) return out;  // (no edge is constrained)
+  if (d.topo.fixed[out]) return -1;
+  // Round the star both ways at once, until the two meet: each step's triangle is a cache
+  // miss that waits for the one before, and two such chains wait side by side.
+  const std::vector<std::int32_t>& adj = d.topo.adj;
+  std::int32_t left = out, right = out;
+  for (;;) {
+    left = adj[prevEdge(left)];
+    if (left == right) return out;
+    right = nextEdge(adj[right]);
+    if (d.topo.fixed[left]) return -1;
+    if (right == left) return out;
+    if (d.topo.fixed[right]) return -1;
+  }
 }
 
 // Removes the candidates that nothing needs now, with their Steiner descendants; the
@@ -303,7 +311,7 @@ Status moveVertex(State& state, std::uint32_t id, double x, double y, std::uint3
     return rebuildConstraints(state);
   }
   if (const std::int32_t out = freeVertexEdge(state, id); out >= 0 && there == kGhost) {
-    Status s = d.removeVertex(id, out, true);
+    Status s = d.removeVertex(id, out, true, false, &editEdges(state));
     d.xy[2 * static_cast<std::size_t>(id)] = x;
     d.xy[2 * static_cast<std::size_t>(id) + 1] = y;
     if (s.ok()) s = d.reinsertVertex(id, near);
@@ -410,7 +418,7 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
         if (const std::int32_t out = freeVertexEdge(state, id); out >= 0) {
           if (removed) *removed = true;
           state.values.invalidate();
-          return d.removeVertex(id, out);
+          return d.removeVertex(id, out, false, false, &editEdges(state));
         }
         VertexEdges& ends = editEdges(state);
         if (polylineHasVertex(state, ends, id)) return Status::success();

@@ -187,7 +187,7 @@ Status ConstraintEditor::removeVertex(std::uint32_t v, bool moving) {
   const bool freed = takeLinks(v, out);
   const Status joined = joinLinks(v);
   if (!joined.ok()) return joined;
-  return d_.removeVertex(v, out, moving, freed);
+  return d_.removeVertex(v, out, moving, freed, &ends_);
 }
 
 Outcome ConstraintEditor::insertQueued() {

@@ -193,6 +193,7 @@ void Delaunay::takeSlotPair(std::int32_t& t1, std::int32_t& t2) {
   t1 = spare_[0];
   t2 = spare_[1];
   spare_[0] = spare_[1] = -1;
+  if (!constrained()) return;            // (every flag is 0 then)
   for (const std::int32_t t : {t1, t2})  // as new slots are: zeroed flags
     topo.fixed[3 * t] = topo.fixed[3 * t + 1] = topo.fixed[3 * t + 2] = 0;
 }

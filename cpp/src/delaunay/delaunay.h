@@ -17,6 +17,8 @@
 
 namespace geocdt {
 
+class VertexEdges;
+
 // Where a point lies in the triangulation.
 struct Hit {
   enum class Kind : std::uint8_t { Empty, Face, Edge, Vertex, Outside, Failed };
@@ -58,6 +60,8 @@ class Delaunay {
   std::vector<SteinerVertex> steiner;
 
   bool built() const { return built_; }
+  // Whether any edge may be constrained; without, every flag in topo.fixed is 0.
+  bool constrained() const { return constraints.polylineCount > 0 || constraints.edgeCount() > 0; }
   const Options& options() const { return options_; }
   std::uint32_t vertexCount() const { return static_cast<std::uint32_t>(xy.size() / 2); }
 
@@ -99,9 +103,10 @@ class Delaunay {
   // moving, v is about to be inserted again elsewhere (reinsertVertex): not counted removed.
   // With freed, some of v's edges were constrained until the caller freed them: what was
   // hidden behind them may now be seen across the star's border, whose edges are flipped
-  // too where they are no longer Delaunay.
+  // too where they are no longer Delaunay. hints: a vertex-to-edge table kept across edits,
+  // told where the triangles moved into the freed slots went, or null.
   Status removeVertex(std::uint32_t v, std::int32_t out = -1, bool moving = false,
-                      bool freed = false);
+                      bool freed = false, VertexEdges* hints = nullptr);
   // Inserts vertex v again, at its coordinates in xy, keeping its id (a move). Its place must
   // not hold another vertex. near: a triangle to walk from (a slot near the new place), or -1
   // for the grid. The two slots the removal kept spare take the two new triangles.
@@ -136,7 +141,6 @@ class Delaunay {
 
  private:
   // Whether any edge is or was constrained: only then do splits and flips carry the flags.
-  bool constrained() const { return constraints.polylineCount > 0 || constraints.edgeCount() > 0; }
   bool build(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   // Builds the first triangle from the waiting vertices and the batch's, then inserts the
   // other waiting ones; `built` gets the three corners.

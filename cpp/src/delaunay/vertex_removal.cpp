@@ -22,13 +22,15 @@
 #include <string>
 
 #include "delaunay/delaunay.h"
+#include "delaunay/vertex_edges.h"
 #include "geocdt/predicates.h"
 
 namespace geocdt {
 
 class VertexRemoval {
  public:
-  explicit VertexRemoval(Delaunay& d) : d_(d), topo_(d.topo), ring_(d.ring_) {}
+  VertexRemoval(Delaunay& d, VertexEdges* hints)
+      : d_(d), topo_(d.topo), ring_(d.ring_), hints_(hints), flags_(d.constrained()) {}
 
   Status run(std::uint32_t v, std::int32_t out, bool moving, bool freed);
   Status reinsert(std::uint32_t v, std::int32_t near);
@@ -72,14 +74,22 @@ class VertexRemoval {
   Delaunay& d_;
   Topology& topo_;
   StarRing& ring_;
+  VertexEdges* hints_;
+  // Whether edges may be constrained. Without, every flag is 0 and stays so: the flags are
+  // neither read nor written, a cache miss less per triangle touched.
+  bool flags_;
+  void setFixed(std::int32_t e, std::uint8_t flag) {
+    if (flags_) topo_.fixed[e] = flag;
+  }
 };
 
-Status Delaunay::removeVertex(std::uint32_t v, std::int32_t out, bool moving, bool freed) {
-  return VertexRemoval(*this).run(v, out, moving, freed);
+Status Delaunay::removeVertex(std::uint32_t v, std::int32_t out, bool moving, bool freed,
+                              VertexEdges* hints) {
+  return VertexRemoval(*this, hints).run(v, out, moving, freed);
 }
 
 Status Delaunay::reinsertVertex(std::uint32_t v, std::int32_t near) {
-  return VertexRemoval(*this).reinsert(v, near);
+  return VertexRemoval(*this, nullptr).reinsert(v, near);
 }
 
 void VertexRemoval::markRemoved(std::uint32_t v, bool moving) {
@@ -153,13 +163,13 @@ bool VertexRemoval::gather(std::int32_t out) {
   ring_.clear();
   std::int32_t e = out;
   do {
-    if (topo_.fixed[e]) return false;
+    if (flags_ && topo_.fixed[e]) return false;
     const std::int32_t far = nextEdge(e);
     ring_.vertex.push_back(topo_.tri[far]);
     ring_.slot.push_back(e / 3);
     ring_.carrier.push_back(topo_.adj[far]);
     ring_.border.push_back(topo_.adj[far]);  // (outside; turned inside once filled)
-    ring_.fixed.push_back(topo_.fixed[far]);
+    ring_.fixed.push_back(flags_ ? topo_.fixed[far] : 0);
     e = topo_.adj[prevEdge(e)];
   } while (e != out);
   const auto n = static_cast<std::int32_t>(ring_.vertex.size());
@@ -190,11 +200,11 @@ std::int32_t VertexRemoval::cut(std::int32_t a, std::int32_t b, std::int32_t c,
   const std::int32_t e = 3 * s;
   topo_.setTriangle(s, at(a), at(b), third);
   topo_.link(e, ring_.carrier[a]);
-  topo_.fixed[e] = ring_.fixed[a];
+  setFixed(e, ring_.fixed[a]);
   if (c >= 0) {
     topo_.link(e + 1, ring_.carrier[b]);
-    topo_.fixed[e + 1] = ring_.fixed[b];
-    topo_.fixed[e + 2] = 0;
+    setFixed(e + 1, ring_.fixed[b]);
+    setFixed(e + 2, 0);
     // The polygon's new edge a -> c is twinned with this triangle's c -> a.
     ring_.carrier[a] = e + 2;
     ring_.fixed[a] = 0;
@@ -277,7 +287,7 @@ bool VertexRemoval::cutInterior(double x, double y) {
   for (const std::int32_t node : {a, b, c}) {
     const std::int32_t e = 3 * s + (node == a ? 0 : node == b ? 1 : 2);
     topo_.link(e, ring_.carrier[node]);
-    topo_.fixed[e] = ring_.fixed[node];
+    setFixed(e, ring_.fixed[node]);
   }
   return true;
 }
@@ -312,17 +322,18 @@ void VertexRemoval::cutHull(std::int32_t g) {
   std::int32_t h = first;
   for (; ring_.next[h] != g; h = ring_.next[h]) {
     const std::int32_t s = cut(h, ring_.next[h], -1, kGhost);
-    topo_.fixed[3 * s + 1] = topo_.fixed[3 * s + 2] = 0;
+    setFixed(3 * s + 1, 0);
+    setFixed(3 * s + 2, 0);
     if (before < 0) {
       topo_.link(3 * s + 2, ring_.carrier[g]);
-      topo_.fixed[3 * s + 2] = ring_.fixed[g];
+      setFixed(3 * s + 2, ring_.fixed[g]);
     } else {
       topo_.link(3 * s + 2, 3 * before + 1);
     }
     before = s;
   }
   topo_.link(3 * before + 1, ring_.carrier[h]);
-  topo_.fixed[3 * before + 1] = ring_.fixed[h];
+  setFixed(3 * before + 1, ring_.fixed[h]);
 }
 
 void VertexRemoval::flipInside() {
@@ -344,13 +355,15 @@ void VertexRemoval::freeSlots(std::size_t count) {
   const std::size_t n = ring_.slot.size();
   for (std::size_t k = n; k-- > n - count;) {
     const std::int32_t t = ring_.slot[k];
-    const std::int32_t moved = topo_.dropSlot(t);
+    const std::int32_t moved = topo_.dropSlot(t, flags_);
     if (moved == t) continue;
-    // The cells where the moved triangle lies follow it.
+    // The cells where the moved triangle lies, and its corners' hints, follow it: a hint
+    // past the last slot would cost a location.
     for (int c = 0; c < 3; ++c) {
       const std::uint32_t v = topo_.tri[3 * t + c];
-      if (v != kGhost)
-        d_.grid_.cellAt(d_.xy[2 * std::size_t{v}], d_.xy[2 * std::size_t{v} + 1]) = t;
+      if (v == kGhost) continue;
+      d_.grid_.cellAt(d_.xy[2 * std::size_t{v}], d_.xy[2 * std::size_t{v} + 1]) = t;
+      if (hints_) hints_->set(v, 3 * t + c);
     }
   }
 }

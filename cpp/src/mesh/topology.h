@@ -78,14 +78,14 @@ struct Topology {
 
   // Frees slot t: the last slot's triangle moves into it (its twins told where it went) and
   // the arrays shrink by one slot. Returns the slot the moved triangle came from (t itself
-  // when t was the last).
-  std::int32_t dropSlot(std::int32_t t) {
+  // when t was the last). Without flags (no edge is constrained: every flag 0) they stay.
+  std::int32_t dropSlot(std::int32_t t, bool withFlags = true) {
     const std::int32_t last = slotCount() - 1;
     if (t != last) {
       for (int k = 0; k < 3; ++k) {
         const std::int32_t from = 3 * last + k, to = 3 * t + k;
         tri[to] = tri[from];
-        fixed[to] = fixed[from];
+        if (withFlags) fixed[to] = fixed[from];
         adj[to] = adj[from];
         adj[adj[to]] = to;
       }
