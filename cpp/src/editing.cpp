@@ -173,6 +173,17 @@ std::int32_t freeVertexEdge(State& state, std::uint32_t v) {
   }
 }
 
+// Drops from gone[from ..] the Steiner points that must stay (given again as a point or a
+// polyline vertex since). Decided before anything goes: a removal queues the chains through
+// its vertex in the editor, off the mesh, where needed() no longer sees them.
+template <typename Stays>
+void keepNeeded(State& state, VertexEdges& ends, std::vector<std::uint32_t>& gone, std::size_t from,
+                Stays stays) {
+  const auto needs = [&](std::uint32_t v) { return stays(v) || needed(state, ends, v); };
+  gone.erase(std::remove_if(gone.begin() + static_cast<std::ptrdiff_t>(from), gone.end(), needs),
+             gone.end());
+}
+
 // Removes the candidates that nothing needs now, with their Steiner descendants; the
 // vertices in `kept` (sorted: the ends of segments taken off to be inserted again) stay.
 Status removeUnneeded(State& state, ConstraintEditor& editor, VertexEdges& ends,
@@ -190,10 +201,9 @@ Status removeUnneeded(State& state, ConstraintEditor& editor, VertexEdges& ends,
       gone.push_back(v);
   const std::size_t checked = gone.size();
   addSteinerDescendants(state, gone);
-  for (std::size_t i = 0; i < gone.size(); ++i) {
-    const std::uint32_t v = gone[i];
-    // A Steiner point that a later insertion gave as a point or polyline vertex stays.
-    if (stays(v) || d.isRemoved(v) || (i >= checked && needed(state, ends, v))) continue;
+  keepNeeded(state, ends, gone, checked, stays);
+  for (const std::uint32_t v : gone) {
+    if (d.isRemoved(v)) continue;
     const Status s = editor.removeVertex(v);
     if (!s.ok()) return s;
   }
@@ -427,11 +437,10 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
         ConstraintEditor editor(d, ends);
         std::vector<std::uint32_t> gone{id};
         addSteinerDescendants(state, gone);
+        keepNeeded(state, ends, gone, 1, [](std::uint32_t) { return false; });
         const std::uint32_t keep = d.vertexCount();
-        for (std::size_t i = 0; i < gone.size(); ++i) {
-          const std::uint32_t v = gone[i];
-          // (A Steiner point given again as a point or polyline vertex stays.)
-          if (d.isRemoved(v) || (i > 0 && needed(state, ends, v))) continue;
+        for (const std::uint32_t v : gone) {
+          if (d.isRemoved(v)) continue;
           const Status s = editor.removeVertex(v);
           if (!s.ok()) return s;
         }

@@ -335,6 +335,37 @@ TEST(Editing, SteinerPointGivenAgainAsAPointStays) {
   }
 }
 
+// fuzz_edits: refinement put Steiner points along a column of hull vertices; a polyline then
+// took one of them as its vertex. Moving the point they were placed from removes them, and
+// the chain through the first ones went into the editor's queue before the check reached the
+// polyline's vertex, which then looked unneeded: "segment 2 ends there".
+TEST(Editing, SteinerPointGivenAgainAsAPolylineVertexStaysWhenItsParentMoves) {
+  // Two columns of points 3e135 apart, their heights ulps apart.
+  const double x0 = -9.9999999999999998e+149, x1 = -9.9999999999999707e+149;
+  const double low = 179.99999999999963, middle = 179.99999999999974, high = 179.99999999999986;
+  for (const bool move : {true, false}) {
+    Options options;
+    options.gridDensity = 2;
+    Triangulation t(options);
+    EditModel model;
+    ASSERT_TRUE(model.insertPolyline(t, {x0, middle, x0, low, x0, middle}).ok());
+    ASSERT_TRUE(model.insertPoints(t, {x0, 180.00000000000009, x1, 180.00000000000043}).ok());
+    RefineOptions refine;
+    refine.minAngle = 20;
+    ASSERT_TRUE(t.refine(refine).ok());
+    ASSERT_FALSE(t.mesh().steiner.empty());
+    // (high is where refinement put a Steiner point.)
+    ASSERT_TRUE(model.insertPolyline(t, {x0, low, x0, high, x0, low}).ok());
+    const std::uint32_t point = model.pointIds()[0];
+    const Status s =
+        move ? model.movePoint(t, point, x0, 179.99999999999997) : model.removePoint(t, point);
+    ASSERT_TRUE(s.ok()) << s.message;
+    for (const std::size_t k : model.polylineNumbers())
+      for (const std::uint32_t id : model.polylineVertexIds(k)) EXPECT_TRUE(t.hasVertex(id));
+    EXPECT_EQ(model.check(t), "");  // (refined: the Steiner points not placed from it stay)
+  }
+}
+
 TEST(Editing, RandomSequencesOfEveryEdit) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) randomEdits(seed, 200, 1.0 / 64, true);
 }
