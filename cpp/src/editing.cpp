@@ -307,6 +307,12 @@ Status rebuildConstraints(State& state) {
   return Status::success();
 }
 
+// An edit the editor could not splice (see ConstraintEditor::unpaired) inserts the
+// constraints again from the input instead, as one in snap-rounded constraints does.
+Status orRebuild(State& state, const ConstraintEditor& editor, const Status& s) {
+  return s.ok() || !editor.unpaired() ? s : rebuildConstraints(state);
+}
+
 // Moves vertex id to (x, y), whose vertex `there` (or kGhost) nothing needs: the segments
 // ending at id are taken off, the vertices only they needed removed, id removed and inserted
 // at its new place, and the segments inserted again from it.
@@ -355,9 +361,9 @@ Status moveVertex(State& state, std::uint32_t id, double x, double y, std::uint3
   const std::uint32_t keep = d.vertexCount();
   Status s = removeUnneeded(state, editor, ends, candidates, kept);
   if (s.ok()) s = editor.removeVertex(id, true);
-  if (!s.ok()) return s;
   d.xy[2 * static_cast<std::size_t>(id)] = x;
   d.xy[2 * static_cast<std::size_t>(id) + 1] = y;
+  if (!s.ok()) return orRebuild(state, editor, s);
   s = d.reinsertVertex(id, near);
   if (!s.ok()) return s;
   for (const std::uint32_t segment : moved) editor.queueSegment(segment);
@@ -442,7 +448,7 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
         for (const std::uint32_t v : gone) {
           if (d.isRemoved(v)) continue;
           const Status s = editor.removeVertex(v);
-          if (!s.ok()) return s;
+          if (!s.ok()) return orRebuild(state, editor, s);
         }
         return finishEdit(state, editor, ends, keep);
       },
@@ -488,7 +494,7 @@ Status Triangulation::removePolyline(std::size_t polyline) {
         editor.restore();
         const std::uint32_t keep = d.vertexCount();
         const Status s = removeUnneeded(state, editor, ends, candidates);
-        if (!s.ok()) return s;
+        if (!s.ok()) return orRebuild(state, editor, s);
         return finishEdit(state, editor, ends, keep);
       },
       [&] { state.clear(); });

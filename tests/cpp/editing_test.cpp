@@ -366,6 +366,33 @@ TEST(Editing, SteinerPointGivenAgainAsAPolylineVertexStaysWhenItsParentMoves) {
   }
 }
 
+// fuzz_edits: two rings in a tangle a few ulps wide, where one segment's chain runs through
+// two crossings and an edge beside it names that segment too, so that its edges at a crossing
+// are three. The editor cannot splice such a chain when a move takes the crossing away: the
+// constraints are inserted again from the input.
+TEST(Editing, ChainsThatDoNotPairUpAtACrossingAreInsertedAgain) {
+  const double x = 16000000.25, below = 16000000.249999998, unit = 0x1p-1074;
+  const std::vector<double> first{x,         -3 * unit, 16000000.249999994, -3 * unit, below,
+                                  -2 * unit, x,         3 * unit,           x,         -3 * unit};
+  const std::vector<double> second{
+      16000000.250000004, -2 * unit,          below,     unit, x,
+      -3 * unit,          16000000.249999996, -3 * unit, x,    3 * unit,
+      16000000.250000004, -2 * unit};
+  Options options;
+  options.order = InsertionOrder::Input;
+  options.gridDensity = 2;
+  Triangulation t(options);
+  EditModel model;
+  ASSERT_TRUE(model.insertPolyline(t, first).ok());
+  ASSERT_TRUE(model.insertPolyline(t, second).ok());
+  ASSERT_EQ(t.stats().snapRoundings, 0u);
+  const std::uint32_t moved = model.polylineVertexIds(1)[1];  // (below, unit)
+  const Status s = model.movePoint(t, moved, 16000000.249999996, unit);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_EQ(model.check(t), "");
+  EXPECT_EQ(model.compare(t, false), "");
+}
+
 TEST(Editing, RandomSequencesOfEveryEdit) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) randomEdits(seed, 200, 1.0 / 64, true);
 }

@@ -152,6 +152,7 @@ Status ConstraintEditor::joinLinks(std::uint32_t v) {
     std::size_t j = k;
     while (j < links_.size() && links_[j].segment == links_[k].segment) ++j;
     if (j - k != 2) {
+      unpaired_ = true;
       status = {StatusCode::InternalError,
                 "removing vertex " + std::to_string(v) + ": segment " +
                     std::to_string(links_[k].segment) + " ends there",

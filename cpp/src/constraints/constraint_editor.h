@@ -30,8 +30,13 @@ class ConstraintEditor {
   void restore() { d_.restoreDelaunay(); }
 
   // Removes vertex v from the triangulation: every chain through it is joined into a piece
-  // that skips it. Fails (a broken invariant) when v ends a segment still there.
+  // that skips it. Fails (a broken invariant) when v ends a segment still there, or when a
+  // segment's edges at v do not pair up (unpaired()).
   Status removeVertex(std::uint32_t v, bool moving = false);
+  // Whether a removal met a segment with other than two edges at the vertex: in a tangle a
+  // few ulps wide, where chains share stretches, an edge may name a segment whose chain only
+  // touches it. Such chains are not spliced; the caller inserts the constraints again.
+  bool unpaired() const { return unpaired_; }
 
   // Queues segment s to be inserted whole (one of its ends moved).
   void queueSegment(std::uint32_t s);
@@ -72,6 +77,7 @@ class ConstraintEditor {
   EdgeMap<std::int32_t> firstAtEnd_;
   std::vector<std::int32_t> nextAtEnd_;
   std::vector<Link> links_;
+  bool unpaired_ = false;
   std::vector<std::uint32_t> touched_;
   // A chain walk's scratch: vertices seen (with a half-edge out of each) and edges found.
   std::vector<std::pair<std::uint32_t, std::int32_t>> frontier_;
