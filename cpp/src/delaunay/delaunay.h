@@ -60,7 +60,8 @@ class Delaunay {
   std::vector<SteinerVertex> steiner;
 
   bool built() const { return built_; }
-  // Whether any edge may be constrained; without, every flag in topo.fixed is 0.
+  // Whether any edge is or was constrained: only then do splits and flips carry the flags;
+  // without, every flag in topo.fixed is 0.
   bool constrained() const { return constraints.polylineCount > 0 || constraints.edgeCount() > 0; }
   const Options& options() const { return options_; }
   std::uint32_t vertexCount() const { return static_cast<std::uint32_t>(xy.size() / 2); }
@@ -140,7 +141,6 @@ class Delaunay {
   std::int32_t usedSlots() const { return runSlots_; }
 
  private:
-  // Whether any edge is or was constrained: only then do splits and flips carry the flags.
   bool build(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   // Builds the first triangle from the waiting vertices and the batch's, then inserts the
   // other waiting ones; `built` gets the three corners.
