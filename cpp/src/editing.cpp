@@ -139,6 +139,7 @@ VertexEdges& editEdges(State& state) {
   if (!ends.built() && state.delaunay.built()) {
     ends.build(state.delaunay);
     ends.locateFromGrid();
+    state.delaunay.refreshStaleGrid(ends);
   }
   return ends;
 }

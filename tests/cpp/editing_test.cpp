@@ -393,6 +393,34 @@ TEST(Editing, ChainsThatDoNotPairUpAtACrossingAreInsertedAgain) {
   EXPECT_EQ(model.compare(t, false), "");
 }
 
+// A large batch leaves the location grid stale; the first edit fills it from its table of a
+// half-edge per vertex (read in vertex order). Locations from that grid must walk as few
+// triangles as from one filled from the triangles, as a triangulation that was not edited
+// fills it on its first locate().
+TEST(Editing, FirstEditFillsTheStaleGridForShortWalks) {
+  const std::vector<double> xy = testing::uniformPoints(200000, 31);
+  const std::size_t n = xy.size() / 2;
+  Triangulation edited, plain;
+  std::vector<std::uint32_t> ids(n);
+  ASSERT_TRUE(edited.insertPoints(xy.data(), n, ids.data()).ok());
+  ASSERT_TRUE(plain.insertPoints(xy.data(), n, nullptr).ok());
+  ASSERT_TRUE(edited.removePoint(ids[n / 2]).ok());
+  const std::vector<double> queries = testing::uniformPoints(4000, 32);
+  const auto stepsPerLocation = [&](const Triangulation& t) {
+    const Stats before = t.stats();
+    for (std::size_t q = 0; q < queries.size(); q += 2) {
+      const Location at = t.locate(queries[q], queries[q + 1]);
+      EXPECT_NE(at.kind, Location::Kind::Invalid);
+    }
+    const Stats after = t.stats();
+    return static_cast<double>(after.walkSteps - before.walkSteps) /
+           static_cast<double>(after.locates - before.locates);
+  };
+  const double fromVertices = stepsPerLocation(edited), fromTriangles = stepsPerLocation(plain);
+  EXPECT_LT(fromVertices, 10.0);
+  EXPECT_LT(fromVertices, 1.5 * fromTriangles + 1) << "from triangles: " << fromTriangles;
+}
+
 TEST(Editing, RandomSequencesOfEveryEdit) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) randomEdits(seed, 200, 1.0 / 64, true);
 }

@@ -2,11 +2,13 @@
 // points are not collinear, and the renumbering that closes up the places of duplicates.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 
 #include "delaunay/delaunay.h"
 #include "delaunay/first_triangle.h"
 #include "delaunay/insertion_order.h"
+#include "delaunay/vertex_edges.h"
 #include "geocdt/predicates.h"
 
 namespace geocdt {
@@ -340,14 +342,35 @@ void Delaunay::refreshGrid() {
   grid_.resizeFor(stats.inserted);
   const std::uint32_t* tri = topo.tri.data();
   const double* p = xy.data();
+  // About four triangles fall in a cell: every third is plenty, and a third of the writes.
+  grid_.rebuild((topo.slotCount() + 2) / 3,
+                [&](std::uint32_t k, double& x, double& y) {
+                  const std::int32_t t = static_cast<std::int32_t>(3 * k);
+                  const std::uint32_t v = tri[3 * t];
+                  if (v == kGhost)
+                    return -1;  // a ghost triangle with the ghost at its first corner
+                  x = p[2 * v];
+                  y = p[2 * v + 1];
+                  return t;
+                },
+                last_);
+}
+
+void Delaunay::refreshStaleGrid(const VertexEdges& edges) {
+  if (!gridStale_) return;
+  gridStale_ = false;
+  grid_.resizeFor(stats.inserted);
+  const double* p = xy.data();
+  const std::int32_t halfEdges = 3 * topo.slotCount();
   grid_.rebuild(
-      topo.slotCount(),
-      [&](std::int32_t t, double& x, double& y) {
-        const std::uint32_t v = tri[3 * t];
-        if (v == kGhost) return false;  // a ghost triangle with the ghost at its first corner
-        x = p[2 * v];
-        y = p[2 * v + 1];
-        return true;
+      vertexCount(),
+      [&](std::uint32_t v, double& x, double& y) {
+        const std::int32_t e = edges.peek(v);
+        x = p[2 * std::size_t{v}];
+        y = p[2 * std::size_t{v} + 1];
+        // (A removed vertex's coordinates are NaN, and its hint may be gone.)
+        if (e < 0 || e >= halfEdges || std::isnan(x)) return -1;
+        return e / 3;
       },
       last_);
 }

@@ -132,6 +132,10 @@ class Delaunay {
     return gridStale_ ? grid_.sizeFor(stats.inserted) : grid_.size();
   }
   void dropGrid() { grid_ = PointGrid(); }  // its memory, before the arrays are handed out
+  // A grid left stale by a large batch is filled from a half-edge out of each vertex (a table
+  // built for editing) instead of on first use from the triangles: the vertices' coordinates
+  // are read in order, where the triangles name them in no order.
+  void refreshStaleGrid(const VertexEdges& edges);
   void clear();
 
   // A strip worker's job: triangulates the vertices order[0..count) on their own, in

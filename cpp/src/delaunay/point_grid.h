@@ -70,14 +70,15 @@ class PointGrid {
 
   // Fresh hints after a large batch: for each cell, a triangle with a vertex in it; a cell
   // with none takes its left (or upper) neighbour's. A spatially sorted batch leaves stale
-  // hints in the cells it never visited, which this replaces. at(t) gives a vertex of slot t.
-  template <typename VertexOf>
-  void rebuild(std::int32_t slots, VertexOf at, std::int32_t fallback) {
+  // hints in the cells it never visited, which this replaces. at(k, x, y) gives the k-th of
+  // count places and a triangle there, or -1 for none.
+  template <typename PlaceOf>
+  void rebuild(std::uint32_t count, PlaceOf at, std::int32_t fallback) {
     std::fill(cells_.begin(), cells_.end(), -1);
-    // About four triangles fall in a cell: every third is plenty, and a third of the writes.
-    for (std::int32_t t = 0; t < slots; t += 3) {
+    for (std::uint32_t k = 0; k < count; ++k) {
       double x, y;
-      if (at(t, x, y)) cellAt(x, y) = t;
+      const std::int32_t t = at(k, x, y);
+      if (t >= 0) cellAt(x, y) = t;
     }
     for (std::uint32_t j = 0; j < m_; ++j)
       for (std::uint32_t i = 0; i < m_; ++i) {

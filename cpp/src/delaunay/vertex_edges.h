@@ -41,6 +41,8 @@ class VertexEdges {
     if (v >= out_.size()) out_.resize(v + 1, -1);
     out_[v] = e;
   }
+  // v's hint as it is, unchecked (-1 for none).
+  std::int32_t peek(std::uint32_t v) const { return v < out_.size() ? out_[v] : -1; }
   // Remembers the half-edge out of v in triangle t, if v is a corner of it.
   void setFromTriangle(const Topology& topo, std::uint32_t v, std::int32_t t) {
     for (int k = 0; k < 3; ++k)
