@@ -131,6 +131,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .field("hasNoData", &RasterOptions::hasNoData)
       .field("noData", &RasterOptions::noData)
       .field("minAngle", &RasterOptions::minAngle)
+      .field("decimate", &RasterOptions::decimate)
       .field("hasBbox", &RasterOptions::hasBbox)
       .field("minX", &RasterOptions::minX)
       .field("minY", &RasterOptions::minY)

@@ -199,6 +199,7 @@ emscripten::val Output::terrainStats() const {
   emscripten::val object = emscripten::val::object();
   object.set("maxError", terrain.maxError);
   object.set("insertions", static_cast<double>(terrain.insertions));
+  object.set("decimated", static_cast<double>(terrain.decimated));
   object.set("scannedPixels", static_cast<double>(terrain.scannedPixels));
   object.set("steinerPoints", static_cast<double>(terrain.steinerPoints));
   object.set("refineRounds", static_cast<double>(terrain.refineRounds));

@@ -20,6 +20,7 @@ bool triangulateRasterInto(Output& out, Input& input, double width, double heigh
         options.hasNoData = o.hasNoData;
         options.noDataValue = o.noData;
         options.minAngle = o.minAngle;
+        options.decimate = o.decimate;
         options.hasBbox = o.hasBbox;
         options.minX = o.minX;
         options.minY = o.minY;

@@ -11,6 +11,7 @@ struct RasterOptions {
   double maxError = 0, maxTriangles = 0, maxVertices = 0;
   bool hasNoData = false;
   double noData = 0, minAngle = 0;
+  bool decimate = false;
   bool hasBbox = false;
   double minX = 0, minY = 0, maxX = 0, maxY = 0;
 };

@@ -48,7 +48,8 @@ positions (an ASCII grid's coordinates, else --bbox, else column and row).
                              NODATA_value by default)
   --breaklines <file>        GeoJSON lines kept as edges (their z, where given, as heights)
   --bbox <minX,minY,maxX,maxY>  where the first and last cell centres lie
-  --min-angle <degrees>      refine to this smallest angle, heights read from the raster`;
+  --min-angle <degrees>      refine to this smallest angle, heights read from the raster
+  --decimate                 remove the inserted vertices the bound no longer needs`;
 
 // Inputs at least this big report progress on stderr: a bar on a terminal, lines otherwise.
 const BIG_INPUT_POINTS = 200_000;
@@ -92,6 +93,7 @@ function parseArgs(argv) {
     else if (a === '--max-vertices') terrainNumber('maxVertices', value(i++, a), a);
     else if (a === '--no-data') terrainNumber('noData', value(i++, a), a);
     else if (a === '--breaklines') args.breaklines = value(i++, a);
+    else if (a === '--decimate') args.terrain.decimate = true;
     else if (a === '--bbox') {
       const bbox = value(i++, a).split(',').map(Number);
       if (bbox.length !== 4) throw new UsageError('--bbox takes minX,minY,maxX,maxY');

@@ -412,6 +412,13 @@ export interface RasterMeshOptions {
    * pixels on the surface to within rounding are left out).
    */
   maxError?: number;
+  /**
+   * After the greedy insertion, remove the pixels it inserted that later ones made needless:
+   * each interior vertex whose removal keeps every pixel within maxError goes (one pass).
+   * About 7-17% fewer triangles for the same bound, at 1.3-1.7 times the time (default
+   * false). Hull, tile border, breakline and no-data boundary vertices always stay.
+   */
+  decimate?: boolean;
   /** Stop before the mesh has more triangles than this, largest errors first. */
   maxTriangles?: number;
   /** Stop before the mesh has more vertices than this, largest errors first. */
@@ -447,6 +454,8 @@ export interface RasterStats {
   maxError: number;
   /** Pixels the greedy insertion added. */
   insertions: number;
+  /** Of them, the vertices decimate removed again. */
+  decimated: number;
   /** Pixel errors computed, rescans included. */
   scannedPixels: number;
   /** Vertices refinement added (minAngle). */

@@ -359,8 +359,8 @@ export function checkRasterOptions(options) {
     throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
   }
   const {
-    maxError = 0, maxTriangles, maxVertices, noData, minAngle = 0, bbox, breaklines,
-    breaklineHeights,
+    maxError = 0, maxTriangles, maxVertices, noData, minAngle = 0, decimate = false, bbox,
+    breaklines, breaklineHeights,
   } = options ?? {};
   const number = (name, v) => {
     if (typeof v !== 'number') {
@@ -386,8 +386,13 @@ export function checkRasterOptions(options) {
     throw new RangeError('geocdt: options.minAngle must be a number of degrees from 0 to less '
       + `than 60, got ${minAngle}`);
   }
+  if (typeof decimate !== 'boolean') {
+    throw new TypeError('geocdt: options.decimate must be true or false, got '
+      + `${describe(decimate)}`);
+  }
   const checked = {
     maxError,
+    decimate,
     maxTriangles: count('maxTriangles', maxTriangles),
     maxVertices: count('maxVertices', maxVertices),
     hasNoData: noData !== undefined,

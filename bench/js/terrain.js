@@ -1,10 +1,10 @@
 // Terrain meshes from the USGS Jacksboro fault DEM (403 x 344 int16 metres, Debian's
-// python-matplotlib-data): geocdt's triangulateRaster (wasm) against delatin (greedy
-// Delaunay insertion) and @mapbox/martini (RTIN, on the top-left 257 x 257 crop, the size it
-// needs), alternating in one process, medians of wall and main-thread CPU time. Each mesh's
-// largest error is measured over every pixel, the same way for all (pixel-error.js). Then
-// breaklines and minAngle 20 against geocdt's plain mesh. Prints the targets, met or missed.
-// With --chromium, the comparisons also run in a headless Chromium page (wall time there).
+// python-matplotlib-data): geocdt's triangulateRaster (wasm; plain, and with decimate)
+// against delatin (greedy Delaunay insertion) and @mapbox/martini (RTIN, on the top-left
+// 257 x 257 crop, the size it needs), alternating in one process, medians of wall and
+// main-thread CPU time. Each mesh's largest error is measured over every pixel, the same way
+// for all (pixel-error.js). Then breaklines and minAngle 20 against geocdt's plain mesh.
+// Prints the targets, met or missed. With --chromium, the comparisons also run in a headless Chromium page (wall time there).
 //   node --expose-gc bench/js/terrain.js [--rounds N] [--quick] [--chromium]
 import { createServer } from 'node:http';
 import { readFileSync } from 'node:fs';
@@ -60,8 +60,8 @@ const small = crop(dem, 257);
 const martini = new Martini(257);
 const smallFloat = Float32Array.from(small.heights);
 
-const geocdt = (raster, maxError, extra = {}) => ({
-  name: 'geocdt',
+const geocdt = (raster, maxError, extra = {}, name = 'geocdt') => ({
+  name,
   run: () => triangulateRaster(raster, { maxError, ...extra }),
   measure: (r) => ({
     triangles: r.triangles.length / 3,
@@ -102,16 +102,20 @@ console.log(`## Jacksboro DEM, ${dem.width} x ${dem.height}, ${rounds} rounds\n`
 {
   const rows = [];
   for (const e of errors) {
-    const [g, d] = alternate([geocdt(dem, e), delatin(dem, e)]);
-    rows.push({ e, r: g }, { e, r: d });
-    const time = (cpuClock ? g.cpu / d.cpu : g.wall / d.wall);
-    target(`${e} m: at most 1.0× delatin's triangles`, g.triangles <= d.triangles,
-      `${n(g.triangles)} against ${n(d.triangles)}, ${ratio(g.triangles / d.triangles)}`);
-    target(`${e} m: at most 0.25× delatin's time`, time <= 0.25,
-      `${ratio(time)} (${cpuClock ? 'CPU' : 'wall'}: ${ms(cpuClock ? g.cpu : g.wall)} against `
-      + `${ms(cpuClock ? d.cpu : d.wall)} ms)`);
-    target(`${e} m: every pixel within the bound`, g.maxError <= e * (1 + 1e-9) && !g.uncovered,
-      `largest ${g.maxError.toFixed(3)}, ${g.uncovered} uncovered`);
+    const [g, gd, d] = alternate([geocdt(dem, e),
+      geocdt(dem, e, { decimate: true }, 'geocdt, decimate'), delatin(dem, e)]);
+    rows.push({ e, r: g }, { e, r: gd }, { e, r: d });
+    for (const [r, how] of [[g, ''], [gd, ', decimate']]) {
+      const time = (cpuClock ? r.cpu / d.cpu : r.wall / d.wall);
+      target(`${e} m${how}: at most 1.0× delatin's triangles`, r.triangles <= d.triangles,
+        `${n(r.triangles)} against ${n(d.triangles)}, ${ratio(r.triangles / d.triangles)}`);
+      target(`${e} m${how}: at most 0.25× delatin's time`, time <= 0.25,
+        `${ratio(time)} (${cpuClock ? 'CPU' : 'wall'}: ${ms(cpuClock ? r.cpu : r.wall)} against `
+        + `${ms(cpuClock ? d.cpu : d.wall)} ms)`);
+      target(`${e} m${how}: every pixel within the bound`,
+        r.maxError <= e * (1 + 1e-9) && !r.uncovered,
+        `largest ${r.maxError.toFixed(3)}, ${r.uncovered} uncovered`);
+    }
   }
   table(rows);
 }
@@ -130,8 +134,9 @@ console.log(`## The top-left 257 x 257 crop, ${rounds} rounds\n`);
         ...maxPixelError({ xy: vertices, triangles }, small),
       }),
     };
-    const [g, mm, d] = alternate([geocdt(small, e), m, delatin(small, e)]);
-    rows.push({ e, r: g }, { e, r: mm }, { e, r: d });
+    const [g, gd, mm, d] = alternate([geocdt(small, e),
+      geocdt(small, e, { decimate: true }, 'geocdt, decimate'), m, delatin(small, e)]);
+    rows.push({ e, r: g }, { e, r: gd }, { e, r: mm }, { e, r: d });
     // martini's maxError does not bound the error at every pixel: geocdt at the error
     // martini's mesh reached, once, for the comparison at equal measured error.
     const atMartinis = triangulateRaster(small, { maxError: mm.maxError });
@@ -139,8 +144,11 @@ console.log(`## The top-left 257 x 257 crop, ${rounds} rounds\n`);
       + `${n(atMartinis.triangles.length / 3)} | `
       + `${ratio(atMartinis.triangles.length / 3 / mm.triangles)} |`);
     const time = cpuClock ? g.cpu / mm.cpu : g.wall / mm.wall;
-    target(`crop, ${e} m: at most 0.6× martini's triangles`, g.triangles <= 0.6 * mm.triangles,
-      `${n(g.triangles)} against ${n(mm.triangles)}, ${ratio(g.triangles / mm.triangles)}`);
+    for (const [r, how] of [[g, ''], [gd, ', decimate']]) {
+      target(`crop, ${e} m${how}: at most 0.6× martini's triangles`,
+        r.triangles <= 0.6 * mm.triangles,
+        `${n(r.triangles)} against ${n(mm.triangles)}, ${ratio(r.triangles / mm.triangles)}`);
+    }
     target(`crop, ${e} m (aim): martini's time`, time <= 1, `${ratio(time)}`);
   }
   table(rows);

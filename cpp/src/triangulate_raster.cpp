@@ -242,6 +242,14 @@ Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
   mesher.measure();
   std::uint64_t inserted = 0;
   if (!mesher.run(inserted)) return d.lastError();
+  if (o.decimate && d.built()) {
+    Status s;
+    stats.decimated = mesher.decimate(s);
+    if (!s.ok()) return s;
+    // (A removal's flips may differ from its plan among cocircular pixels: what misses the
+    // bound is queued, and inserted again.)
+    if (!mesher.run(inserted)) return d.lastError();
+  }
   if (o.minAngle > 0 && d.built()) {
     RefineOptions r;
     r.minAngle = o.minAngle;
@@ -306,7 +314,7 @@ Status build(const RasterSampler& raster, const PolylineView* breaklines, std::s
   in.z = std::move(b.z);
   in.original = std::move(b.original);
   in.sourceOf = std::move(b.sourceOf);
-  in.dropUnused = b.rings;
+  in.dropUnused = b.rings || stats.decimated > 0;  // (removed vertices are used by none)
   terrain::frameMesh(out, std::move(in), frame);
   return Status::success();
 }

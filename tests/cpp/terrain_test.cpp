@@ -130,6 +130,34 @@ TEST(Terrain, ErrorBoundHoldsOverEveryPixelOfTheJacksboroDem) {
   }
 }
 
+// Decimation removes the inserted vertices the bound no longer needs: the bound still holds
+// over every pixel, with fewer triangles than greedy insertion (and delatin) keeps.
+TEST(Terrain, DecimationKeepsTheBoundWithFewerTriangles) {
+  const RasterFile r = jacksboro();
+  ASSERT_EQ(r.width, 403u);
+  const std::map<double, std::size_t> delatin = {
+      {1.0, 227342}, {5.0, 112427}, {10.0, 56520}, {20.0, 23845}};
+  for (const double e : {1.0, 5.0, 10.0, 20.0}) {
+    SCOPED_TRACE(e);
+    TerrainOptions o = withError(e);
+    TerrainStats plainStats, stats;
+    const Mesh plain = mesh(r, o, {}, nullptr, &plainStats);
+    o.decimate = true;
+    const Mesh m = mesh(r, o, {}, nullptr, &stats);
+    EXPECT_EQ(testing::checkTriangulation(m), "");
+    expectWithinBound(m, r, e);
+    EXPECT_LE(stats.maxError, e);
+    EXPECT_EQ(plainStats.decimated, 0u);
+    EXPECT_GT(stats.decimated, stats.insertions / 20);
+    // Each vertex removed inside takes two triangles with it (the pixels it put back in are
+    // inserted again, two triangles each).
+    EXPECT_EQ(m.triangles.size() / 3 + 2 * stats.decimated,
+              plain.triangles.size() / 3 + 2 * (stats.insertions - plainStats.insertions));
+    EXPECT_EQ(m.points.size() / 2, m.values.size());
+    EXPECT_LT(m.triangles.size() / 3, delatin.at(e) * 95 / 100);
+  }
+}
+
 TEST(Terrain, ErrorBoundHoldsOnRoughHills) {
   const RasterFile r = hills(157, 91, 7);
   for (const double e : {0.0, 0.5, 2.0, 8.0}) {
@@ -397,13 +425,16 @@ TEST(Terrain, TilesMatchAlongTheirSharedBorders) {
   // Four tiles sharing column 200 and row 171; map x = column, y = -row.
   const std::uint32_t cut[2][2] = {{0, 200}, {0, 171}};
   const std::uint32_t size[2][2] = {{201, 203}, {172, 173}};
-  for (const double e : {1.0, 5.0, 20.0}) {
+  for (const auto& [e, decimate] :
+       {std::pair{1.0, false}, {5.0, false}, {20.0, false}, {5.0, true}, {20.0, true}}) {
     SCOPED_TRACE(e);
+    SCOPED_TRACE(decimate);
     Mesh tiles[2][2];
     for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b) {
         const RasterFile t = testing::cropRaster(dem, cut[0][a], cut[1][b], size[0][a], size[1][b]);
         TerrainOptions o = withError(e);
+        o.decimate = decimate;
         o.hasBbox = true;
         o.minX = cut[0][a];
         o.maxX = cut[0][a] + size[0][a] - 1.0;
@@ -504,6 +535,7 @@ TEST(Terrain, RandomRastersBreaklinesAndHoles) {
       lines.push_back(line);
     }
     if (pick(4) == 0) o.minAngle = 15 + 10 * random.uniform();
+    o.decimate = pick(3) == 0;
     TerrainStats stats;
     const Mesh m = mesh(r, o, lines, nullptr, &stats);
     EXPECT_EQ(testing::checkTriangulation(m, {nullptr, nullptr, true, valid.empty()}), "");

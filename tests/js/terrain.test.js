@@ -70,6 +70,20 @@ test('every pixel of the Jacksboro DEM is within maxError', () => {
   }
 });
 
+test('decimate removes inserted vertices the bound no longer needs, keeping it', () => {
+  for (const maxError of [5, 20]) {
+    const plain = triangulateRaster(dem, { maxError });
+    const r = triangulateRaster(dem, { maxError, decimate: true });
+    checkMesh(r);
+    withinBound(r, dem, maxError);
+    assert.equal(plain.stats.decimated, 0);
+    assert.ok(r.stats.decimated > 0);
+    assert.equal(r.values.length, r.points.length / 2);
+    assert.ok(r.triangles.length < 0.95 * plain.triangles.length,
+      `${r.triangles.length / 3} triangles against ${plain.triangles.length / 3}`);
+  }
+});
+
 test('breaklines cross each other and the raster\'s edges', () => {
   const raster = crop(dem, 120);
   const breaklines = [
@@ -246,6 +260,8 @@ test('bad input is a clear RangeError or TypeError, and the module stays usable'
     /raster.heights\[0\] must be a number/);
   throwsWith(() => triangulateRaster(new Float32Array(4)), TypeError, /heights, width, height/);
   throwsWith(() => triangulateRaster(ok, { maxError: '1' }), TypeError, /maxError/);
+  throwsWith(() => triangulateRaster(ok, { decimate: 1 }), TypeError,
+    /options.decimate must be true or false, got number/);
   // Still usable, for both calls.
   assert.equal(triangulateRaster(ok).triangles.length, 6);
   assert.equal(triangulate({ points: [0, 0, 1, 0, 0, 1] }).triangles.length, 3);

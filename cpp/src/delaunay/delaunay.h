@@ -108,6 +108,15 @@ class Delaunay {
   // told where the triangles moved into the freed slots went, or null.
   Status removeVertex(std::uint32_t v, std::int32_t out = -1, bool moving = false,
                       bool freed = false, VertexEdges* hints = nullptr);
+  // What removeVertex(v, out) would make of an interior vertex, without changing anything:
+  // the corners of the triangles cut from its star's border, in Devillers' order (before the
+  // flips that rounding or cocircular ties may still need). False for a hull vertex, one with
+  // a constrained edge, or a border without an ear.
+  bool plannedRemoval(std::uint32_t v, std::int32_t out, std::vector<std::uint32_t>& corners);
+  // After a removal: the slots of the triangles it made, and the slots whose triangles moved
+  // into the freed ones ({from, to} pairs).
+  const std::vector<std::int32_t>& removalSlots() const { return ring_.made; }
+  const std::vector<std::array<std::int32_t, 2>>& movedSlots() const { return ring_.moved; }
   // Inserts vertex v again, at its coordinates in xy, keeping its id (a move). Its place must
   // not hold another vertex. near: a triangle to walk from (a slot near the new place), or -1
   // for the grid. The two slots the removal kept spare take the two new triangles.

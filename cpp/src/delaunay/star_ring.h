@@ -3,6 +3,7 @@
 // vertices counter-clockwise, linked in a list that loses a vertex with each ear cut off, and
 // for each polygon edge the half-edge outside it that the triangle made on it is twinned
 // with. Kept by the Delaunay engine between removals so that a removal allocates nothing.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -14,10 +15,13 @@ struct StarRing {
   std::vector<std::int32_t> carrier;  // per node: the half-edge beyond edge node -> next
   std::vector<std::uint8_t> fixed;    // per node: that edge's constrained flag
   std::vector<std::int32_t> next, prev;
-  std::vector<double> key;              // per node: its ear's priority (cutInterior)
-  std::vector<std::int32_t> diagonals;  // new edges inside the polygon, for Lawson flips
-  std::vector<std::int32_t> border;     // the half-edges outside the polygon's edges
-  std::size_t used = 0;                 // slots filled so far
+  std::vector<double> key;                         // per node: its ear's priority (cutInterior)
+  std::vector<std::int32_t> diagonals;             // new edges inside the polygon, for Lawson flips
+  std::vector<std::int32_t> border;                // the half-edges outside the polygon's edges
+  std::size_t used = 0;                            // slots filled so far
+  std::vector<std::uint32_t>* plan = nullptr;      // a planned removal's corners: nothing written
+  std::vector<std::int32_t> made;                  // after a removal: the slots it filled
+  std::vector<std::array<std::int32_t, 2>> moved;  // and {from, to} of triangles it moved
 
   void clear() {
     vertex.clear();
@@ -26,6 +30,8 @@ struct StarRing {
     fixed.clear();
     diagonals.clear();
     border.clear();
+    made.clear();
+    moved.clear();
     used = 0;
   }
 };

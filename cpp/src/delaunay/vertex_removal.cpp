@@ -33,6 +33,7 @@ class VertexRemoval {
       : d_(d), topo_(d.topo), ring_(d.ring_), hints_(hints), flags_(d.constrained()) {}
 
   Status run(std::uint32_t v, std::int32_t out, bool moving, bool freed);
+  bool plan(std::int32_t out, std::vector<std::uint32_t>& corners);
   Status reinsert(std::uint32_t v, std::int32_t near);
 
  private:
@@ -88,6 +89,12 @@ Status Delaunay::removeVertex(std::uint32_t v, std::int32_t out, bool moving, bo
   return VertexRemoval(*this, hints).run(v, out, moving, freed);
 }
 
+bool Delaunay::plannedRemoval(std::uint32_t v, std::int32_t out,
+                              std::vector<std::uint32_t>& corners) {
+  if (!built_ || out < 0 || out >= 3 * topo.slotCount() || topo.tri[out] != v) return false;
+  return VertexRemoval(*this, nullptr).plan(out, corners);
+}
+
 Status Delaunay::reinsertVertex(std::uint32_t v, std::int32_t near) {
   return VertexRemoval(*this, nullptr).reinsert(v, near);
 }
@@ -96,6 +103,18 @@ void VertexRemoval::markRemoved(std::uint32_t v, bool moving) {
   d_.xy[2 * static_cast<std::size_t>(v)] = std::numeric_limits<double>::quiet_NaN();
   d_.xy[2 * static_cast<std::size_t>(v) + 1] = std::numeric_limits<double>::quiet_NaN();
   if (!moving) ++d_.stats.removed;
+}
+
+bool VertexRemoval::plan(std::int32_t out, std::vector<std::uint32_t>& corners) {
+  corners.clear();
+  if (!gather(out)) return false;
+  for (const std::uint32_t r : ring_.vertex)
+    if (r == kGhost) return false;
+  const std::uint32_t v = topo_.tri[out];
+  ring_.plan = &corners;
+  const bool cut = cutInterior(d_.xy[2 * std::size_t{v}], d_.xy[2 * std::size_t{v} + 1]);
+  ring_.plan = nullptr;
+  return cut;
 }
 
 Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving, bool freed) {
@@ -131,6 +150,8 @@ Status VertexRemoval::run(std::uint32_t v, std::int32_t out, bool moving, bool f
   // The border's edges by their half-edges inside (in new triangles, which do not move).
   for (std::int32_t& e : ring_.border) e = topo_.adj[e];
   const std::int32_t kept = ring_.slot[0];
+  ring_.made.assign(ring_.slot.begin(),
+                    ring_.slot.begin() + static_cast<std::ptrdiff_t>(ring_.used));
   if (moving) {  // the insertion that follows takes them
     d_.spare_[0] = ring_.slot[ring_.slot.size() - 2];
     d_.spare_[1] = ring_.slot.back();
@@ -198,6 +219,12 @@ std::int32_t VertexRemoval::cut(std::int32_t a, std::int32_t b, std::int32_t c,
                                 std::uint32_t third) {
   const std::int32_t s = ring_.slot[ring_.used++];
   const std::int32_t e = 3 * s;
+  if (ring_.plan) {  // only the corners, and the polygon without b
+    ring_.plan->insert(ring_.plan->end(), {at(a), at(b), third});
+    ring_.next[a] = c;
+    ring_.prev[c] = a;
+    return s;
+  }
   topo_.setTriangle(s, at(a), at(b), third);
   topo_.link(e, ring_.carrier[a]);
   setFixed(e, ring_.fixed[a]);
@@ -282,6 +309,10 @@ bool VertexRemoval::cutInterior(double x, double y) {
     start = a;
   }
   const std::int32_t a = start, b = ring_.next[a], c = ring_.next[b];
+  if (ring_.plan) {
+    ring_.plan->insert(ring_.plan->end(), {at(a), at(b), at(c)});
+    return true;
+  }
   const std::int32_t s = ring_.slot[ring_.used++];
   topo_.setTriangle(s, at(a), at(b), at(c));
   for (const std::int32_t node : {a, b, c}) {
@@ -357,6 +388,7 @@ void VertexRemoval::freeSlots(std::size_t count) {
     const std::int32_t t = ring_.slot[k];
     const std::int32_t moved = topo_.dropSlot(t, flags_);
     if (moved == t) continue;
+    ring_.moved.push_back({moved, t});
     // The cells where the moved triangle lies, and its corners' hints, follow it: a hint
     // past the last slot would cost a location.
     for (int c = 0; c < 3; ++c) {

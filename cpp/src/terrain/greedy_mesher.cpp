@@ -147,6 +147,7 @@ void GreedyMesher::measureSegment(std::uint32_t s) {
 
 bool GreedyMesher::run(std::uint64_t& inserted) {
   inserted = 0;
+  firstInserted_ = std::min(firstInserted_, d_.vertexCount());
   for (;;) {
     const bool triangle = !triangleQueue_.empty(), segment = !segmentQueue_.empty();
     if (!triangle && !segment) break;
@@ -306,6 +307,95 @@ std::int32_t GreedyMesher::afterInsert(std::uint32_t v) {
   vertexEdge_[v] = from;
   for (const std::int32_t h : star_) measureTriangle(h / 3);
   return from;
+}
+
+std::int32_t GreedyMesher::edgeOutOf(std::uint32_t v) const {
+  const std::int32_t e = vertexEdge_[v];
+  if (e >= 0 && e < 3 * topo_.slotCount() && topo_.tri[e] == v) return e;
+  return -1;
+}
+
+// Whether the triangles that removing v would make keep every pixel in them (v's own
+// included) within the bound. Hull vertices, the ends of constrained edges and vertices
+// outside the rings never are: tiles keep their borders, breaklines their chains.
+bool GreedyMesher::removable(std::uint32_t v) {
+  const std::int32_t out = edgeOutOf(v);
+  if (out < 0 || (rings_ && !inside(out / 3)) || !d_.plannedRemoval(v, out, plan_)) return false;
+  const double z = z_[v], bound = limits_.maxError;
+  const double* xy = d_.xy.data();
+  const auto corner = [&](std::uint32_t u) { return Corner{xy[2 * u], xy[2 * u + 1], z_[u]}; };
+  const double x = xy[2 * v], y = xy[2 * v + 1];
+  // v's own pixel first, against the planned triangle that holds it: the pixel that most
+  // often keeps it (greedy insertion put it in for its error).
+  for (std::size_t k = 0; k < plan_.size(); k += 3) {
+    const Corner a = corner(plan_[k]), b = corner(plan_[k + 1]), c = corner(plan_[k + 2]);
+    if (orient2d(a.x, a.y, b.x, b.y, x, y) == Sign::Negative ||
+        orient2d(b.x, b.y, c.x, c.y, x, y) == Sign::Negative ||
+        orient2d(c.x, c.y, a.x, a.y, x, y) == Sign::Negative)
+      continue;
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+    const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const double surface =
+        a.z +
+        ((uz * vy - vz * uy) * (x - a.x) + (ux * vz - vx * uz) * (y - a.y)) / (ux * vy - vx * uy);
+    if (!(std::fabs(z - surface) <= bound)) return false;
+    break;
+  }
+  const std::size_t pixel =
+      raster_.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+  skip_[pixel] = 0;
+  for (std::size_t k = 0; k < plan_.size(); k += 3) {
+    const ScanResult r = scanTriangle(corner(plan_[k]), corner(plan_[k + 1]), corner(plan_[k + 2]),
+                                      raster_, skip_.data());
+    stats_.scannedPixels += r.scanned;
+    if (r.pixel >= 0 && r.error > limits_.maxError) {
+      skip_[pixel] = 1;
+      return false;
+    }
+  }
+  return true;
+}
+
+// The triangle in slot from now lies in slot to (a removal freed it): its measurement, queue
+// entry and winding follow, and its corners learn where it is.
+void GreedyMesher::moveSlot(std::int32_t from, std::int32_t to) {
+  const bool queued = candidate_[from] >= 0 && error_[from] > limits_.maxError;
+  error_[to] = error_[from];
+  candidate_[to] = candidate_[from];
+  std::copy(&corners_[3 * from], &corners_[3 * from] + 3, &corners_[3 * to]);
+  if (rings_) winding_[to] = winding_[from];
+  triangleQueue_.remove(static_cast<std::uint32_t>(to));
+  if (queued) {
+    triangleQueue_.remove(static_cast<std::uint32_t>(from));
+    triangleQueue_.set(static_cast<std::uint32_t>(to), error_[to]);
+  }
+  for (std::int32_t e = 3 * to; e < 3 * to + 3; ++e)
+    if (topo_.tri[e] != kGhost) vertexEdge_[topo_.tri[e]] = e;
+}
+
+std::uint64_t GreedyMesher::decimate(Status& status) {
+  if (!triangleQueue_.empty() || !segmentQueue_.empty()) return 0;  // a limit stopped it
+  std::uint64_t removed = 0;
+  const std::uint32_t end = d_.vertexCount();
+  for (std::uint32_t v = firstInserted_; v < end; ++v) {
+    if (!removable(v)) continue;
+    const std::int32_t out = edgeOutOf(v);
+    const std::int32_t winding = rings_ ? winding_[out / 3] : 0;
+    status = d_.removeVertex(v, out);
+    if (!status.ok()) return removed;
+    ++removed;
+    triangles_ -= 2;
+    for (const auto& [from, to] : d_.movedSlots()) moveSlot(from, to);
+    // Every new triangle is one of the star's, inside when they were; a triangle the
+    // removal's flips made other than planned (cocircular pixels) is measured all the same,
+    // and queued if it misses the bound.
+    for (const std::int32_t t : d_.removalSlots()) {
+      if (rings_) winding_[t] = winding;
+      for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e) vertexEdge_[topo_.tri[e]] = e;
+      measureTriangle(t);
+    }
+  }
+  return removed;
 }
 
 double GreedyMesher::maxError() const {

@@ -44,6 +44,12 @@ class GreedyMesher {
   // Returns the number inserted; a failure of the core is in d.lastError() (returns false).
   bool run(std::uint64_t& inserted);
 
+  // Greedy insertion leaves vertices that later ones made needless: each interior vertex it
+  // inserted goes where the triangles its removal would make keep every pixel within
+  // maxError (one pass, in insertion order). Only after a run that no limit stopped, and
+  // before refinement. Returns the vertices removed; a failure of the core in status.
+  std::uint64_t decimate(Status& status);
+
   // Told of every insertion, after it: from, a half-edge out of the new vertex; a, b the ends
   // of the edge it split (kGhost for none) and whether that was a constrained or hull edge.
   // Refinement in rounds listens, to keep its own record of the mesh.
@@ -75,6 +81,9 @@ class GreedyMesher {
   bool insertTriangleCandidate(std::int32_t t);
   bool insertSegmentCandidate(std::uint32_t s);
   void grow();
+  std::int32_t edgeOutOf(std::uint32_t v) const;  // a half-edge out of v, or -1
+  bool removable(std::uint32_t v);                // decimate()'s test
+  void moveSlot(std::int32_t from, std::int32_t to);
 
   Delaunay& d_;
   Topology& topo_;
@@ -95,6 +104,8 @@ class GreedyMesher {
   std::vector<std::int32_t> winding_;
   std::vector<std::int32_t> vertexEdge_;  // per vertex: a half-edge out of it
   std::vector<std::int32_t> star_;
+  std::uint32_t firstInserted_ = kGhost;  // the first vertex run() inserted
+  std::vector<std::uint32_t> plan_;       // decimate()'s planned triangles
   CandidateQueue triangleQueue_, segmentQueue_;
   BorderSegments segments_;
 };
