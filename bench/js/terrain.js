@@ -4,7 +4,8 @@
 // 257 x 257 crop, the size it needs), alternating in one process, medians of wall and
 // main-thread CPU time. Each mesh's largest error is measured over every pixel, the same way
 // for all (pixel-error.js). Then breaklines and minAngle 20 against geocdt's plain mesh.
-// Prints the targets, met or missed. With --chromium, the comparisons also run in a headless Chromium page (wall time there).
+// Prints the targets, met or missed. With --chromium, the comparisons also run in a headless
+// Chromium page (wall time there).
 //   node --expose-gc bench/js/terrain.js [--rounds N] [--quick] [--chromium]
 import { createServer } from 'node:http';
 import { readFileSync } from 'node:fs';
