@@ -59,7 +59,7 @@ function breaklines() {
 function options() {
   const maxError = maxErrorOf(Number($('max-error').value));
   const minAngle = Number($('min-angle').value);
-  return { maxError, minAngle, breaklines: breaklines() };
+  return { maxError, minAngle, decimate: $('decimate').checked, breaklines: breaklines() };
 }
 
 function fitCanvas() {
@@ -95,6 +95,7 @@ function showStats(m, request) {
     request.maxError.toFixed(2)} m)`;
   $('stat-min-angle').textContent = `${smallestAngle(m).toFixed(1)}°`;
   $('stat-steiner').textContent = n(stats.steinerPoints);
+  $('stat-decimated').textContent = n(stats.decimated);
   let constrained = 0;
   for (const c of m.constrained) constrained += c;
   $('stat-constrained').textContent = n(constrained / 2);
@@ -144,6 +145,7 @@ function pixelAt(event) {
 function setUp() {
   for (const id of ['max-error', 'min-angle']) $(id).addEventListener('input', remesh);
   $('use-breaklines').addEventListener('change', remesh);
+  $('decimate').addEventListener('change', remesh);
   $('wireframe').addEventListener('change', draw);
   $('clear-lines').addEventListener('click', () => {
     drawn = [];

@@ -78,6 +78,7 @@ async function stats() {
       bound: Number(/bound ([\d.]+)/.exec(text('stat-max-error'))?.[1]),
       angle: Number(text('stat-min-angle').replace('°', '')),
       steiner: number('stat-steiner'),
+      decimated: number('stat-decimated'),
       constrained: number('stat-constrained'),
       error: document.getElementById('error').hidden ? '' : text('error'),
     };
@@ -130,6 +131,21 @@ test('a larger error gives fewer triangles; minAngle gives angles of at least it
   assert.ok(plain.maxError <= plain.bound);
   assert.equal(plain.constrained, 0);
   await page.screenshot({ path: join(OUTPUT, 'terrain-refined.png') });
+});
+
+test('decimate removes vertices and triangles, keeping the bound', async () => {
+  const before = await stats();
+  await remeshed(() => page.click('#decimate'));
+  const decimated = await stats();
+  assert.equal(decimated.status, 'ready', decimated.error);
+  assert.ok(decimated.decimated > 0, `${decimated.decimated} vertices decimated`);
+  assert.ok(decimated.triangles < before.triangles,
+    `${decimated.triangles} triangles against ${before.triangles}`);
+  assert.ok(decimated.maxError <= decimated.bound);
+  await remeshed(() => page.click('#decimate'));
+  const again = await stats();
+  assert.equal(again.decimated, 0);
+  assert.equal(again.triangles, before.triangles);
 });
 
 test('a breakline drawn by clicking becomes constrained edges', async () => {
