@@ -44,7 +44,8 @@ class Incremental {
 
   // Editing: the status lands in out when it is not ok. removePoint returns 1 when the
   // vertex went, 0 when it stays as a polyline's, -1 on an error; the others whether they
-  // succeeded. Ids come as doubles that JS checked to be integers in [0, 2^32).
+  // succeeded. Ids come as doubles that JS checked to be integers in [0, 2^32). JS calls
+  // removePoint and movePoint through the plain exports of edit_calls.cpp.
   int removePoint(Output& out, double id);
   bool removePolyline(Output& out, double polyline);
   bool movePoint(Output& out, double id, double x, double y);
@@ -54,6 +55,9 @@ class Incremental {
   bool hasPolyline(double polyline) const {
     return triangulation_.hasPolyline(static_cast<std::size_t>(polyline));
   }
+
+  // Where this object lives, for the plain editing exports (edit_calls.cpp).
+  std::uintptr_t objectAddress() const { return reinterpret_cast<std::uintptr_t>(this); }
 
   double vertexCount() const { return static_cast<double>(triangulation_.vertexCount()); }
   double triangleCount() const { return static_cast<double>(triangulation_.triangleCount()); }

@@ -66,6 +66,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
 
   class_<Output>("Output")
       .constructor<>()
+      .function("objectAddress", &Output::objectAddress)
       .function("data", &Output::data)
       .function("size", &Output::size)
       .function("code", &Output::code)
@@ -103,14 +104,13 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("rasterize", &Incremental::rasterize)
       .function("valuesPerPoint", &Incremental::valuesPerPoint)
       .function("hasValues", &Incremental::hasValues)
-      .function("removePoint", &Incremental::removePoint)
       .function("removePolyline", &Incremental::removePolyline)
-      .function("movePoint", &Incremental::movePoint)
       .function("hasVertex", &Incremental::hasVertex)
       .function("hasPolyline", &Incremental::hasPolyline)
       .function("vertexCount", &Incremental::vertexCount)
       .function("triangleCount", &Incremental::triangleCount)
-      .function("polylineCount", &Incremental::polylineCount);
+      .function("polylineCount", &Incremental::polylineCount)
+      .function("objectAddress", &Incremental::objectAddress);
 
   class_<PolygonCall>("PolygonCall")
       .constructor<>()

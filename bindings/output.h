@@ -81,6 +81,8 @@ class Output {
   emscripten::val voronoiStats() const;
 
   void clear();  // frees every array: the heap returns to where it was before the call
+  // Where this object lives, for the plain editing exports (edit_calls.cpp).
+  std::uintptr_t objectAddress() const { return reinterpret_cast<std::uintptr_t>(this); }
 };
 
 // Stats as a JS object: the one list of the statistics' names.

@@ -73,6 +73,7 @@ export class Kernel {
     this.wasm = wasm;
     this.threads = threads;
     this.output = new wasm.Output();
+    this.outputAddress = this.output.objectAddress();
     this.input = new wasm.Input();
     this.scratch = this.alloc(6 * 8);
     this.busy = false;
@@ -547,8 +548,12 @@ export class Kernel {
       this.output.clear();
     }
   }
+  // (Its address goes with it, for the editing calls that bypass embind: removePoint,
+  // movePoint.)
   createIncremental(valuesPerPoint) {
-    return new this.wasm.Incremental(valuesPerPoint, this.threads);
+    const incremental = new this.wasm.Incremental(valuesPerPoint, this.threads);
+    incremental.rawAddress = incremental.objectAddress();
+    return incremental;
   }
 
   // Inserts checked coordinates, with checked values or undefined, into an Incremental;
@@ -679,7 +684,7 @@ export class Kernel {
 
   removePoint(incremental, id) {
     this.idle();
-    const result = incremental.removePoint(this.output, id);
+    const result = this.wasm._geocdt_remove_point(incremental.rawAddress, this.outputAddress, id);
     this.checkEdit(result >= 0);
     return result === 1;
   }
@@ -691,7 +696,8 @@ export class Kernel {
 
   movePoint(incremental, id, x, y) {
     this.idle();
-    this.checkEdit(incremental.movePoint(this.output, id, x, y));
+    this.checkEdit(this.wasm._geocdt_move_point(incremental.rawAddress, this.outputAddress, id, x,
+      y) === 1);
   }
 
   locate(incremental, x, y) {
