@@ -415,7 +415,7 @@ export interface RasterMeshOptions {
   /**
    * After the greedy insertion, remove the pixels it inserted that later ones made needless:
    * each interior vertex whose removal keeps every pixel within maxError goes (one pass).
-   * About 7-17% fewer triangles for the same bound, at 1.3-1.7 times the time (default
+   * About 7-17% fewer triangles for the same bound, at 1.3-1.6 times the time (default
    * false). Hull, tile border, breakline and no-data boundary vertices always stay.
    */
   decimate?: boolean;
