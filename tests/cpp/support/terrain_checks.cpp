@@ -35,7 +35,10 @@ RasterErrors rasterErrors(const Mesh& mesh, const std::vector<double>& heights, 
       y[k] = p[2 * v[k] + 1];
       z[k] = mesh.values[v[k]];
     }
-    const double cx = (x[0] + x[1] + x[2]) / 3, cy = (y[0] + y[1] + y[2]) / 3;
+    // (In long double: a triangle ulps wide at a cell's corner, where a breakline's rounded
+    // crossings meet the boundary, has a double centroid that rounds into the next cell.)
+    const long double cx = (static_cast<long double>(x[0]) + x[1] + x[2]) / 3,
+                      cy = (static_cast<long double>(y[0]) + y[1] + y[2]) / 3;
     if (!valid.empty() &&
         !cellValid(valid, width, height, static_cast<std::int64_t>(std::floor(cx)),
                    static_cast<std::int64_t>(std::floor(cy))) &&
