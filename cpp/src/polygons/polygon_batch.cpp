@@ -1,6 +1,8 @@
-// triangulatePolygons(): the batch checked, cut into ranges of polygons for the threads, each
-// range triangulated polygon after polygon, and the ranges' arrays joined in polygon order.
+// triangulatePolygons(): the batch checked, cut into ranges of polygons that the threads take
+// in turn, each range triangulated polygon after polygon, and the ranges' arrays joined in
+// polygon order.
 #include <algorithm>
+#include <atomic>
 
 #include "base/in_parallel.h"
 #include "geocdt/polygons.h"
@@ -14,6 +16,9 @@ namespace {
 
 // Below this many points a batch runs on one thread: starting one costs more than it saves.
 constexpr std::size_t kParallelPoints = std::size_t{1} << 15;
+// Ranges a thread, taken in turn: equal numbers of points are not equal work (tiles of
+// different extents take different predicates), and small ranges even it out.
+constexpr std::uint32_t kRangesPerThread = 32;
 
 // What one range produced; range 0 writes straight into the caller's arrays.
 struct RangeOutput {
@@ -27,14 +32,14 @@ std::size_t firstPointOf(const PolygonBatch& b, std::size_t p) {
   return b.ringOffsets[b.polygonOffsets[p]];
 }
 
-// Cuts the polygons into `threads` ranges of about equal numbers of points: range i is
-// polygons bounds[i] .. bounds[i + 1].
-std::vector<std::size_t> cut(const PolygonBatch& b, std::uint32_t threads) {
-  std::vector<std::size_t> bounds(threads + 1, b.polygonCount);
+// Cuts the polygons into `ranges` ranges of about equal numbers of points: range i is
+// polygons bounds[i] .. bounds[i + 1] (some empty when polygons are few).
+std::vector<std::size_t> cut(const PolygonBatch& b, std::uint32_t ranges) {
+  std::vector<std::size_t> bounds(ranges + 1, b.polygonCount);
   bounds[0] = 0;
   const std::size_t first = firstPointOf(b, 0), total = firstPointOf(b, b.polygonCount) - first;
-  for (std::uint32_t i = 1; i < threads; ++i) {
-    const std::size_t target = first + total * i / threads;
+  for (std::uint32_t i = 1; i < ranges; ++i) {
+    const std::size_t target = first + total * i / ranges;
     std::size_t lo = bounds[i - 1], hi = b.polygonCount;
     while (lo < hi) {  // the first polygon that starts at or after target
       const std::size_t mid = lo + (hi - lo) / 2;
@@ -82,35 +87,41 @@ Status runBatch(const PolygonBatch& b, const PolygonOptions& options, PolygonTri
   if (kThreadsBuilt && options.threads > 1 && points >= kParallelPoints)
     threads = static_cast<std::uint32_t>(
         std::min<std::size_t>({options.threads, b.polygonCount, points / (kParallelPoints / 2)}));
-  const std::vector<std::size_t> bounds = cut(b, threads);
-  std::vector<RangeOutput> parts(threads);
+  const std::uint32_t ranges = threads == 1 ? 1 : threads * kRangesPerThread;
+  const std::vector<std::size_t> bounds = cut(b, ranges);
+  std::vector<RangeOutput> parts(ranges);
   // About one triangle a point (fewer on tiles: rings close on a repeated point): room for
-  // that at once, so that the arrays rarely grow.
+  // that at once, so that the arrays rarely grow. Range 0 writes into the caller's array,
+  // which gets room for every range's, so that joining the others moves nothing.
   const auto reserve = [&](std::size_t i, std::vector<std::uint32_t>& triangles) {
-    triangles.reserve(3 * (firstPointOf(b, bounds[i + 1]) - firstPointOf(b, bounds[i])));
+    const std::size_t last = i == 0 ? b.polygonCount : bounds[i + 1];
+    triangles.reserve(3 * (firstPointOf(b, last) - firstPointOf(b, bounds[i])));
   };
-  stats.threads = inParallel(threads, [&](std::uint32_t i) {
-    RangeOutput& part = parts[i];
-    std::vector<std::uint32_t>& triangles = i == 0 ? out.triangles : part.triangles;
-    std::vector<double>& extras = i == 0 ? out.extraPoints : part.extras;
-    reserve(i, triangles);
-    PolygonRange range;
-    part.status = range.run(b, options.fill, bounds[i], bounds[i + 1], triangles, extras,
-                            out.triangleOffsets.data() + 1 + bounds[i], part.stats);
+  std::atomic<std::uint32_t> next{0};
+  stats.threads = inParallel(threads, [&](std::uint32_t) {
+    PolygonRange range;  // its scratch memory kept from range to range
+    for (std::uint32_t i = next++; i < ranges; i = next++) {
+      RangeOutput& part = parts[i];
+      std::vector<std::uint32_t>& triangles = i == 0 ? out.triangles : part.triangles;
+      std::vector<double>& extras = i == 0 ? out.extraPoints : part.extras;
+      reserve(i, triangles);
+      part.status = range.run(b, options.fill, bounds[i], bounds[i + 1], triangles, extras,
+                              out.triangleOffsets.data() + 1 + bounds[i], part.stats);
+    }
   });
-  for (std::size_t i = 0; i < threads; ++i) {  // the first failure in polygon order
+  for (std::size_t i = 0; i < ranges; ++i) {  // the first failure in polygon order
     if (!parts[i].status.ok()) return parts[i].status;
     addStats(stats, parts[i].stats);
   }
-  if (threads > 1) {
+  if (ranges > 1) {
     std::size_t total = out.triangles.size(), extras = out.extraPoints.size();
-    for (std::size_t i = 1; i < threads; ++i) {
+    for (std::size_t i = 1; i < ranges; ++i) {
       total += parts[i].triangles.size();
       extras += parts[i].extras.size();
     }
     out.triangles.reserve(total);
     out.extraPoints.reserve(extras);
-    for (std::size_t i = 1; i < threads; ++i) join(b, bounds, i, parts[i], out);
+    for (std::size_t i = 1; i < ranges; ++i) join(b, bounds, i, parts[i], out);
   }
   return Status::success();
 }
