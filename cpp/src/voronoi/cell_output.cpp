@@ -39,21 +39,12 @@ std::uint32_t closedCorners(const SiteDiagram& d, std::uint32_t v, Put put) {
 }
 
 // Per vertex, what its cell holds: 0 (nothing: outside, or a sliver that rounding left without
-// three distinct corners), kClipped, or the points of its whole ring. The ring's corners are its
-// triangles' centres, a run of equal ones (cocircular sites) counted once: one pass over the
-// half-edges counts, for each vertex, the edges out of it whose two triangles have distinct
-// centres. In slot order, which streams through memory where turning around each cell jumps.
+// three distinct corners), kClipped, or the points of its whole ring (its distinct corners, a
+// run of equal centres from cocircular sites counted once, then the closing point).
 std::vector<std::uint32_t> cellSizes(const SiteDiagram& d, const CellSides& sides,
                                      const ClippedCells& clipped) {
   const std::uint32_t vertices = d.vertexCount();
-  std::vector<std::uint32_t> sizes(vertices, 0);
-  const Topology& topo = d.topo();
-  const std::size_t halfEdges = topo.tri.size();
-  for (std::size_t e = 0; e < halfEdges; ++e) {
-    const std::uint32_t v = topo.tri[e];
-    if (v >= vertices) continue;  // ghost, guard
-    sizes[v] += d.center(static_cast<std::int32_t>(e / 3)) != d.center(topo.adj[e] / 3);
-  }
+  std::vector<std::uint32_t> sizes(vertices);
   std::size_t next = 0;  // the next clipped cell, in vertex order
   for (std::uint32_t v = 0; v < vertices; ++v) {
     if (next < clipped.vertices.size() && clipped.vertices[next] == v) {
@@ -62,8 +53,9 @@ std::vector<std::uint32_t> cellSizes(const SiteDiagram& d, const CellSides& side
     } else if (!sides.uncutInside(v)) {
       sizes[v] = 0;
     } else {
-      // Distinct corners, then the closing point (all centres equal: one corner).
-      sizes[v] = sizes[v] >= 3 ? sizes[v] + 1 : 0;
+      // Under three distinct corners (a sliver, or cocircular sites): nothing to draw.
+      const std::uint32_t corners = d.cornerCount(v);
+      sizes[v] = corners >= 3 ? corners + 1 : 0;
     }
   }
   return sizes;

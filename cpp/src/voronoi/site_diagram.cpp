@@ -44,29 +44,7 @@ Status SiteDiagram::build(const double* sites, std::uint32_t count, double minX,
   const Status guarded = addGuards(minX, minY, maxX, maxY);
   if (!guarded.ok()) return guarded;
   computeCenters();
-  chooseOutEdges();
   return Status::success();
-}
-
-// Each real site's half-edge out of it whose triangle has the least centre (by x, then y): the
-// corner its cell's ring starts from, the same whatever the slots' layout (threads, batches).
-void SiteDiagram::chooseOutEdges() {
-  const std::vector<std::uint32_t>& tri = delaunay_->topo.tri;
-  outEdge_.assign(realVertices_, -1);
-  std::int32_t* out = outEdge_.data();
-  const std::uint32_t real = realVertices_;
-  const XY* centers = centers_.data();
-  forChunks(0, tri.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e) {
-      const std::uint32_t v = tri[e];
-      if (v >= real) continue;
-      const XY c = centers[e / 3];
-      const std::int32_t best = out[v];
-      if (best < 0 || c.x < centers[best / 3].x ||
-          (c.x == centers[best / 3].x && c.y < centers[best / 3].y))
-        out[v] = static_cast<std::int32_t>(e);
-    }
-  });
 }
 
 // The hull edges are the real half-edges whose twins lie in ghost triangles, counter-clockwise
@@ -106,32 +84,56 @@ Status SiteDiagram::addGuards(double minX, double minY, double maxX, double maxY
   return delaunay_->insertBatch(guards, 3, ids);
 }
 
-// Appended in slot order (NaN for ghost triangles): one write per slot. The same doubles for
-// a triangle on any number of threads.
+// One pass in slot order, one write per slot: each slot's circumcentre (NaN for ghost
+// triangles; the same doubles for a triangle on any number of threads), each real site's
+// out-edge (the least centre by x, then y, the first in slot order among equal ones: the same
+// whatever the slots' layout), and each real site's corner count (an edge's pair of half-edges
+// is compared when its later triangle comes, both centres then known).
 void SiteDiagram::computeCenters() {
   const Topology& topo = delaunay_->topo;
   const auto slots = static_cast<std::size_t>(topo.slotCount());
   centers_.clear();
   centers_.reserve(slots);
+  outEdge_.assign(realVertices_, -1);
+  corners_.assign(realVertices_, 0);
   const std::uint32_t* tri = topo.tri.data();
+  const std::int32_t* adj = topo.adj.data();
   const double* xy = delaunay_->xy.data();
+  const XY* centers = centers_.data();
+  std::int32_t* out = outEdge_.data();
+  std::uint32_t* corners = corners_.data();
+  const std::uint32_t real = realVertices_;
   const auto at = [xy](std::uint32_t v) { return XY{xy[2 * v], xy[2 * v + 1]}; };
   forChunks(0, slots, [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t) {
       std::uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-      if (a == kGhost || b == kGhost || c == kGhost) {
-        centers_.push_back(XY{NAN, NAN});
-        continue;
+      XY centre{NAN, NAN};
+      if (a != kGhost && b != kGhost && c != kGhost) {
+        // From the least vertex id: the rounding depends on the rotation, which threads change.
+        if (b < a && b < c) {
+          std::swap(a, b);  // b a c
+          std::swap(b, c);  // b c a
+        } else if (c < a && c < b) {
+          std::swap(a, c);  // c b a
+          std::swap(b, c);  // c a b
+        }
+        centre = circumcenter(at(a), at(b), at(c));
       }
-      // From the least vertex id: the rounding depends on the rotation, which threads change.
-      if (b < a && b < c) {
-        std::swap(a, b);  // b a c
-        std::swap(b, c);  // b c a
-      } else if (c < a && c < b) {
-        std::swap(a, c);  // c b a
-        std::swap(b, c);  // c a b
+      centers_.push_back(centre);
+      for (std::size_t e = 3 * t; e < 3 * t + 3; ++e) {
+        const std::uint32_t v = tri[e];
+        if (v < real) {
+          const std::int32_t best = out[v];
+          if (best < 0 || centre.x < centers[best / 3].x ||
+              (centre.x == centers[best / 3].x && centre.y < centers[best / 3].y))
+            out[v] = static_cast<std::int32_t>(e);
+        }
+        const std::int32_t f = adj[e];
+        if (static_cast<std::size_t>(f / 3) >= t) continue;  // compared when f's comes
+        const std::uint32_t distinct = centre != centers[f / 3];
+        if (v < real) corners[v] += distinct;
+        if (tri[f] < real) corners[tri[f]] += distinct;
       }
-      centers_.push_back(circumcenter(at(a), at(b), at(c)));
     }
   });
 }

@@ -41,6 +41,9 @@ class SiteDiagram {
   // A half-edge out of real site v: the one whose triangle has the least centre (by x, then y),
   // where its cell's ring starts.
   std::int32_t outEdge(std::uint32_t v) const { return outEdge_[v]; }
+  // The edges out of real site v whose two triangles' centres differ: the distinct corners of
+  // its cell's ring (cocircular sites make runs of equal centres).
+  std::uint32_t cornerCount(std::uint32_t v) const { return corners_[v]; }
   // The circumcentre of slot t (a real triangle): a vertex of the Voronoi diagram.
   XY center(std::int32_t t) const { return centers_[t]; }
 
@@ -51,7 +54,6 @@ class SiteDiagram {
   void recordHull();
   Status addGuards(double minX, double minY, double maxX, double maxY);
   void computeCenters();
-  void chooseOutEdges();
 
   std::unique_ptr<Delaunay> delaunay_;
   std::vector<std::uint32_t> siteVertex_;
@@ -59,6 +61,7 @@ class SiteDiagram {
   std::uint64_t threads_ = 1;  // that triangulated the sites
   std::vector<XY> hull_;
   std::vector<std::int32_t> outEdge_;
+  std::vector<std::uint32_t> corners_;
   std::vector<XY> centers_;
 };
 
