@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "constraint_invariants.h"
+#include "geocdt/polygons.h"
 #include "geocdt/triangulation.h"
 #include "invariants.h"
 #include "point_generators.h"
@@ -259,6 +260,55 @@ TEST(Threads, CoordinatesCheckedSideBySideNameTheFirstBadPoint) {
                              ": coordinates must lie within +-1e150")
         << threads;
     EXPECT_EQ(t.vertexCount(), 0u) << threads;
+  }
+}
+
+// Polygon batches: ranges of polygons taken in turn by the threads, joined in polygon order.
+// Polygons of 4 to about 400 points, every fifth with a bow-tie hole whose crossing adds an
+// extra point, so that ranges renumber extras when joined.
+TEST(Threads, PolygonBatchGivesOneThreadsArrays) {
+  std::vector<double> xy;
+  std::vector<std::uint32_t> rings{0}, polygons{0};
+  std::uint32_t seed = 7;
+  const auto next = [&seed] { return seed = seed * 1103515245u + 12345u; };
+  for (int p = 0; p < 1500; ++p) {
+    const double cx = 100.0 * (p % 40), cy = 100.0 * (p / 40);
+    const int n = 4 + static_cast<int>(next() >> 16) % (p % 7 == 0 ? 400 : 40);
+    for (int k = 0; k < n; ++k) {
+      const double angle = 2 * 3.14159265358979 * k / n;
+      const double radius = 30 + static_cast<double>((next() >> 16) % 15);
+      xy.insert(xy.end(), {cx + radius * std::cos(angle), cy + radius * std::sin(angle)});
+    }
+    rings.push_back(static_cast<std::uint32_t>(xy.size() / 2));
+    if (p % 5 == 0) {  // a bow tie: its two middle segments cross
+      xy.insert(xy.end(), {cx - 10, cy - 10, cx + 10, cy + 10, cx + 10, cy - 10, cx - 10, cy + 10});
+      rings.push_back(static_cast<std::uint32_t>(xy.size() / 2));
+    }
+    polygons.push_back(static_cast<std::uint32_t>(rings.size() - 1));
+  }
+  PolygonBatch batch;
+  batch.xy = xy.data();
+  batch.pointCount = xy.size() / 2;
+  batch.ringOffsets = rings.data();
+  batch.ringCount = rings.size() - 1;
+  batch.polygonOffsets = polygons.data();
+  batch.polygonCount = polygons.size() - 1;
+  ASSERT_GT(batch.pointCount, 40000u);  // enough for threads
+  PolygonTriangles one;
+  PolygonStats oneStats;
+  ASSERT_TRUE(triangulatePolygons(batch, PolygonOptions(), one, &oneStats).ok());
+  EXPECT_EQ(oneStats.crossings, 300u);
+  for (const std::uint32_t threads : {2u, 3u, 4u}) {
+    PolygonOptions options;
+    options.threads = threads;
+    PolygonTriangles many;
+    PolygonStats stats;
+    ASSERT_TRUE(triangulatePolygons(batch, options, many, &stats).ok()) << threads;
+    EXPECT_EQ(stats.threads, threads);
+    EXPECT_EQ(stats.crossings, oneStats.crossings);
+    EXPECT_EQ(many.triangles, one.triangles) << threads;
+    EXPECT_EQ(many.extraPoints, one.extraPoints) << threads;
+    EXPECT_EQ(many.triangleOffsets, one.triangleOffsets) << threads;
   }
 }
 }  // namespace
