@@ -315,12 +315,12 @@ std::int32_t GreedyMesher::edgeOutOf(std::uint32_t v) const {
   return -1;
 }
 
-// Whether the triangles that removing v would make keep every pixel in them (v's own
-// included) within the bound. Hull vertices, the ends of constrained edges and vertices
-// outside the rings never are: tiles keep their borders, breaklines their chains.
-bool GreedyMesher::removable(std::uint32_t v) {
+// A half-edge out of v if the triangles that removing v would make keep every pixel in them
+// (v's own included) within the bound, else -1. Hull vertices, the ends of constrained edges
+// and vertices outside the rings never are: tiles keep their borders, breaklines their chains.
+std::int32_t GreedyMesher::removableEdge(std::uint32_t v) {
   const std::int32_t out = edgeOutOf(v);
-  if (out < 0 || (rings_ && !inside(out / 3)) || !d_.plannedRemoval(v, out, plan_)) return false;
+  if (out < 0 || (rings_ && !inside(out / 3)) || !d_.plannedRemoval(v, out, plan_)) return -1;
   const double z = z_[v], bound = limits_.maxError;
   const double* xy = d_.xy.data();
   const auto corner = [&](std::uint32_t u) { return Corner{xy[2 * u], xy[2 * u + 1], z_[u]}; };
@@ -333,12 +333,8 @@ bool GreedyMesher::removable(std::uint32_t v) {
         orient2d(b.x, b.y, c.x, c.y, x, y) == Sign::Negative ||
         orient2d(c.x, c.y, a.x, a.y, x, y) == Sign::Negative)
       continue;
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-    const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-    const double surface =
-        a.z +
-        ((uz * vy - vz * uy) * (x - a.x) + (ux * vz - vx * uz) * (y - a.y)) / (ux * vy - vx * uy);
-    if (!(std::fabs(z - surface) <= bound)) return false;
+    Plane plane;
+    if (planeOf(a, b, c, plane) && !(std::fabs(z - plane.at(x, y)) <= bound)) return -1;
     break;
   }
   const std::size_t pixel =
@@ -350,10 +346,10 @@ bool GreedyMesher::removable(std::uint32_t v) {
     stats_.scannedPixels += r.scanned;
     if (r.pixel >= 0 && r.error > limits_.maxError) {
       skip_[pixel] = 1;
-      return false;
+      return -1;
     }
   }
-  return true;
+  return out;
 }
 
 // The triangle in slot from now lies in slot to (a removal freed it): its measurement, queue
@@ -378,8 +374,8 @@ std::uint64_t GreedyMesher::decimate(Status& status) {
   std::uint64_t removed = 0;
   const std::uint32_t end = d_.vertexCount();
   for (std::uint32_t v = firstInserted_; v < end; ++v) {
-    if (!removable(v)) continue;
-    const std::int32_t out = edgeOutOf(v);
+    const std::int32_t out = removableEdge(v);
+    if (out < 0) continue;
     const std::int32_t winding = rings_ ? winding_[out / 3] : 0;
     status = d_.removeVertex(v, out);
     if (!status.ok()) return removed;

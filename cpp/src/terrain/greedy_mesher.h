@@ -82,7 +82,7 @@ class GreedyMesher {
   bool insertSegmentCandidate(std::uint32_t s);
   void grow();
   std::int32_t edgeOutOf(std::uint32_t v) const;  // a half-edge out of v, or -1
-  bool removable(std::uint32_t v);                // decimate()'s test
+  std::int32_t removableEdge(std::uint32_t v);    // decimate()'s test
   void moveSlot(std::int32_t from, std::int32_t to);
 
   Delaunay& d_;

@@ -38,7 +38,7 @@ struct Rows {
   const double* heights;
   const std::uint8_t* skip;
   std::size_t width;
-  double base, gx, gy;  // the plane: z = base + gx x + gy y
+  Plane plane;
 };
 
 void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t first,
@@ -55,10 +55,10 @@ void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t f
     scanned += static_cast<std::uint64_t>(i1 - i0 + 1);
     const std::size_t rowStart = static_cast<std::size_t>(j) * r.width;
     const double* row = r.heights + rowStart;
-    const double rowBase = r.base + r.gy * y;
+    const double rowBase = r.plane.base + r.plane.gy * y;
     double x = static_cast<double>(i0);
     for (std::int64_t i = i0; i <= i1; ++i, x += 1) {
-      const double e = std::fabs(row[i] - (rowBase + r.gx * x));
+      const double e = std::fabs(row[i] - (rowBase + r.plane.gx * x));
       if (e > best && !r.skip[rowStart + static_cast<std::size_t>(i)]) {
         best = e;
         bestPixel = static_cast<std::int64_t>(rowStart) + i;
@@ -104,33 +104,52 @@ bool middlePixel(const Corner& p, const Corner& q, double& x, double& y) {
   return true;
 }
 
-}  // namespace
-
-ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raster,
-                        const std::uint8_t* skip) {
-  // Sorted by (y, x): every edge then runs from its lower end, as the neighbour sees it too.
+// Sorted by (y, x): every edge then runs from its lower end, as the neighbour sees it too.
+void sortCorners(Corner& a, Corner& b, Corner& c) {
   if (below(b, a)) std::swap(a, b);
   if (below(c, b)) std::swap(b, c);
   if (below(b, a)) std::swap(a, b);
-  ScanResult r;
+}
+
+double determinant(const Corner& a, const Corner& b, const Corner& c) {
+  return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+}
+
+// The plane z = a.z + gx (x - a.x) + gy (y - a.y) of sorted corners whose determinant is det.
+Plane sortedPlane(const Corner& a, const Corner& b, const Corner& c, double det) {
   const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
   const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-  const double det = ux * vy - vx * uy;
+  const double inverse = 1 / det;
+  const double gx = (uz * vy - vz * uy) * inverse, gy = (ux * vz - vx * uz) * inverse;
+  return {a.z - gx * a.x - gy * a.y, gx, gy};
+}
+
+}  // namespace
+
+bool planeOf(Corner a, Corner b, Corner c, Plane& plane) {
+  sortCorners(a, b, c);
+  const double det = determinant(a, b, c);
+  if (!(det != 0)) return false;
+  plane = sortedPlane(a, b, c, det);
+  return true;
+}
+
+ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raster,
+                        const std::uint8_t* skip) {
+  sortCorners(a, b, c);
+  ScanResult r;
+  const double det = determinant(a, b, c);
   if (!(det != 0)) return r;
   const bool small = smallLatticeTriangle(a, b, c, det, raster, skip);
   if (small && std::fabs(det) == 1) return r;
-  // The plane z = a.z + gx (x - a.x) + gy (y - a.y).
-  const double inverse = 1 / det;
-  const double gx = (uz * vy - vz * uy) * inverse, gy = (ux * vz - vx * uz) * inverse;
-  const Rows rows{raster.heights(), skip, raster.width(), a.z - gx * a.x - gy * a.y, gx, gy};
+  const Rows rows{raster.heights(), skip, raster.width(), sortedPlane(a, b, c, det)};
   if (small) {
     // One pixel besides the corners, measured as scanRows would.
     double x = 0, y = 0;
     if (!middlePixel(a, b, x, y) && !middlePixel(b, c, x, y)) middlePixel(a, c, x, y);
     const std::size_t pixel =
         raster.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
-    const double rowBase = rows.base + rows.gy * y;
-    const double e = std::fabs(rows.heights[pixel] - (rowBase + rows.gx * x));
+    const double e = std::fabs(rows.heights[pixel] - rows.plane.at(x, y));
     r.scanned = 1;
     if (e > 0 && !skip[pixel]) {
       r.error = e;

@@ -20,6 +20,16 @@ struct Corner {
   double x, y, z;
 };
 
+// The plane through three corners, z = base + gx x + gy y, as the scans evaluate it.
+struct Plane {
+  double base, gx, gy;
+  double at(double x, double y) const { return (base + gy * y) + gx * x; }
+};
+
+// The plane of triangle abc, from its corners in the order the scans take them (by y, then
+// x), so that a pixel measured here gets the scan's very number. False when abc is flat.
+bool planeOf(Corner a, Corner b, Corner c, Plane& plane);
+
 struct ScanResult {
   double error = 0;         // |height - plane| at pixel, 0 when no pixel differs
   std::int64_t pixel = -1;  // the first such pixel in row order, or -1
