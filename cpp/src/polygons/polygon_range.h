@@ -1,7 +1,7 @@
 #pragma once
 // A contiguous range of a batch's polygons, triangulated one after the other into arrays of
-// the range's own: the unit of work of one thread. Its scratch memory (the small path's, the
-// ring offsets) is kept from polygon to polygon.
+// the range's own: the unit of work a thread takes. Its scratch memory (the small path's, the
+// ring offsets) is kept from polygon to polygon, and from range to range on one thread.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
