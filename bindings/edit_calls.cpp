@@ -1,7 +1,7 @@
 // The editing calls a user makes by the hundred thousand (a dragged vertex, a selection
 // deleted point by point), exported as plain functions: embind's method calls marshal their
-// arguments through generated JS that costs about 0.4 µs a call, as much as a removal's own
-// work in the core. JS passes the addresses that Incremental::objectAddress() and
+// arguments through generated JS that cost as much as a removal's own work in the core
+// (bench/EXPERIMENTS.md, E18). JS passes the addresses that Incremental::objectAddress() and
 // Output::objectAddress() gave it once.
 #include <emscripten/emscripten.h>
 

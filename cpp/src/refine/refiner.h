@@ -240,8 +240,8 @@ class Refiner {
   bool fitsAt(const SplitSite& site, double qx, double qy) const;
   bool fitsOnHull(const SplitSite& site, double& px, double& py) const;
   void insertSplitPoint(const SplitSite& site, double px, double py);
-  // A bad triangle split at its candidate (circumcentre or off-centre), in these steps; each
-  // runs once a split, inlined as one function was (its calls cost 0.4% of refinement).
+  // A bad triangle split at its candidate (circumcentre or off-centre), in these steps
+  // (triangle_splits.cpp); each runs once a split, inlined as one function was (L1).
   Outcome splitTriangle(const BadTriangle& bad);
   GEOCDT_ALWAYS_INLINE bool candidate(const BadTriangle& bad, double& cx, double& cy,
                                       bool& large) const;
