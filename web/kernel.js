@@ -4,6 +4,9 @@
 // typed arrays they own, and no heap view outlives the call (memory growth would detach it).
 // The names of fields, statistics, status codes, location kinds, keep, fill and phases all
 // come from the module (bindings/names.h, bindings/output.cpp): no table is kept here.
+import {
+  enumNames, fillRuleOption, meshOptions, methodOption, progressReporter, refineOptions,
+} from './call-options.js';
 import { GeocdtError, outOfMemoryError, statusError } from './errors.js';
 import {
   coordinateError, describe, isNumericTypedArray, offsetError, polygonCoordinateError,
@@ -11,15 +14,6 @@ import {
 } from './input.js';
 
 const now = () => globalThis.performance?.now() ?? Date.now();
-
-// An embind enum's names, indexed by value.
-function enumNames(embindEnum) {
-  const names = [];
-  for (const [name, value] of Object.entries(embindEnum)) {
-    if (name !== 'values') names[value.value] = name;
-  }
-  return names;
-}
 
 // Copies numbers (x, y pairs, or values) into the heap at element `at` of heap (a
 // Float64Array over the memory); the core judges them (a NaN coordinate is refused, a NaN
@@ -247,121 +241,21 @@ export class Kernel {
     }
   }
 
-  // options -> what the binding takes; the names come from the module's enums.
+  // The calls' options for the binding, by the module's enums (call-options.js).
   meshOptions(options) {
-    if (options == null) {
-      return {
-        keep: this.keep.all, fill: this.fillRule.evenodd, insideFlags: false,
-        segmentSources: false,
-      };
-    }
-    if (typeof options !== 'object') {
-      throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
-    }
-    const { keep = 'all', fillRule = 'evenodd', insideFlags = false, segmentSources = false }
-      = options;
-    const choice = (what, value, embindEnum) => {
-      if (typeof value === 'string' && value !== 'values' && Object.hasOwn(embindEnum, value)) {
-        return embindEnum[value];
-      }
-      const names = enumNames(embindEnum).map((n) => `'${n}'`).join(' or ');
-      throw new TypeError(`geocdt: options.${what} must be ${names}, got ${JSON.stringify(value)}`);
-    };
-    const k = choice('keep', keep, this.keep);
-    const f = choice('fillRule', fillRule, this.fillRule);
-    const flag = (what, value) => {
-      if (typeof value !== 'boolean') {
-        throw new TypeError(`geocdt: options.${what} must be a boolean, got ${describe(value)}`);
-      }
-    };
-    flag('insideFlags', insideFlags);
-    flag('segmentSources', segmentSources);
-    return { keep: k, fill: f, insideFlags: insideFlags || k === this.keep.inside, segmentSources };
+    return meshOptions(options, { keep: this.keep, fill: this.fillRule });
   }
 
-  // options.fillRule alone (triangulatePolygons()'s only option) -> the module's enum value.
   fillRuleOption(options) {
-    if (options == null) return this.fillRule.evenodd;
-    if (typeof options !== 'object') {
-      throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
-    }
-    const { fillRule = 'evenodd' } = options;
-    if (typeof fillRule === 'string' && fillRule !== 'values'
-      && Object.hasOwn(this.fillRule, fillRule)) {
-      return this.fillRule[fillRule];
-    }
-    const names = enumNames(this.fillRule).map((n) => `'${n}'`).join(' or ');
-    throw new TypeError(
-      `geocdt: options.fillRule must be ${names}, got ${JSON.stringify(fillRule)}`);
+    return fillRuleOption(options, this.fillRule);
   }
 
-  // options.refine -> { refine, minAngle, maxArea, maxSteinerPoints } for the binding (0 for
-  // no area bound and the default cap). true asks for the defaults.
-  refineOptions(refine, name = 'options.refine') {
-    if (refine == null || refine === false) {
-      return { refine: false, minAngle: 20, maxArea: 0, maxSteinerPoints: 0 };
-    }
-    if (refine === true) refine = {};
-    if (typeof refine !== 'object') {
-      throw new TypeError(`geocdt: ${name} must be an object or true, got ${describe(refine)}`);
-    }
-    const { minAngle = 20, maxArea, maxSteinerPoints } = refine;
-    const number = (what, value) => {
-      if (typeof value !== 'number') {
-        throw new TypeError(`geocdt: ${name}.${what} must be a number, got ${describe(value)}`);
-      }
-    };
-    number('minAngle', minAngle);
-    if (!(minAngle >= 0 && minAngle < 60)) {
-      throw new RangeError(
-        `geocdt: ${name}.minAngle must be a number of degrees from 0 to less than 60, `
-        + `got ${minAngle}`);
-    }
-    if (maxArea !== undefined) {
-      number('maxArea', maxArea);
-      if (!(maxArea > 0)) {
-        throw new RangeError(`geocdt: ${name}.maxArea must be a positive number, got ${maxArea}`);
-      }
-    }
-    if (maxSteinerPoints !== undefined) {
-      number('maxSteinerPoints', maxSteinerPoints);
-      if (!Number.isInteger(maxSteinerPoints) || maxSteinerPoints < 1) {
-        throw new RangeError(`geocdt: ${name}.maxSteinerPoints must be a positive integer, `
-          + `got ${maxSteinerPoints}`);
-      }
-    }
-    return {
-      refine: true,
-      minAngle,
-      maxArea: maxArea === undefined || maxArea === Infinity ? 0 : maxArea,
-      maxSteinerPoints: maxSteinerPoints ?? 0,
-    };
+  refineOptions(refine, name) {
+    return refineOptions(refine, name);
   }
 
-  // The binding's onProgress: (phase index, fraction) -> the caller's onProgress({ phase,
-  // fraction }). An exception from the caller's function stops further reports and is thrown
-  // once the core has returned (the core itself never sees it).
   progress(onProgress) {
-    if (onProgress == null) return { callback: undefined, rethrow() {} };
-    if (typeof onProgress !== 'function') {
-      throw new TypeError(
-        `geocdt: options.onProgress must be a function, got ${describe(onProgress)}`);
-    }
-    const phases = this.phases;
-    let failure = null;
-    return {
-      callback(phase, fraction) {
-        if (failure !== null) return;
-        try {
-          onProgress({ phase: phases[phase], fraction });
-        } catch (error) {
-          failure = { error };
-        }
-      },
-      rethrow() {
-        if (failure !== null) throw failure.error;
-      },
-    };
+    return progressReporter(onProgress, this.phases);
   }
 
   // checked: checkInput()'s { points, lines, polygons, values }; o: meshOptions();
@@ -610,16 +504,7 @@ export class Kernel {
 
   // 'linear' or 'natural' -> the module's enum value.
   method(options) {
-    if (options != null && typeof options !== 'object') {
-      throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
-    }
-    const method = options?.method ?? 'linear';
-    if (typeof method === 'string' && method !== 'values'
-      && Object.hasOwn(this.interpolation, method)) {
-      return this.interpolation[method];
-    }
-    throw new TypeError(
-      `geocdt: options.method must be 'linear' or 'natural', got ${JSON.stringify(method)}`);
+    return methodOption(options, this.interpolation);
   }
 
   // Values at checked query coordinates: valuesPerPoint numbers per query.
