@@ -10,10 +10,11 @@ import { MAX_COORDINATE } from '../../web/input.js';
 import { PHASES } from './support/progress.js';
 
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
+// The declarations of the package's main entry: index.d.ts and the files it exports.
+const typesText = ['index', 'polygon-types', 'raster-types', 'voronoi-types']
+  .map((name) => read(`../../web/${name}.d.ts`)).join('\n');
 // The declarations without their comments, which may hold any character.
-const types = read('../../web/index.d.ts').replace(/\/\*[\s\S]*?\*\//g, '')
-  .replace(/\/\/.*$/gm, '');
-const typesText = read('../../web/index.d.ts');
+const types = typesText.replace(/\/\*[\s\S]*?\*\//g, '').replace(/\/\/.*$/gm, '');
 const api = read('../../web/API.md');
 
 let wasm;
@@ -33,17 +34,17 @@ function names(embindEnum) {
   return byValue;
 }
 
-// The string literals of `export type Name = 'a' | 'b' ...;` in web/index.d.ts.
+// The string literals of `export type Name = 'a' | 'b' ...;` in web/*.d.ts.
 function union(name) {
   const match = types.match(new RegExp(`export type ${name} =([^;]*);`));
-  assert.ok(match, `web/index.d.ts declares type ${name}`);
+  assert.ok(match, `web/*.d.ts declare type ${name}`);
   return [...match[1].matchAll(/'(\w+)'/g)].map((m) => m[1]);
 }
 
-// The members of `export interface Name { ... }` in web/index.d.ts.
+// The members of `export interface Name { ... }` in web/*.d.ts.
 function members(name) {
   const match = types.match(new RegExp(`export interface ${name}\\b[^{]*\\{([^}]*)\\}`));
-  assert.ok(match, `web/index.d.ts declares interface ${name}`);
+  assert.ok(match, `web/*.d.ts declare interface ${name}`);
   return [...match[1].matchAll(/^\s*(\w+)\??:/gm)].map((m) => m[1]);
 }
 
@@ -105,7 +106,7 @@ test('output fields: the module\'s arrays are the result\'s, typed and documente
     if (returned.includes(field)) continue;
     const Type = globalThis[`${elementTypes[wasm.elementType(fields.indexOf(field)).value]}Array`];
     assert.ok(r[field] instanceof Type, `${field} is a ${Type.name}`);
-    assert.ok(documented.includes(field), `web/index.d.ts documents ${field}`);
+    assert.ok(documented.includes(field), `web/*.d.ts document ${field}`);
     assert.ok(api.includes(`| \`${field}\` | ${Type.name} |`), `web/API.md's table has ${field}`);
   }
   assert.deepEqual(sorted(Object.keys(r).filter((k) => k !== 'stats')),
@@ -117,7 +118,7 @@ test('output fields: the module\'s arrays are the result\'s, typed and documente
     const Type = globalThis[`${elementTypes[wasm.elementType(fields.indexOf(field)).value]}Array`];
     const name = field === 'sites' ? 'points' : field;
     assert.ok(cells[name] instanceof Type, `${name} is a ${Type.name}`);
-    assert.ok(cellsDocumented.includes(name), `web/index.d.ts documents ${name}`);
+    assert.ok(cellsDocumented.includes(name), `web/*.d.ts document ${name}`);
     assert.ok(api.includes(`| \`${name}\` | ${Type.name} |`), `web/API.md's table has ${name}`);
   }
   assert.deepEqual(sorted(Object.keys(cells.stats)), sorted(members('VoronoiStats')));
