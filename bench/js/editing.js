@@ -1,8 +1,9 @@
 // Editing in place through the wasm build: 100,000 removals and 100,000 moves of free points
 // from a 1M-point Triangulation, one call each, against the time to insert the 1M points;
 // and removing polylines from meshes of 100k and 1M points of the same density (the larger
-// spreads wider), whose cost must not grow with the mesh. Alternating rounds in one process,
-// medians; each target printed as met or missed.
+// spreads wider), whose cost must not grow with the mesh. Also 100,000 small moves (up to a
+// quarter of the spacing, as a drag or an animation frame makes them; no target). Alternating
+// rounds in one process, medians; each target printed as met or missed.
 //   node --expose-gc bench/js/editing.js [--rounds N] [--quick]
 import { init, Triangulation } from '../../web/index.node.js';
 
@@ -55,13 +56,20 @@ function pointRound(xy, round) {
   const b = now();
   const order = shuffled(ids, 7 + round);
   const places = uniform(edits, 99 + round);
+  const reach = 250 / Math.sqrt(xy.length / 2);
+  const offsets = uniform(edits, 199 + round).map((v) => ((v - 500) / 500) * reach);
   const c = now();
   for (let k = 0; k < edits; k++) t.removePoint(order[k]);
   const d = now();
   for (let k = 0; k < edits; k++) t.movePoint(order[edits + k], places[2 * k], places[2 * k + 1]);
   const e = now();
+  for (let k = 0; k < edits; k++) {
+    const id = order[2 * edits + k];
+    t.movePoint(id, xy[2 * id] + offsets[2 * k], xy[2 * id + 1] + offsets[2 * k + 1]);
+  }
+  const f = now();
   t.dispose();
-  return { insert: b - a, removals: d - c, moves: e - d };
+  return { insert: b - a, removals: d - c, moves: e - d, smallMoves: f - e };
 }
 
 // 200 polylines of 20 points, alternately near-horizontal and near-vertical across
@@ -112,6 +120,9 @@ console.log(`- ${n(edits)} removals, one call each: `
 console.log(`- ${n(edits)} moves of free points: `
   + `${median(rows.map((r) => r.moves)).toFixed(0)} ms = ${moveRatio.toFixed(3)}× `
   + `(target ≤ 1.0×): ${verdict(moveRatio <= 1.0)}`);
+console.log(`- ${n(edits)} small moves (up to a quarter of the spacing): `
+  + `${median(rows.map((r) => r.smallMoves)).toFixed(0)} ms = `
+  + `${median(rows.map((r) => r.smallMoves / r.insert)).toFixed(3)}× (no target)`);
 console.log(`- removing 200 polylines: ${(1000 * smallCost).toFixed(2)} µs a crossing at `
   + `${n(size / 10)} points (${n(small[0].crossings)} crossings), `
   + `${(1000 * largeCost).toFixed(2)} µs at ${n(size)}: ${(largeCost / smallCost).toFixed(2)}× `

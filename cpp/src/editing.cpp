@@ -521,6 +521,25 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
   const double* p = d.xy.data();
   if (p[2 * static_cast<std::size_t>(id)] == x && p[2 * static_cast<std::size_t>(id) + 1] == y)
     return Status::success();
+  // A free point moved within its star (a drag, an animation frame) needs only flips; its
+  // star holds no other vertex, so nothing can be there. Moves beyond two cells of the
+  // point-location grid are ruled out before anything else is read.
+  if (d.built() && d.withinTwoCells(p[2 * static_cast<std::size_t>(id)],
+                                    p[2 * static_cast<std::size_t>(id) + 1], x, y)) {
+    bool shifted = false;
+    const Status shift = catchOutOfMemory(
+        [&] {
+          const std::int32_t out = freeVertexEdge(state, id);
+          shifted = out >= 0 && d.shiftVertex(id, out, x, y);
+          if (shifted) {
+            state.changed();
+            state.values.invalidate();
+          }
+          return Status::success();
+        },
+        [&] { state.clear(); });
+    if (!shift.ok() || shifted) return shift;
+  }
   // A vertex there already: a crossing or Steiner point goes; a point or polyline vertex
   // stays, and the move is refused.
   std::uint32_t there = kGhost;

@@ -138,14 +138,17 @@ std::vector<double> randomPolyline(Random& random, std::size_t n, bool ring) {
   return line;
 }
 
+// n uniform points in [0, 1000)^2, into t and the model.
+Status insertUniformPoints(EditModel& model, Triangulation& t, std::size_t n, std::uint64_t seed) {
+  return model.insertPoints(t, testing::transformed(testing::uniformPoints(n, seed), 1000, 0, 0));
+}
+
 TEST(Editing, RemovingCrossingPolylinesOneByOne) {
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     Random random(seed);
     Triangulation t;
     EditModel model;
-    ASSERT_TRUE(
-        model.insertPoints(t, testing::transformed(testing::uniformPoints(200, seed), 1000, 0, 0))
-            .ok());
+    ASSERT_TRUE(insertUniformPoints(model, t, 200, seed).ok());
     for (int k = 0; k < 8; ++k)
       ASSERT_TRUE(model.insertPolyline(t, randomPolyline(random, 3 + k % 4, k % 3 == 0)).ok());
     ASSERT_EQ(model.compare(t), "") << "seed " << seed << " before any removal";
@@ -209,9 +212,7 @@ TEST(Editing, MovingPointsAndPolylineVertices) {
     Random random(seed);
     Triangulation t;
     EditModel model;
-    ASSERT_TRUE(
-        model.insertPoints(t, testing::transformed(testing::uniformPoints(100, seed), 1000, 0, 0))
-            .ok());
+    ASSERT_TRUE(insertUniformPoints(model, t, 100, seed).ok());
     for (int k = 0; k < 5; ++k)
       ASSERT_TRUE(model.insertPolyline(t, randomPolyline(random, 4, k % 2 == 0)).ok());
     for (int step = 0; step < 60; ++step) {
@@ -228,6 +229,39 @@ TEST(Editing, MovingPointsAndPolylineVertices) {
       ASSERT_EQ(model.check(t), "") << "seed " << seed << " step " << step;
       ASSERT_EQ(model.compare(t), "") << "seed " << seed << " step " << step;
     }
+  }
+}
+
+// Small moves (a drag, an animation frame): most stay within the point's star and take flips
+// only, with no point location; the mesh stays the fresh triangulation after each, also
+// with polylines around whose edges must not flip.
+TEST(Editing, SmallMovesFlipInPlace) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    Random random(seed);
+    Triangulation t;
+    EditModel model;
+    ASSERT_TRUE(insertUniformPoints(model, t, 300, seed).ok());
+    if (seed % 2 == 0)
+      for (int k = 0; k < 3; ++k)
+        ASSERT_TRUE(model.insertPolyline(t, randomPolyline(random, 5, k == 0)).ok());
+    const std::vector<std::uint32_t> ids = model.pointIds();
+    int inPlace = 0;
+    const int steps = 200;
+    for (int step = 0; step < steps; ++step) {
+      const std::uint32_t id = ids[random.next() % ids.size()];
+      const std::vector<double> at = model.place(id);
+      // Up to half the mean spacing (about 58), in any direction.
+      const double angle = 6.283185307179586 * random.uniform(), r = 29 * random.uniform();
+      const std::uint64_t locates = t.stats().locates;
+      const Status s =
+          model.movePoint(t, id, at[0] + r * std::cos(angle), at[1] + r * std::sin(angle));
+      ASSERT_TRUE(s.ok()) << s.message;
+      inPlace += t.stats().locates == locates;
+      ASSERT_EQ(model.check(t), "") << "seed " << seed << " step " << step;
+      ASSERT_EQ(model.compare(t), "") << "seed " << seed << " step " << step;
+    }
+    EXPECT_GT(inPlace, steps / 2) << "seed " << seed;
+    EXPECT_LT(inPlace, steps) << "seed " << seed;  // some leave their star
   }
 }
 

@@ -1,7 +1,8 @@
 // libFuzzer target: arbitrary bytes as a sequence of edits of one Triangulation (insert
 // points, insert a polyline, remove a point, remove a polyline, move a point or a polyline
-// vertex, refine), each followed by both halves of the invariant checker against what
-// remains. Bad ids and coordinates are tried too: they must be refused and change nothing.
+// vertex, or nudge one an eighth of the way to a point, refine), each followed by both
+// halves of the invariant checker against what remains. Bad ids and coordinates are tried
+// too: they must be refused and change nothing.
 //
 // Input: byte 0 = options (see decodeOptions), then a PointDecoder header, then operations
 // until the bytes run out: an operation byte (low 3 bits: which; the rest: a count or an
@@ -125,9 +126,16 @@ void run(const Input& input) {
         decoder.next(in, x, y);
         if (!valid(x, y)) break;
         const std::uint32_t id = from[(arg / 3) % from.size()];
-        what = "movePoint " + std::to_string(id) + (verbose ? listed({x, y}, true) : "");
+        double tx = x, ty = y;
+        if (arg % 3 == 2) {  // a nudge, an eighth of the way there: mostly within its star
+          const std::vector<double> at = model.place(id);
+          tx = at[0] + (x - at[0]) / 8;
+          ty = at[1] + (y - at[1]) / 8;
+          if (!valid(tx, ty)) break;
+        }
+        what = "movePoint " + std::to_string(id) + (verbose ? listed({tx, ty}, true) : "");
         const std::size_t vertices = t.vertexCount(), triangles = t.triangleCount();
-        const Status s = model.movePoint(t, id, x, y);
+        const Status s = model.movePoint(t, id, tx, ty);
         // Onto another point or polyline vertex: refused, nothing changed.
         if (s.code == StatusCode::InvalidArgument)
           requireRefused(s, t, vertices, triangles, what + " (onto a vertex)");

@@ -117,6 +117,16 @@ class Delaunay {
   // into the freed ones ({from, to} pairs).
   const std::vector<std::int32_t>& removalSlots() const { return ring_.made; }
   const std::vector<std::array<std::int32_t, 2>>& movedSlots() const { return ring_.moved; }
+  // Moves interior vertex v to (x, y) when that lies strictly inside its star's kernel (every
+  // border edge seen from the left), restoring Delaunay by flips (vertex_shift.cpp); out: a
+  // half-edge out of v, none of whose edges may be constrained. False, with nothing changed,
+  // for a hull vertex or a place outside the kernel.
+  bool shiftVertex(std::uint32_t v, std::int32_t out, double x, double y);
+  // Whether (ax, ay) lies within two cells of (bx, by) on the point-location grid (true
+  // while the grid is unset): the scale of a star.
+  bool withinTwoCells(double ax, double ay, double bx, double by) const {
+    return grid_.empty() || grid_.near(ax, ay, bx, by);
+  }
   // Inserts vertex v again, at its coordinates in xy, keeping its id (a move). Its place must
   // not hold another vertex. near: a triangle to walk from (a slot near the new place), or -1
   // for the grid. The two slots the removal kept spare take the two new triangles.

@@ -36,13 +36,14 @@ class EditModel {
   // Without triangles: the vertices only (in ulp tangles, where cocircular points abound and
   // the routes of chains can depend on the triangles).
   std::string compare(const Triangulation& t, bool triangles = true) const;
+  // Where vertex id is now: {x, y}.
+  std::vector<double> place(std::uint32_t id) const;
 
  private:
   struct Line {
     std::vector<std::uint32_t> ids;
     bool live = true;
   };
-  std::vector<double> place(std::uint32_t id) const;
   std::map<std::uint32_t, std::pair<double, double>> places_;  // every id seen, as moved
   std::map<std::uint32_t, int> pointUses_;                     // insertPoints references
   std::vector<Line> lines_;
