@@ -130,6 +130,29 @@ test('random sequences of insertions, removals and moves match triangulate()', (
   }
 });
 
+// A drag: one point moved in small steps, mostly within its star, where a free point moves by
+// flips alone; after each step the mesh is triangulate()'s, polylines' edges unflipped.
+test('a point dragged in small steps keeps the mesh triangulate()\'s', () => {
+  const rand = random(5);
+  const t = new Triangulation();
+  const model = new Model();
+  model.insertPoints(t, Array.from({ length: 600 }, () => rand() * 1000));
+  model.insertPolyline(t, [100, 120, 480, 530, 900, 610]);
+  const points = [...model.points];
+  for (let drag = 0; drag < 4; drag++) {
+    const id = points[Math.floor(rand() * points.length)];
+    let [x, y] = model.places.get(id);
+    for (let step = 0; step < 25; step++) {
+      x += (rand() - 0.5) * 8;  // the mean spacing is about 58
+      y += (rand() - 0.5) * 8;
+      t.movePoint(id, x, y);
+      model.places.set(id, [x, y]);
+      model.check(t, `drag ${drag} step ${step}`);
+    }
+  }
+  t.dispose();
+});
+
 test('bad ids throw a RangeError and change nothing', () => {
   const t = new Triangulation();
   const ids = t.insertPoints([0, 0, 4, 0, 0, 4, 4, 4]);
