@@ -147,15 +147,22 @@ VertexEdges& editEdges(State& state) {
 // A half-edge out of v when v is a free vertex: in the triangulation, with no constrained
 // edge, no polyline of its own and no Steiner point placed from it; else -1. Such a vertex is
 // removed or moved by the Delaunay engine alone (the common case, which pays one location).
+// Whether v could be edited without the constraint editor, as far as the state around it
+// goes: triangles, no pending or snap-rounded constraints, no polyline of v alone, no Steiner
+// point placed from v.
+bool editsAlone(State& state, std::uint32_t v) {
+  Delaunay& d = state.delaunay;
+  if (!d.built() || !d.constraints.pending.empty() || state.edit.snapped) return false;
+  if (const std::uint32_t* uses = state.edit.loneUses.find(v); uses && *uses > 0) return false;
+  if (d.steiner.empty()) return true;
+  std::vector<std::uint32_t> placed{v};
+  addSteinerDescendants(state, placed);
+  return placed.size() == 1;
+}
+
 std::int32_t freeVertexEdge(State& state, std::uint32_t v) {
   Delaunay& d = state.delaunay;
-  if (!d.built() || !d.constraints.pending.empty() || state.edit.snapped) return -1;
-  if (const std::uint32_t* uses = state.edit.loneUses.find(v); uses && *uses > 0) return -1;
-  if (!d.steiner.empty()) {
-    std::vector<std::uint32_t> placed{v};
-    addSteinerDescendants(state, placed);
-    if (placed.size() > 1) return -1;
-  }
+  if (!editsAlone(state, v)) return -1;
   const std::int32_t out = editEdges(state).find(d, v);
   if (out < 0) return -1;
   if (!d.constrained()) return out;  // (no edge is constrained)
@@ -172,6 +179,31 @@ std::int32_t freeVertexEdge(State& state, std::uint32_t v) {
     if (right == left) return out;
     if (d.topo.fixed[right]) return -1;
   }
+}
+
+// A half-edge out of v when v can move within its star by flips alone (Delaunay::
+// shiftVertex), else -1: v free, or a polyline vertex each of whose constrained edges is
+// whole segments ending at v (no crossing, Steiner point or other vertex along them), which
+// stay those segments, crossing nothing, wherever v goes inside its star.
+std::int32_t shiftableVertexEdge(State& state, std::uint32_t v) {
+  Delaunay& d = state.delaunay;
+  if (!d.constrained()) return freeVertexEdge(state, v);
+  if (!editsAlone(state, v)) return -1;
+  VertexEdges& ends = editEdges(state);
+  const ConstraintStore& store = d.constraints;
+  const bool split = anyEdgeOutOf(d, ends, v, [&](std::int32_t e) {
+    if (!d.topo.fixed[e]) return false;
+    const std::uint32_t w = d.topo.tri[nextEdge(e)];
+    const EdgeSource* src = store.find(v, w);
+    bool whole = src != nullptr;
+    if (whole)
+      store.forEachSegment(*src, [&](std::uint32_t i) {
+        const SegmentEnds& ab = store.segments[i];
+        whole = whole && ((ab.a == v && ab.b == w) || (ab.a == w && ab.b == v));
+      });
+    return !whole;
+  });
+  return split ? -1 : ends.find(d, v);
 }
 
 // Drops from gone[from ..] the Steiner points that must stay (given again as a point or a
@@ -521,15 +553,15 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
   const double* p = d.xy.data();
   if (p[2 * static_cast<std::size_t>(id)] == x && p[2 * static_cast<std::size_t>(id) + 1] == y)
     return Status::success();
-  // A free point moved within its star (a drag, an animation frame) needs only flips; its
-  // star holds no other vertex, so nothing can be there. Moves beyond two cells of the
-  // point-location grid are ruled out before anything else is read.
+  // A free point or a simple polyline vertex moved within its star (a drag, an animation
+  // frame) needs only flips; its star holds no other vertex, so nothing can be there. Moves beyond
+  // two cells of the point-location grid are ruled out before anything else is read.
   if (d.built() && d.withinTwoCells(p[2 * static_cast<std::size_t>(id)],
                                     p[2 * static_cast<std::size_t>(id) + 1], x, y)) {
     bool shifted = false;
     const Status shift = catchOutOfMemory(
         [&] {
-          const std::int32_t out = freeVertexEdge(state, id);
+          const std::int32_t out = shiftableVertexEdge(state, id);
           shifted = out >= 0 && d.shiftVertex(id, out, x, y);
           if (shifted) {
             state.changed();

@@ -130,8 +130,9 @@ test('random sequences of insertions, removals and moves match triangulate()', (
   }
 });
 
-// A drag: one point moved in small steps, mostly within its star, where a free point moves by
-// flips alone; after each step the mesh is triangulate()'s, polylines' edges unflipped.
+// A drag: one point moved in small steps, mostly within its star, where a free point or a
+// polyline vertex whose segments are whole edges moves by flips alone; after each step the
+// mesh is triangulate()'s, polylines' edges unflipped.
 test('a point dragged in small steps keeps the mesh triangulate()\'s', () => {
   const rand = random(5);
   const t = new Triangulation();
@@ -139,8 +140,9 @@ test('a point dragged in small steps keeps the mesh triangulate()\'s', () => {
   model.insertPoints(t, Array.from({ length: 600 }, () => rand() * 1000));
   model.insertPolyline(t, [100, 120, 480, 530, 900, 610]);
   const points = [...model.points];
-  for (let drag = 0; drag < 4; drag++) {
-    const id = points[Math.floor(rand() * points.length)];
+  const lineVertex = model.lines[0].ids[1];
+  for (let drag = 0; drag < 5; drag++) {
+    const id = drag === 4 ? lineVertex : points[Math.floor(rand() * points.length)];
     let [x, y] = model.places.get(id);
     for (let step = 0; step < 25; step++) {
       x += (rand() - 0.5) * 8;  // the mean spacing is about 58
