@@ -144,9 +144,6 @@ VertexEdges& editEdges(State& state) {
   return ends;
 }
 
-// A half-edge out of v when v is a free vertex: in the triangulation, with no constrained
-// edge, no polyline of its own and no Steiner point placed from it; else -1. Such a vertex is
-// removed or moved by the Delaunay engine alone (the common case, which pays one location).
 // Whether v could be edited without the constraint editor, as far as the state around it
 // goes: triangles, no pending or snap-rounded constraints, no polyline of v alone, no Steiner
 // point placed from v.
@@ -160,6 +157,9 @@ bool editsAlone(State& state, std::uint32_t v) {
   return placed.size() == 1;
 }
 
+// A half-edge out of v when v is a free vertex: in the triangulation, with no constrained
+// edge, no polyline of its own and no Steiner point placed from it; else -1. Such a vertex is
+// removed or moved by the Delaunay engine alone (the common case, which pays one location).
 std::int32_t freeVertexEdge(State& state, std::uint32_t v) {
   Delaunay& d = state.delaunay;
   if (!editsAlone(state, v)) return -1;
@@ -554,8 +554,8 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
   if (p[2 * static_cast<std::size_t>(id)] == x && p[2 * static_cast<std::size_t>(id) + 1] == y)
     return Status::success();
   // A free point or a simple polyline vertex moved within its star (a drag, an animation
-  // frame) needs only flips; its star holds no other vertex, so nothing can be there. Moves beyond
-  // two cells of the point-location grid are ruled out before anything else is read.
+  // frame) needs only flips; its star holds no other vertex, so nothing can be there. Moves
+  // beyond two cells of the point-location grid are ruled out before anything else is read.
   if (d.built() && d.withinTwoCells(p[2 * static_cast<std::size_t>(id)],
                                     p[2 * static_cast<std::size_t>(id) + 1], x, y)) {
     bool shifted = false;

@@ -118,9 +118,10 @@ class Delaunay {
   const std::vector<std::int32_t>& removalSlots() const { return ring_.made; }
   const std::vector<std::array<std::int32_t, 2>>& movedSlots() const { return ring_.moved; }
   // Moves interior vertex v to (x, y) when that lies strictly inside its star's kernel (every
-  // border edge seen from the left), restoring Delaunay by flips (vertex_shift.cpp); out: a
-  // half-edge out of v, none of whose edges may be constrained. False, with nothing changed,
-  // for a hull vertex or a place outside the kernel.
+  // border edge seen from the left), restoring Delaunay by flips that leave constrained edges
+  // alone (vertex_shift.cpp); out: a half-edge out of v. Constrained edges at v must be whole
+  // segments, which stay valid (the caller checks). False, with nothing changed, for a hull
+  // vertex or a place outside the kernel.
   bool shiftVertex(std::uint32_t v, std::int32_t out, double x, double y);
   // Whether (ax, ay) lies within two cells of (bx, by) on the point-location grid (true
   // while the grid is unset): the scale of a star.
