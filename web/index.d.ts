@@ -519,6 +519,8 @@ export class Triangulation {
   removePolyline(polyline: number): void;
   /**
    * Moves the vertex of a point or of a polyline to (x, y); the polylines through it follow.
+   * A move within the vertex's star (a drag) takes flips only, for a free point or a polyline
+   * vertex with nothing along its segments.
    * @throws RangeError on a bad id, a coordinate that is not finite (or beyond 1e150), or a
    *   place that another point or polyline vertex holds; nothing changes then.
    */

@@ -349,7 +349,8 @@ class Triangulation {
   Status removePolyline(std::size_t polyline);
   // Moves vertex id (a point's, or a polyline's: the polylines through it follow, crossing
   // what they now cross) to (x, y), which must be a valid coordinate and not another point's
-  // or polyline vertex's place. About a removal plus an insertion.
+  // or polyline vertex's place. About a removal plus an insertion; within its star (a drag),
+  // a free point, or a polyline vertex with nothing along its segments, takes flips only.
   Status movePoint(std::uint32_t id, double x, double y);
   bool hasVertex(std::uint32_t id) const;  // whether id names a vertex now
   bool hasPolyline(std::size_t polyline) const;
