@@ -15,9 +15,6 @@
 //   node --expose-gc bench/js/polygons.js [--rounds 5] [--cold-runs 3] [--sets tiles,...]
 //     [--skip cold,threads,heap,chromium]
 import { execFileSync } from 'node:child_process';
-import { createServer } from 'node:http';
-import { extname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import earcut, { refine } from 'earcut';
 import { init, triangulatePolygons, memoryUsage } from 'geocdt';
 import createGeocdtModule from '../../web/dist/geocdt.mjs';
@@ -28,6 +25,7 @@ import {
   earcutInput, loadSet, polygonCount, vertexCount,
 } from '../../scripts/datasets/polygon_sets.mjs';
 import { alternate, median } from './timing.js';
+import { chromiumPath, inChromium } from './chromium-page.js';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -151,13 +149,6 @@ function fresh(extra) {
 // --- Chromium: the same warm alternation in a page, geocdt's browser entry and earcut as ES
 // modules served from the repo, each set's arrays as one binary file. ---
 
-const root = fileURLToPath(new URL('../../', import.meta.url));
-const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript',
-  '.wasm': 'application/wasm' };
-const PAGE = `<!doctype html><script type="importmap">{"imports": {
-  "earcut": "/node_modules/earcut/src/earcut.js", "geocdt": "/web/index.browser.js"}}</script>
-<p>polygons</p>`;
-
 // A set's arrays as [uint32 JSON length, JSON { arrays: [{ key, type, length }] }, padding,
 // the arrays], for the page.
 function encodeSet(set) {
@@ -174,27 +165,6 @@ function encodeSet(set) {
     parts.push(bytes, Buffer.alloc((8 - (bytes.length % 8)) % 8));
   }
   return Buffer.concat(parts);
-}
-
-function serve(sets) {
-  const server = createServer((request, response) => {
-    const path = decodeURIComponent(new URL(request.url, 'http://x').pathname);
-    let body = null, type = 'application/octet-stream';
-    try {
-      if (path === '/') [body, type] = [PAGE, MIME['.html']];
-      else if (path.startsWith('/data/')) body = sets.get(path.slice(6));
-      else if (path.startsWith('/web/') || path.startsWith('/node_modules/')) {
-        body = readFileSync(join(root, path));
-        type = MIME[extname(path)] ?? type;
-      }
-    } catch {
-      body = null;
-    }
-    if (body == null) return response.writeHead(404).end();
-    response.writeHead(200, { 'Content-Type': type, 'Cache-Control': 'no-store' });
-    response.end(body);
-  });
-  return new Promise((done) => server.listen(0, '127.0.0.1', () => done(server)));
 }
 
 // Runs in the page: for each set, the contenders alternating for `rounds`; medians.
@@ -249,22 +219,9 @@ async function inPage(names, rounds) {
 }
 
 async function chromium(names) {
-  const sets = new Map(names.map((name) => [name, encodeSet(loadSet(name))]));
-  const server = await serve(sets);
-  const { chromium: browserType } = await import('playwright-core');
-  const browser = await browserType.launch({
-    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
-  });
-  try {
-    const page = await browser.newPage();
-    await page.goto(`http://127.0.0.1:${server.address().port}/`);
-    return await page.evaluate(([source, list, n]) => new Function(`return (${source})`)()(list, n),
-      [inPage.toString(), names, rounds]);
-  } finally {
-    await browser.close();
-    server.close();
-  }
+  const data = new Map(names.map((name) => [name, encodeSet(loadSet(name))]));
+  return inChromium(inPage, [names, rounds],
+    { imports: { earcut: '/node_modules/earcut/src/earcut.js' }, data });
 }
 
 const fmt = (ms) => ms.toFixed(0);
@@ -330,7 +287,7 @@ async function main() {
       + `(wasm memory ${h.heapPerVertex.toFixed(1)} B a vertex)`);
     targets.push(['tiles, wasm heap peak: ≤ 64 B a vertex', h.peakPerVertex, 64]);
   }
-  if (!skip.has('chromium') && existsSync(process.env.CHROMIUM_PATH ?? '/usr/bin/chromium')) {
+  if (!skip.has('chromium') && existsSync(chromiumPath())) {
     console.log(`\nChromium (headless, warm, medians of ${rounds} alternating rounds)\n`);
     console.log('| set | earcut ms | earcut + refine ms | geocdt ms | vs earcut | '
       + 'vs earcut + refine |');

@@ -7,16 +7,13 @@
 // Prints the targets, met or missed. With --chromium, the comparisons also run in a headless
 // Chromium page (wall time there).
 //   node --expose-gc bench/js/terrain.js [--rounds N] [--quick] [--chromium]
-import { createServer } from 'node:http';
-import { readFileSync } from 'node:fs';
-import { extname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import Delatin from 'delatin';
 import Martini from '@mapbox/martini';
 import { init, triangulateRaster } from 'geocdt';
 import { crop, jacksboro } from '../../scripts/usgs-dems.mjs';
 import { maxPixelError } from './pixel-error.js';
 import { median, threadCpuClock } from './timing.js';
+import { inChromium } from './chromium-page.js';
 
 const option = (name, fallback) => {
   const i = process.argv.indexOf(name);
@@ -210,7 +207,7 @@ async function measureInPage(rounds, errors) {
   const { default: Delatin } = await import('/node_modules/delatin/index.js');
   const { default: Martini } = await import('/node_modules/@mapbox/martini/index.js');
   await api.init({ warmUp: false });
-  const bytes = await (await fetch('/dem')).arrayBuffer();
+  const bytes = await (await fetch('/data/dem')).arrayBuffer();
   const [width, height] = new Uint32Array(bytes, 0, 2);
   const heights = new Int16Array(bytes, 8, width * height);
   const dem = { heights, width, height };
@@ -253,50 +250,22 @@ async function measureInPage(rounds, errors) {
 }
 
 async function chromiumRun() {
-  const root = fileURLToPath(new URL('../../', import.meta.url));
   const bytes = new Uint8Array(8 + 2 * dem.width * dem.height);
   new Uint32Array(bytes.buffer, 0, 2).set([dem.width, dem.height]);
   new Int16Array(bytes.buffer, 8).set(dem.heights);
-  const types = {
-    '.js': 'text/javascript', '.mjs': 'text/javascript', '.wasm': 'application/wasm',
-  };
-  const server = createServer((request, response) => {
-    const path = decodeURIComponent(new URL(request.url, 'http://x').pathname);
-    try {
-      const body = path === '/' ? '<!doctype html><p>terrain bench</p>'
-        : path === '/dem' ? bytes : readFileSync(join(root, path));
-      const type = path === '/' ? 'text/html' : types[extname(path)] ?? 'application/octet-stream';
-      response.writeHead(200, { 'Content-Type': type }).end(body);
-    } catch {
-      response.writeHead(404).end();
-    }
-  });
-  await new Promise((done) => server.listen(0, '127.0.0.1', done));
-  const { chromium } = await import('playwright-core');
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-    args: ['--headless', '--no-sandbox', '--disable-gpu'],
-  });
-  try {
-    const page = await browser.newPage();
-    await page.goto(`http://127.0.0.1:${server.address().port}/`);
-    const rows = await page.evaluate(async ([source, r, e]) =>
-      new Function(`return (${source})`)()(r, e), [measureInPage.toString(), rounds, errors]);
-    console.log(`## Chromium (${rounds} rounds, wall time medians)\n`);
-    console.log('| max error | geocdt | delatin | geocdt / delatin | geocdt, crop | martini, crop '
-      + '| crop triangles, geocdt / martini |');
-    console.log('|--:|--:|--:|--:|--:|--:|--:|');
-    for (const { e, g, d, gc, m } of rows) {
-      console.log(`| ${e} m | ${ms(g.ms)} ms | ${ms(d.ms)} ms | ${ratio(g.ms / d.ms)} | `
-        + `${ms(gc.ms)} ms | ${ms(m.ms)} ms | ${ratio(gc.triangles / m.triangles)} |`);
-      target(`Chromium, ${e} m: at most 0.25× delatin's time`, g.ms <= 0.25 * d.ms,
-        ratio(g.ms / d.ms));
-    }
-    console.log();
-  } finally {
-    await browser.close();
-    server.close();
+  const rows = await inChromium(measureInPage, [rounds, errors],
+    { data: new Map([['dem', bytes]]) });
+  console.log(`## Chromium (${rounds} rounds, wall time medians)\n`);
+  console.log('| max error | geocdt | delatin | geocdt / delatin | geocdt, crop | martini, crop '
+    + '| crop triangles, geocdt / martini |');
+  console.log('|--:|--:|--:|--:|--:|--:|--:|');
+  for (const { e, g, d, gc, m } of rows) {
+    console.log(`| ${e} m | ${ms(g.ms)} ms | ${ms(d.ms)} ms | ${ratio(g.ms / d.ms)} | `
+      + `${ms(gc.ms)} ms | ${ms(m.ms)} ms | ${ratio(gc.triangles / m.triangles)} |`);
+    target(`Chromium, ${e} m: at most 0.25× delatin's time`, g.ms <= 0.25 * d.ms,
+      ratio(g.ms / d.ms));
   }
+  console.log();
 }
 
 if (process.argv.includes('--chromium')) await chromiumRun();
