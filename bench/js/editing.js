@@ -3,9 +3,13 @@
 // and removing polylines from meshes of 100k and 1M points of the same density (the larger
 // spreads wider), whose cost must not grow with the mesh. Also 100,000 small moves (up to a
 // quarter of the spacing, as a drag or an animation frame makes them; no target). Alternating
-// rounds in one process, medians; each target printed as met or missed.
-//   node --expose-gc bench/js/editing.js [--rounds N] [--quick]
+// rounds in one process, medians; each target printed as met or missed. The first round, in a
+// fresh process, is also shown alone (cold). With --chromium the point rounds also run in a
+// headless Chromium page.
+//   node --expose-gc bench/js/editing.js [--rounds N] [--quick] [--chromium]
+import { existsSync } from 'node:fs';
 import { init, Triangulation } from '../../web/index.node.js';
+import { chromiumPath, inChromium } from './chromium-page.js';
 
 // Uniform points in [0, 1000)^2 (datasets.js's generator, without loading its GeoJSON).
 function uniform(count, seed = 12345) {
@@ -33,43 +37,59 @@ const n = (x) => x.toLocaleString('en-US');
 
 await init();
 
-// A deterministic shuffle and places to move to.
+// A deterministic shuffle.
 function shuffled(ids, seed) {
   let s = seed;
-  const next = () => {
-    s = (s * 1103515245 + 12345) % 2147483648;
-    return s / 2147483648;
-  };
   const out = Uint32Array.from(ids);
   for (let i = out.length - 1; i > 0; i--) {
-    const j = Math.floor(next() * (i + 1));
+    s = (s * 1103515245 + 12345) % 2147483648;
+    const j = Math.floor((s / 2147483648) * (i + 1));
     [out[i], out[j]] = [out[j], out[i]];
   }
   return out;
 }
 
-function pointRound(xy, round) {
+// One round on `size` uniform points: inserting them into a new Triangulation, then removals,
+// moves to random places and small moves, a tenth of the points each, one call each in a
+// shuffled order. It names no outer binding but uniform() and shuffled(), which the Chromium
+// page makes from their sources too.
+function pointRound(Mesh, size, round) {
+  const edits = size / 10;
+  const xy = uniform(size, 1);
   globalThis.gc?.();
-  const t = new Triangulation();
-  const a = now();
+  const t = new Mesh();
+  const a = performance.now();
   const ids = t.insertPoints(xy);
-  const b = now();
+  const b = performance.now();
   const order = shuffled(ids, 7 + round);
   const places = uniform(edits, 99 + round);
-  const reach = 250 / Math.sqrt(xy.length / 2);
+  const reach = 250 / Math.sqrt(size);
   const offsets = uniform(edits, 199 + round).map((v) => ((v - 500) / 500) * reach);
-  const c = now();
+  const c = performance.now();
   for (let k = 0; k < edits; k++) t.removePoint(order[k]);
-  const d = now();
+  const d = performance.now();
   for (let k = 0; k < edits; k++) t.movePoint(order[edits + k], places[2 * k], places[2 * k + 1]);
-  const e = now();
+  const e = performance.now();
   for (let k = 0; k < edits; k++) {
     const id = order[2 * edits + k];
     t.movePoint(id, xy[2 * id] + offsets[2 * k], xy[2 * id + 1] + offsets[2 * k + 1]);
   }
-  const f = now();
+  const f = performance.now();
   t.dispose();
   return { insert: b - a, removals: d - c, moves: e - d, smallMoves: f - e };
+}
+
+// Runs in the page: `rounds` point rounds with the browser build; sources: pointRound's,
+// uniform's and shuffled's.
+async function inPage([roundSource, uniformSource, shuffledSource], size, rounds) {
+  const { init: start, Triangulation: Mesh } = await import('geocdt');
+  await start({ warmUp: false });
+  const make = (source, ...names) => new Function(...names, `return (${source})`);
+  const round = make(roundSource, 'uniform', 'shuffled')(make(uniformSource)(),
+    make(shuffledSource)());
+  const rows = [];
+  for (let r = 0; r < rounds; r++) rows.push(round(Mesh, size, r));
+  return rows;
 }
 
 // 200 polylines of 20 points, alternately near-horizontal and near-vertical across
@@ -99,31 +119,46 @@ function lineRound(points, round) {
   return { perCrossing: ms / crossings, crossings };
 }
 
-const xy = uniform(size, 1);
 const rows = [];
 const small = [], large = [];
 for (let round = 0; round < rounds; round++) {
-  rows.push(pointRound(xy, round));
+  rows.push(pointRound(Triangulation, size, round));
   small.push(lineRound(size / 10, round));
   large.push(lineRound(size, round));
 }
-const insert = median(rows.map((r) => r.insert));
-const removalRatio = median(rows.map((r) => r.removals / r.insert));
-const moveRatio = median(rows.map((r) => r.moves / r.insert));
 const smallCost = median(small.map((r) => r.perCrossing));
 const largeCost = median(large.map((r) => r.perCrossing));
+
+// The point rounds' lines: times, and the ratios to inserting the points against the targets.
+function pointLines(list) {
+  const insert = median(list.map((r) => r.insert));
+  const removalRatio = median(list.map((r) => r.removals / r.insert));
+  const moveRatio = median(list.map((r) => r.moves / r.insert));
+  console.log(`- inserting the points: ${insert.toFixed(0)} ms`);
+  console.log(`- ${n(edits)} removals, one call each: `
+    + `${median(list.map((r) => r.removals)).toFixed(0)} ms = ${removalRatio.toFixed(3)}× `
+    + `(target ≤ 0.5×, aim 0.25×): ${verdict(removalRatio <= 0.5)}`);
+  console.log(`- ${n(edits)} moves of free points: `
+    + `${median(list.map((r) => r.moves)).toFixed(0)} ms = ${moveRatio.toFixed(3)}× `
+    + `(target ≤ 1.0×): ${verdict(moveRatio <= 1.0)}`);
+  console.log(`- ${n(edits)} small moves (up to a quarter of the spacing): `
+    + `${median(list.map((r) => r.smallMoves)).toFixed(0)} ms = `
+    + `${median(list.map((r) => r.smallMoves / r.insert)).toFixed(3)}× (no target)`);
+}
+
 console.log(`## Editing, ${n(size)} points (${rounds} rounds, medians)\n`);
-console.log(`- inserting the points: ${insert.toFixed(0)} ms`);
-console.log(`- ${n(edits)} removals, one call each: `
-  + `${median(rows.map((r) => r.removals)).toFixed(0)} ms = ${removalRatio.toFixed(3)}× `
-  + `(target ≤ 0.5×, aim 0.25×): ${verdict(removalRatio <= 0.5)}`);
-console.log(`- ${n(edits)} moves of free points: `
-  + `${median(rows.map((r) => r.moves)).toFixed(0)} ms = ${moveRatio.toFixed(3)}× `
-  + `(target ≤ 1.0×): ${verdict(moveRatio <= 1.0)}`);
-console.log(`- ${n(edits)} small moves (up to a quarter of the spacing): `
-  + `${median(rows.map((r) => r.smallMoves)).toFixed(0)} ms = `
-  + `${median(rows.map((r) => r.smallMoves / r.insert)).toFixed(3)}× (no target)`);
+pointLines(rows);
 console.log(`- removing 200 polylines: ${(1000 * smallCost).toFixed(2)} µs a crossing at `
   + `${n(size / 10)} points (${n(small[0].crossings)} crossings), `
   + `${(1000 * largeCost).toFixed(2)} µs at ${n(size)}: ${(largeCost / smallCost).toFixed(2)}× `
   + `(target: within 1.5×): ${verdict(largeCost / smallCost <= 1.5)}`);
+console.log('\n## The first round alone, in this fresh process (cold)\n');
+pointLines(rows.slice(0, 1));
+if (process.argv.includes('--chromium') && existsSync(chromiumPath())) {
+  const pageRows = await inChromium(inPage,
+    [[pointRound, uniform, shuffled].map(String), size, rounds]);
+  console.log(`\n## Chromium (headless, ${rounds} rounds, medians)\n`);
+  pointLines(pageRows);
+  console.log('\n## Chromium, the first round in a fresh page (cold)\n');
+  pointLines(pageRows.slice(0, 1));
+}
