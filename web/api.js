@@ -7,7 +7,9 @@ import {
   checkRaster, checkRasterOptions,
   checkValues, checkValuesPerPoint, describe, threadsError,
 } from './input.js';
-import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
+import {
+  featureFillResult, featurePolygons, geoJSONOutput, geoJSONResult, perFeatureMode, readGeoJSON,
+} from './geojson.js';
 import { checkVoronoiOptions } from './voronoi-options.js';
 import { cellsToGeoJSON, sitesAndRings } from './voronoi-geojson.js';
 
@@ -89,8 +91,14 @@ export function createApi(instantiate) {
   }
 
   function triangulateGeoJSON(geojson, options) {
-    const { output, rest } = geoJSONOutput(options);
+    const { output, rest: chosen } = geoJSONOutput(options);
+    const { perFeature, rest } = perFeatureMode(chosen);
     const input = readGeoJSON(geojson);
+    if (perFeature) {
+      const batch = featurePolygons(input);
+      const filled = triangulatePolygons(batch, { fillRule: rest.fillRule });
+      return featureFillResult(filled, batch, input, output);
+    }
     return geoJSONResult(triangulate(input, rest), input, output, rest);
   }
 

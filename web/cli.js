@@ -1,13 +1,15 @@
 #!/usr/bin/env node
-// geocdt in.geojson -o out.geojson [--keep inside] [--stats]
+// geocdt in.geojson -o out.geojson [--keep inside | --per-feature] [--stats]
 // geocdt dem.asc -o tin.geojson --max-error 1 [--min-angle 20] [--breaklines lines.geojson]
 // geocdt voronoi in.geojson -o out.geojson [--clip rings|hull|x0,y0,x1,y1] (cli-voronoi.js)
 import { readFile } from 'node:fs/promises';
 import { createWriteStream } from 'node:fs';
 import { once } from 'node:events';
 import { readInput } from './cli-input.js';
-import { geoJSONToInput, init, triangulate, triangulateRaster } from './index.node.js';
-import { geoJSONResult } from './geojson.js';
+import {
+  geoJSONToInput, init, triangulate, triangulatePolygons, triangulateRaster,
+} from './index.node.js';
+import { featureFillResult, featurePolygons, geoJSONResult } from './geojson.js';
 import { writeGeoJSON } from './geojson-writer.js';
 import { ProgressDisplay } from './progress-display.js';
 import { isRasterFile, readRasterFile } from './raster-file.js';
@@ -28,6 +30,9 @@ Options:
   -o, --output <file>        where to write the triangles (default: stdout)
   --keep <all|inside>        keep every triangle, or only those inside the rings (default: all)
   --fill-rule <evenodd|nonzero>  how rings decide inside (default: evenodd)
+  --per-feature              fill each feature's rings alone, as a renderer does (inside
+                             triangles only; points and lines left out; not with --keep all,
+                             --inside-flags or refinement)
   --inside-flags             add inside to every triangle's properties
   --min-angle <degrees>      refine until every kept triangle has angles at least this
   --max-area <area>          refine until every kept triangle has at most this area
@@ -58,7 +63,8 @@ class UsageError extends Error {}
 
 function parseArgs(argv) {
   const args = {
-    input: null, output: null, keep: 'all', fillRule: 'evenodd', insideFlags: false,
+    input: null, output: null, keep: null, fillRule: 'evenodd', insideFlags: false,
+    perFeature: false,
     stats: false, quiet: false, refine: null, threads: 1, terrain: {}, breaklines: null,
   };
   const terrainNumber = (what, text, flag) => {
@@ -84,6 +90,7 @@ function parseArgs(argv) {
     else if (a === '--keep') args.keep = value(i++, a);
     else if (a === '--fill-rule') args.fillRule = value(i++, a);
     else if (a === '--inside-flags') args.insideFlags = true;
+    else if (a === '--per-feature') args.perFeature = true;
     else if (a === '--min-angle') refine('minAngle', value(i++, a));
     else if (a === '--max-area') refine('maxArea', value(i++, a));
     else if (a === '--max-steiner') refine('maxSteinerPoints', value(i++, a));
@@ -106,9 +113,14 @@ function parseArgs(argv) {
     else throw new UsageError(`unexpected argument ${a}`);
   }
   if (!args.help && !args.version && args.input === null) throw new UsageError('no input file');
-  if (!['all', 'inside'].includes(args.keep)) {
+  if (args.keep !== null && !['all', 'inside'].includes(args.keep)) {
     throw new UsageError(`--keep must be all or inside, not ${args.keep}`);
   }
+  if (args.perFeature && (args.keep === 'all' || args.insideFlags || args.refine !== null)) {
+    throw new UsageError('--per-feature keeps the inside of each feature alone: it takes no '
+      + '--keep all, --inside-flags, --min-angle, --max-area or --max-steiner');
+  }
+  args.keep ??= 'all';
   if (args.threads !== 'auto') {
     const threads = Number(args.threads);
     if (!Number.isInteger(threads) || threads < 1 || threads > 64) {
@@ -165,15 +177,22 @@ async function main(argv) {
   say(`read ${n(pointCount)} points (${n(lines)} polylines) in ${elapsed()}`);
 
   await loaded;
-  const mesh = triangulate(input, {
-    keep: args.keep,
-    fillRule: args.fillRule,
-    insideFlags: args.insideFlags,
-    refine: args.refine ?? undefined,
-    onProgress: show && (({ phase, fraction }) => show(`triangulating: ${phase}`, fraction)),
-  });
-  geoJSONResult(mesh, input, 'arrays', {});  // the features of the regions
-  if (!args.insideFlags) delete mesh.inside;  // --keep inside alone adds no property
+  let mesh;
+  if (args.perFeature) {
+    const batch = featurePolygons(input);
+    const filled = triangulatePolygons(batch, { fillRule: args.fillRule });
+    mesh = featureFillResult(filled, batch, input, 'arrays');
+  } else {
+    mesh = triangulate(input, {
+      keep: args.keep,
+      fillRule: args.fillRule,
+      insideFlags: args.insideFlags,
+      refine: args.refine ?? undefined,
+      onProgress: show && (({ phase, fraction }) => show(`triangulating: ${phase}`, fraction)),
+    });
+    geoJSONResult(mesh, input, 'arrays', {});  // the features of the regions
+    if (!args.insideFlags) delete mesh.inside;  // --keep inside alone adds no property
+  }
   const ms = mesh.stats.milliseconds.toFixed(0);
   say(`triangulated: ${n(mesh.triangles.length / 3)} triangles in ${ms} ms`);
 

@@ -402,6 +402,64 @@ export function meshToGeoJSON(mesh) {
   return { type: 'FeatureCollection', features };
 }
 
+// options.perFeature of triangulateGeoJSON(): false (the default) triangulates everything
+// together; true fills each feature's rings alone (triangulatePolygons()), as a renderer does,
+// which takes fillRule and output only. Returns whether it is on, and the options without it.
+export function perFeatureMode(options) {
+  const { perFeature = false, ...rest } = options;
+  if (typeof perFeature !== 'boolean') {
+    throw new TypeError(
+      `geocdt: options.perFeature must be true or false, got ${JSON.stringify(perFeature)}`);
+  }
+  if (perFeature) {
+    for (const [key, value] of Object.entries(rest)) {
+      if (key === 'fillRule' || (key === 'keep' && value === 'inside')) continue;
+      throw new TypeError(`geocdt: options.${key} does not apply with perFeature: true (each `
+        + 'feature\'s rings are filled alone, inside triangles only: it takes fillRule and '
+        + 'output)');
+    }
+  }
+  return { perFeature, rest };
+}
+
+// readGeoJSON()'s rings as triangulatePolygons()'s batch: one polygon per feature with rings,
+// its rings (its Polygons' and MultiPolygons' parts and holes) together.
+export function featurePolygons(input) {
+  const polygonOffsets = input.polygons ?? new Uint32Array([0]);
+  const rings = polygonOffsets[polygonOffsets.length - 1];
+  const ringOffsets = input.polylines.offsets.subarray(0, rings + 1);
+  const ringPoints = ringOffsets[rings];
+  return {
+    coords: input.polylines.coords.subarray(0, 2 * ringPoints), ringOffsets, polygonOffsets,
+  };
+}
+
+// triangulatePolygons()'s result for featurePolygons(input) -> what triangulateGeoJSON()
+// returns with perFeature: the arrays (points: the rings' points, then the extra points;
+// regions: each triangle's feature; heights in values, NaN at the extra points), or their
+// FeatureCollection.
+export function featureFillResult(filled, batch, input, output) {
+  const { coords } = batch;
+  const { triangles, extraPoints, triangleOffsets, stats } = filled;
+  const points = new Float64Array(coords.length + extraPoints.length);
+  points.set(coords);
+  points.set(extraPoints, coords.length);
+  const regions = new Int32Array(triangles.length / 3);
+  for (let p = 0; p + 1 < triangleOffsets.length; p++) {
+    regions.fill(p, triangleOffsets[p], triangleOffsets[p + 1]);
+  }
+  const mesh = {
+    points, triangles, regions, regionFeatures: input.regionFeatures ?? [], triangleOffsets,
+    stats,
+  };
+  if (input.values !== undefined) {
+    const first = input.points.length / 2;
+    mesh.values = new Float64Array(points.length / 2).fill(NaN);
+    mesh.values.set(input.values.subarray(first, first + coords.length / 2));
+  }
+  return output === 'arrays' ? mesh : meshToGeoJSON(mesh);
+}
+
 // What triangulateGeoJSON() returns, from triangulate()'s mesh of readGeoJSON()'s input:
 // with the features of the regions (none when the GeoJSON has no polygon); as GeoJSON, with
 // `inside` only when options.insideFlags asked for it (keep: 'inside' alone adds nothing).

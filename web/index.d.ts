@@ -5,6 +5,8 @@ export * from './polygon-types.js';
 export * from './raster-types.js';
 export * from './voronoi-types.js';
 
+import type { PolygonStats } from './polygon-types.js';
+
 /**
  * x0, y0, x1, y1, …: any numeric typed array (BigInt64Array and BigUint64Array aside) or an
  * array of numbers. Typed arrays are copied into the wasm heap with one TypedArray.set().
@@ -337,6 +339,39 @@ export type GeoJSONOutput = 'geojson' | 'arrays';
 export interface GeoJSONOptions extends TriangulateOptions {
   /** 'geojson' (default): a FeatureCollection of triangles; 'arrays': the typed arrays. */
   output?: GeoJSONOutput;
+  /** false (default): everything triangulated together. See FeatureFillOptions for true. */
+  perFeature?: false;
+}
+
+/**
+ * triangulateGeoJSON() with perFeature: true: each feature's rings (its Polygons' and
+ * MultiPolygons' parts and holes) filled alone, as triangulatePolygons() fills a polygon, inside
+ * triangles only; features never see each other's edges. Points and lines are left out.
+ */
+export interface FeatureFillOptions {
+  perFeature: true;
+  fillRule?: FillRule;
+  /** Only 'inside', which is what it does anyway. */
+  keep?: 'inside';
+  /** 'geojson' (default): a FeatureCollection of triangles; 'arrays': FeatureFillResult. */
+  output?: GeoJSONOutput;
+}
+
+/** triangulateGeoJSON() with perFeature: true and output: 'arrays'. */
+export interface FeatureFillResult {
+  /** x, y: the rings' points, feature by feature, then the points added where rings cross. */
+  points: Float64Array;
+  /** 3 indices into points a triangle, counter-clockwise with y up. */
+  triangles: Uint32Array;
+  /** Feature p's triangles (p indexes regionFeatures) are triangleOffsets[p] .. [p + 1] - 1. */
+  triangleOffsets: Uint32Array;
+  /** Each triangle's feature: regionFeatures[regions[t]]. */
+  regions: Int32Array;
+  /** The features with rings, in input order (null for a bare geometry). */
+  regionFeatures: (GeoJSONFeature | null)[];
+  /** When some position has a z: the height of each point, NaN where none (added points). */
+  values?: Float64Array;
+  stats: PolygonStats;
 }
 
 /** A GeoJSON position: x, y and, when the input had one, z. */
@@ -393,12 +428,19 @@ export interface GeoJSONResult extends TriangulateResult {
  * plane.
  */
 export function triangulateGeoJSON(
-  geojson: GeoJSONInput, options?: TriangulateOptions & { output?: 'geojson' },
+  geojson: GeoJSONInput, options: FeatureFillOptions & { output?: 'geojson' },
 ): TriangleFeatureCollection;
 export function triangulateGeoJSON(
-  geojson: GeoJSONInput, options: TriangulateOptions & { output: 'arrays' }): GeoJSONResult;
+  geojson: GeoJSONInput, options: FeatureFillOptions & { output: 'arrays' }): FeatureFillResult;
 export function triangulateGeoJSON(
-  geojson: GeoJSONInput, options?: GeoJSONOptions): TriangleFeatureCollection | GeoJSONResult;
+  geojson: GeoJSONInput, options?: TriangulateOptions & { output?: 'geojson'; perFeature?: false },
+): TriangleFeatureCollection;
+export function triangulateGeoJSON(
+  geojson: GeoJSONInput, options: TriangulateOptions & { output: 'arrays'; perFeature?: false },
+): GeoJSONResult;
+export function triangulateGeoJSON(
+  geojson: GeoJSONInput, options?: GeoJSONOptions | FeatureFillOptions,
+): TriangleFeatureCollection | GeoJSONResult | FeatureFillResult;
 
 /** What geoJSONToInput() returns besides the polylines. */
 export interface GeoJSONInputParts {

@@ -8,7 +8,9 @@ import {
   checkRaster, checkRasterOptions,
   checkValues, checkValuesPerPoint, describe,
 } from './input.js';
-import { geoJSONOutput, geoJSONResult, readGeoJSON } from './geojson.js';
+import {
+  featureFillResult, featurePolygons, geoJSONOutput, geoJSONResult, perFeatureMode, readGeoJSON,
+} from './geojson.js';
 import { cellsToGeoJSON, sitesAndRings } from './voronoi-geojson.js';
 
 // An array the worker may take: a typed array that spans its whole buffer is handed over
@@ -164,8 +166,16 @@ export class GeocdtWorker {
   // worker as transferred arrays, and the triangles come back as GeoJSON or as arrays. The
   // features of the regions stay here.
   async triangulateGeoJSON(geojson, options) {
-    const { output, rest } = geoJSONOutput(options);
+    const { output, rest: chosen } = geoJSONOutput(options);
+    const { perFeature, rest } = perFeatureMode(chosen);
     const input = readGeoJSON(geojson);
+    if (perFeature) {
+      // Copied, not transferred: the rings' coordinates become the result's points here.
+      const batch = featurePolygons(input);
+      const filled = await this.triangulatePolygons(batch,
+        { fillRule: rest.fillRule, transfer: false });
+      return featureFillResult(filled, batch, input, output);
+    }
     const mesh = await this.triangulate(input, { ...rest, transfer: true });
     return geoJSONResult(mesh, input, output, rest);
   }

@@ -8,7 +8,7 @@ import type {
   TriangleFeatureCollection, TriangulateInput, TriangulateOptions, TriangulatePolygonsOptions,
   TriangulateResult, TriangulationOptions, Keep, FillRule, Heightmap, RasterMesh,
   RasterMeshOptions, VoronoiInput, VoronoiOptions, VoronoiCells, CellFeatureCollection,
-  VoronoiGeoJSONResult, GeoJSONOutput,
+  VoronoiGeoJSONResult, GeoJSONOutput, FeatureFillOptions, FeatureFillResult,
 } from './index.js';
 
 export { GeocdtError, GeocdtErrorCode, ProgressEvent, ProgressPhase } from './index.js';
@@ -30,13 +30,21 @@ export class GeocdtWorker {
   /** The GeoJSON is read on the calling thread; the triangulation runs in the worker. */
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options?: TriangulateOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
+    options: FeatureFillOptions & { output?: 'geojson' }): Promise<TriangleFeatureCollection>;
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options: TriangulateOptions & { output: 'arrays' }): Promise<GeoJSONResult>;
+    options: FeatureFillOptions & { output: 'arrays' }): Promise<FeatureFillResult>;
   triangulateGeoJSON(
     geojson: GeoJSONInput,
-    options?: GeoJSONOptions): Promise<TriangleFeatureCollection | GeoJSONResult>;
+    options?: TriangulateOptions & { output?: 'geojson'; perFeature?: false },
+  ): Promise<TriangleFeatureCollection>;
+  triangulateGeoJSON(
+    geojson: GeoJSONInput,
+    options: TriangulateOptions & { output: 'arrays'; perFeature?: false },
+  ): Promise<GeoJSONResult>;
+  triangulateGeoJSON(
+    geojson: GeoJSONInput, options?: GeoJSONOptions | FeatureFillOptions,
+  ): Promise<TriangleFeatureCollection | GeoJSONResult | FeatureFillResult>;
   /** The batch's typed arrays are transferred to the worker (transfer: false copies them). */
   triangulatePolygons(
     polygons: PolygonBatch,

@@ -65,6 +65,27 @@ test('keeps ids, properties and heights as the API does, with or without inside 
   }
 });
 
+test('--per-feature fills each feature alone, as triangulateGeoJSON({ perFeature }) does', () => {
+  const geojson = JSON.parse(readFileSync(fixture, 'utf8'));
+  const overlap = { type: 'Feature', id: 'bow tie', properties: { name: 'crossing' }, geometry: {
+    type: 'Polygon', coordinates: [[[0, 0], [4, 4], [4, 0], [0, 4], [0, 0]]] } };
+  geojson.features.push(overlap);
+  const input = join(dir, 'per-feature.geojson');
+  writeFileSync(input, JSON.stringify(geojson));
+  for (const fillRule of ['evenodd', 'nonzero']) {
+    const p = run([input, '--per-feature', '--fill-rule', fillRule, '--keep', 'inside']);
+    assert.equal(p.status, 0, p.stderr);
+    const expected = triangulateGeoJSON(geojson, { perFeature: true, fillRule });
+    assert.ok(expected.features.some((f) => f.id === 'bow tie'));
+    assert.deepEqual(JSON.parse(p.stdout), expected);
+  }
+  for (const flags of [['--keep', 'all'], ['--inside-flags'], ['--min-angle', '20']]) {
+    const p = run([input, '--per-feature', ...flags]);
+    assert.equal(p.status, 2);
+    assert.match(p.stderr, /--per-feature keeps the inside of each feature alone/);
+  }
+});
+
 test('reads stdin and writes stdout', () => {
   const geojson = readFileSync(multiPointFile(50), 'utf8');
   const p = run(['-'], geojson);

@@ -162,6 +162,24 @@ test('regions, heights and GeoJSON features through the worker', async () => {
   assert.ok(geojson.features.every((f) => f.id === 'a' && f.properties.name === 'square'));
   const arrays = await worker.triangulateGeoJSON(fc, { output: 'arrays' });
   assert.equal(arrays.regionFeatures[0], fc.features[0], 'the features stay on this thread');
+  // Each feature filled alone: a second square overlapping the first, and a bow tie.
+  fc.features.push({ type: 'Feature', properties: { name: 'overlap' }, geometry: {
+    type: 'MultiPolygon', coordinates: [[[[2, 2], [6, 2], [6, 6], [2, 6], [2, 2]]],
+      [[[10, 0], [14, 4], [14, 0], [10, 4], [10, 0]]]],
+  } });
+  for (const output of ['geojson', 'arrays']) {
+    const options = { perFeature: true, output, fillRule: 'nonzero' };
+    const untimed = ({ stats: _stats, ...rest }) => rest;
+    const filled = await worker.triangulateGeoJSON(fc, options);
+    const here = triangulateGeoJSON(fc, options);
+    assert.deepEqual(output === 'arrays' ? untimed(filled) : filled,
+      output === 'arrays' ? untimed(here) : here);
+  }
+  const filled = await worker.triangulateGeoJSON(fc, { perFeature: true, output: 'arrays' });
+  assert.equal(filled.regionFeatures[1], fc.features[1]);
+  assert.equal(filled.stats.crossings, 1);
+  await assert.rejects(worker.triangulateGeoJSON(fc, { perFeature: true, refine: true }),
+    TypeError);
 
   const t = worker.createTriangulation();
   await t.insertPolyline(polylines[0]);

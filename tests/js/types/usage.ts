@@ -5,6 +5,7 @@ import {
   geoJSONToInput, Triangulation, memoryUsage, GeocdtError, voronoi, voronoiGeoJSON,
   cellsToGeoJSON, type TriangulateResult, type ProgressEvent, type GeocdtErrorCode,
   type Position, type PolygonTriangles, type RasterMesh, type VoronoiCells,
+  type FeatureFillResult, type TriangleFeatureCollection,
 } from 'geocdt';
 import { createWorker } from 'geocdt/worker';
 
@@ -35,6 +36,15 @@ async function main(): Promise<void> {
   const regionOf: Int32Array | undefined = arrays.regions;
   const featureOf = arrays.regionFeatures[0]?.properties;
   const heights: Float64Array | undefined = arrays.values;
+  // Each feature filled alone.
+  const fills: FeatureFillResult = triangulateGeoJSON({ type: 'FeatureCollection', features: [] },
+    { perFeature: true, output: 'arrays', fillRule: 'nonzero' });
+  const fillOffsets: Uint32Array = fills.triangleOffsets;
+  const fillFeature = fills.regionFeatures[fills.regions[0]]?.id;
+  const fillCollection: TriangleFeatureCollection =
+    triangulateGeoJSON({ type: 'Point', coordinates: [0, 0] }, { perFeature: true });
+  // @ts-expect-error perFeature takes no refinement
+  triangulateGeoJSON({ type: 'Point', coordinates: [0, 0] }, { perFeature: true, refine: true });
 
   // Polygons and heights in the array API, polygons in results().
   const labelled = triangulate({
@@ -119,6 +129,8 @@ async function main(): Promise<void> {
   const worker = createWorker();
   const remoteTin: RasterMesh = await worker.triangulateRaster(
     { heights: new Float32Array(4), width: 2, height: 2 }, { transfer: false });
+  const remoteFills: FeatureFillResult = await worker.triangulateGeoJSON(
+    { type: 'Point', coordinates: [0, 0] }, { perFeature: true, output: 'arrays' });
   const remote = await worker.triangulate({ points: [0, 0, 1, 0, 0, 1] },
     { transfer: false, onProgress: ({ fraction }) => void fraction });
   const rt = worker.createTriangulation();
