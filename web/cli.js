@@ -9,7 +9,9 @@ import { readInput } from './cli-input.js';
 import {
   geoJSONToInput, init, triangulate, triangulatePolygons, triangulateRaster,
 } from './index.node.js';
-import { featureFillResult, featurePolygons, geoJSONResult } from './geojson.js';
+import {
+  featureFillResult, featurePolygons, geoJSONResult, readGeoJSON,
+} from './geojson.js';
 import { writeGeoJSON } from './geojson-writer.js';
 import { ProgressDisplay } from './progress-display.js';
 import { isRasterFile, readRasterFile } from './raster-file.js';
@@ -30,7 +32,7 @@ Options:
   -o, --output <file>        where to write the triangles (default: stdout)
   --keep <all|inside>        keep every triangle, or only those inside the rings (default: all)
   --fill-rule <evenodd|nonzero>  how rings decide inside (default: evenodd)
-  --per-feature              fill each feature's rings alone, as a renderer does (inside
+  --per-feature              fill each polygon of each feature alone, as renderers do (inside
                              triangles only; points and lines left out; not with --keep all,
                              --inside-flags or refinement)
   --inside-flags             add inside to every triangle's properties
@@ -117,7 +119,7 @@ function parseArgs(argv) {
     throw new UsageError(`--keep must be all or inside, not ${args.keep}`);
   }
   if (args.perFeature && (args.keep === 'all' || args.insideFlags || args.refine !== null)) {
-    throw new UsageError('--per-feature keeps the inside of each feature alone: it takes no '
+    throw new UsageError('--per-feature keeps the inside of each polygon alone: it takes no '
       + '--keep all, --inside-flags, --min-angle, --max-area or --max-steiner');
   }
   args.keep ??= 'all';
@@ -166,7 +168,7 @@ async function main(argv) {
   } catch (error) {
     throw new Error(`${args.input} is not valid JSON: ${error.message}`, { cause: error });
   }
-  const input = geoJSONToInput(geojson, { flat: true });
+  const input = readGeoJSON(geojson);
   const lines = input.polylines.offsets.length - 1;
   const pointCount = input.points.length / 2 + input.polylines.offsets[lines];
   if (!args.quiet && pointCount >= BIG_INPUT_POINTS) {

@@ -135,11 +135,14 @@ function geometry(g, path, reader) {
       list(c, at).forEach((l, i) => line(l, `${at}[${i}]`, false, lines));
       break;
     case 'Polygon':
+      reader.parts.push(rings.offsets.length - 1);
       list(c, at).forEach((r, i) => line(r, `${at}[${i}]`, true, rings));
       break;
     case 'MultiPolygon':
-      list(c, at).forEach((poly, i) => list(poly, `${at}[${i}]`)
-        .forEach((r, j) => line(r, `${at}[${i}][${j}]`, true, rings)));
+      list(c, at).forEach((poly, i) => {
+        reader.parts.push(rings.offsets.length - 1);
+        list(poly, `${at}[${i}]`).forEach((r, j) => line(r, `${at}[${i}][${j}]`, true, rings));
+      });
       break;
     case 'GeometryCollection':
       list(g.geometries, `${path}.geometries`).forEach((child, i) =>
@@ -248,7 +251,7 @@ export function readGeoJSON(geojson, { pointFeatures = false } = {}) {
   }
   const reader = {
     points: new Positions(counts.points), rings: polylines(counts.rings),
-    lines: polylines(counts.lines), polygons: [0], features: [], feature: null,
+    lines: polylines(counts.lines), polygons: [0], parts: [], features: [], feature: null,
     pointFeatures: pointFeatures ? [] : undefined,
   };
   if (geojson.type === 'FeatureCollection') {
@@ -286,6 +289,9 @@ export function readGeoJSON(geojson, { pointFeatures = false } = {}) {
   if (reader.features.length > 0) {
     input.polygons = Uint32Array.from(reader.polygons);
     input.regionFeatures = reader.features;
+    // Internal (geoJSONToInput() drops it): each Polygon, and each part of a MultiPolygon,
+    // as ring offsets, for triangulateGeoJSON()'s perFeature.
+    input.parts = Uint32Array.from([...reader.parts, ringCount]);
   }
   if (pointFeatures) input.pointFeatures = reader.pointFeatures;
   const all = [points, rings.positions, lines.positions];
@@ -303,6 +309,7 @@ export function readGeoJSON(geojson, { pointFeatures = false } = {}) {
 // The same, with { flat: false } (the default) as one Float64Array per polyline.
 export function geoJSONToInput(geojson, { flat = false } = {}) {
   const input = readGeoJSON(geojson);
+  delete input.parts;
   if (flat) return input;
   const { coords, offsets } = input.polylines;
   const polylines = new Array(offsets.length - 1);
@@ -403,8 +410,9 @@ export function meshToGeoJSON(mesh) {
 }
 
 // options.perFeature of triangulateGeoJSON(): false (the default) triangulates everything
-// together; true fills each feature's rings alone (triangulatePolygons()), as a renderer does,
-// which takes fillRule and output only. Returns whether it is on, and the options without it.
+// together; true fills each Polygon of each feature alone (triangulatePolygons()), as
+// renderers do, and takes fillRule and output only. Returns whether it is on, and the options
+// without it.
 export function perFeatureMode(options) {
   const { perFeature = false, ...rest } = options;
   if (typeof perFeature !== 'boolean') {
@@ -415,17 +423,16 @@ export function perFeatureMode(options) {
     for (const [key, value] of Object.entries(rest)) {
       if (key === 'fillRule' || (key === 'keep' && value === 'inside')) continue;
       throw new TypeError(`geocdt: options.${key} does not apply with perFeature: true (each `
-        + 'feature\'s rings are filled alone, inside triangles only: it takes fillRule and '
-        + 'output)');
+        + 'polygon is filled alone, inside triangles only: it takes fillRule and output)');
     }
   }
   return { perFeature, rest };
 }
 
-// readGeoJSON()'s rings as triangulatePolygons()'s batch: one polygon per feature with rings,
-// its rings (its Polygons' and MultiPolygons' parts and holes) together.
+// readGeoJSON()'s rings as triangulatePolygons()'s batch: one polygon per Polygon (and per
+// part of a MultiPolygon) with its holes, as renderers fill them; a feature's are consecutive.
 export function featurePolygons(input) {
-  const polygonOffsets = input.polygons ?? new Uint32Array([0]);
+  const polygonOffsets = input.parts ?? new Uint32Array([0]);
   const rings = polygonOffsets[polygonOffsets.length - 1];
   const ringOffsets = input.polylines.offsets.subarray(0, rings + 1);
   const ringPoints = ringOffsets[rings];
@@ -436,21 +443,30 @@ export function featurePolygons(input) {
 
 // triangulatePolygons()'s result for featurePolygons(input) -> what triangulateGeoJSON()
 // returns with perFeature: the arrays (points: the rings' points, then the extra points;
-// regions: each triangle's feature; heights in values, NaN at the extra points), or their
-// FeatureCollection.
+// triangleOffsets and regions by feature; heights in values, NaN at the extra points), or
+// their FeatureCollection.
 export function featureFillResult(filled, batch, input, output) {
-  const { coords } = batch;
-  const { triangles, extraPoints, triangleOffsets, stats } = filled;
+  const { coords, polygonOffsets: parts } = batch;
+  const { triangles, extraPoints, stats } = filled;
   const points = new Float64Array(coords.length + extraPoints.length);
   points.set(coords);
   points.set(extraPoints, coords.length);
+  // Feature f has the rings from input.polygons[f], so the parts from there: its triangles
+  // run from the first of them.
+  const features = input.regionFeatures ?? [];
+  const triangleOffsets = new Uint32Array(features.length + 1);
   const regions = new Int32Array(triangles.length / 3);
-  for (let p = 0; p + 1 < triangleOffsets.length; p++) {
-    regions.fill(p, triangleOffsets[p], triangleOffsets[p + 1]);
+  let part = 0;
+  for (let f = 0; f < features.length; f++) {
+    while (part + 1 < parts.length && parts[part] < input.polygons[f]) part += 1;
+    triangleOffsets[f] = filled.triangleOffsets[part];
+  }
+  triangleOffsets[features.length] = triangles.length / 3;
+  for (let f = 0; f < features.length; f++) {
+    regions.fill(f, triangleOffsets[f], triangleOffsets[f + 1]);
   }
   const mesh = {
-    points, triangles, regions, regionFeatures: input.regionFeatures ?? [], triangleOffsets,
-    stats,
+    points, triangles, regions, regionFeatures: features, triangleOffsets, stats,
   };
   if (input.values !== undefined) {
     const first = input.points.length / 2;

@@ -344,9 +344,9 @@ export interface GeoJSONOptions extends TriangulateOptions {
 }
 
 /**
- * triangulateGeoJSON() with perFeature: true: each feature's rings (its Polygons' and
- * MultiPolygons' parts and holes) filled alone, as triangulatePolygons() fills a polygon, inside
- * triangles only; features never see each other's edges. Points and lines are left out.
+ * triangulateGeoJSON() with perFeature: true: each Polygon of each feature (each part of a
+ * MultiPolygon, with its holes) filled alone, as triangulatePolygons() fills a polygon, inside
+ * triangles only, each triangle labelled with its feature. Points and lines are left out.
  */
 export interface FeatureFillOptions {
   perFeature: true;
@@ -363,7 +363,7 @@ export interface FeatureFillResult {
   points: Float64Array;
   /** 3 indices into points a triangle, counter-clockwise with y up. */
   triangles: Uint32Array;
-  /** Feature p's triangles (p indexes regionFeatures) are triangleOffsets[p] .. [p + 1] - 1. */
+  /** Feature k's triangles (k indexes regionFeatures) are triangleOffsets[k] .. [k + 1] - 1. */
   triangleOffsets: Uint32Array;
   /** Each triangle's feature: regionFeatures[regions[t]]. */
   regions: Int32Array;

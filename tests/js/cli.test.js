@@ -65,7 +65,7 @@ test('keeps ids, properties and heights as the API does, with or without inside 
   }
 });
 
-test('--per-feature fills each feature alone, as triangulateGeoJSON({ perFeature }) does', () => {
+test('--per-feature fills each polygon alone, as triangulateGeoJSON({ perFeature }) does', () => {
   const geojson = JSON.parse(readFileSync(fixture, 'utf8'));
   const overlap = { type: 'Feature', id: 'bow tie', properties: { name: 'crossing' }, geometry: {
     type: 'Polygon', coordinates: [[[0, 0], [4, 4], [4, 0], [0, 4], [0, 0]]] } };
@@ -82,7 +82,7 @@ test('--per-feature fills each feature alone, as triangulateGeoJSON({ perFeature
   for (const flags of [['--keep', 'all'], ['--inside-flags'], ['--min-angle', '20']]) {
     const p = run([input, '--per-feature', ...flags]);
     assert.equal(p.status, 2);
-    assert.match(p.stderr, /--per-feature keeps the inside of each feature alone/);
+    assert.match(p.stderr, /--per-feature keeps the inside of each polygon alone/);
   }
 });
 

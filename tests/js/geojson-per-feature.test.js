@@ -1,26 +1,31 @@
-// triangulateGeoJSON(geojson, { perFeature: true }): each feature's rings filled alone, as a
-// renderer fills them. The arrays are checked polygon by polygon by the exact checker of
-// triangulatePolygons() (support/polygons.js) against a batch built here from the GeoJSON
-// itself, and the FeatureCollection against the arrays.
+// triangulateGeoJSON(geojson, { perFeature: true }): each Polygon (each part of a
+// MultiPolygon, with its holes) filled alone, as renderers fill them, its triangles labelled
+// with its feature. Checked against triangulatePolygons() on a batch built here from the
+// GeoJSON itself, held to the exact checker of support/polygons.js, and the FeatureCollection
+// against the arrays.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
-import { init, triangulateGeoJSON } from 'geocdt';
+import { init, triangulateGeoJSON, triangulatePolygons } from 'geocdt';
 import { checkPolygonTriangles } from './support/polygons.js';
 import { countries } from './support/inputs.js';
 import { throwsWith } from './support/throws.js';
 
 before(() => init());
 
-// The batch a renderer would build: per feature with rings, all of its Polygons' rings (each
-// closed), in feature order; ringPoints is where each ring's points start, heights alongside.
-function featureBatch(fc) {
-  const coords = [], heights = [], ringOffsets = [0], polygonOffsets = [0], features = [];
+// The batch a renderer would build: one polygon per Polygon and per part of a MultiPolygon
+// (its rings, each closed), in feature order; firstParts[f], the first polygon of feature f
+// (the features with rings), heights alongside the points.
+function partBatch(fc) {
+  const coords = [], heights = [], ringOffsets = [0], polygonOffsets = [0];
+  const features = [], firstParts = [];
   for (const f of fc.features) {
     const g = f.geometry;
-    const polygons = g?.type === 'Polygon' ? [g.coordinates]
+    const parts = g?.type === 'Polygon' ? [g.coordinates]
       : g?.type === 'MultiPolygon' ? g.coordinates : [];
-    if (polygons.length === 0) continue;
-    for (const rings of polygons) {
+    if (!parts.some((rings) => rings.length > 0)) continue;
+    features.push(f);
+    firstParts.push(polygonOffsets.length - 1);
+    for (const rings of parts) {
       for (const ring of rings) {
         for (const p of ring) {
           coords.push(p[0], p[1]);
@@ -28,16 +33,16 @@ function featureBatch(fc) {
         }
         ringOffsets.push(coords.length / 2);
       }
+      polygonOffsets.push(ringOffsets.length - 1);
     }
-    polygonOffsets.push(ringOffsets.length - 1);
-    features.push(f);
   }
+  firstParts.push(polygonOffsets.length - 1);
   return {
     batch: {
       coords: Float64Array.from(coords), ringOffsets: Uint32Array.from(ringOffsets),
       polygonOffsets: Uint32Array.from(polygonOffsets),
     },
-    heights, features,
+    heights, features, firstParts,
   };
 }
 
@@ -58,51 +63,65 @@ const mixed = {
     feature({ type: 'Polygon', coordinates: [[[20, 0], [30, 10], [30, 0], [20, 10], [20, 0]]] },
       { name: 'bow tie' }),
     feature({ type: 'Point', coordinates: [3, 3] }, { name: 'well' }),
+    feature({ type: 'Polygon', coordinates: [] }, { name: 'empty' }),
     feature({
       type: 'MultiPolygon',
       coordinates: [[...square(40, 0, 10), [[42, 2], [42, 8], [48, 8], [48, 2], [42, 2]]],
         square(60, 0, 2)],
     }, { name: 'C' }, 7),
+    // Parts that overlap (invalid GeoJSON): each is filled, as renderers fill them.
+    feature({ type: 'MultiPolygon', coordinates: [square(80, 0, 4), square(82, 2, 4)] },
+      { name: 'D' }),
   ],
 };
 
-// The arrays against the exact checker, on the batch made from the GeoJSON here.
+// The features of the triangles of r that hold (x, y) strictly inside, one entry a triangle.
+function holders(r, x, y) {
+  const found = [];
+  for (let t = 0; t < r.triangles.length / 3; t++) {
+    const v = [0, 1, 2].map((k) => r.triangles[3 * t + k]);
+    const inside = [0, 1, 2].every((k) => {
+      const a = v[k], b = v[(k + 1) % 3];
+      const [ax, ay, bx, by] = [r.points[2 * a], r.points[2 * a + 1], r.points[2 * b],
+        r.points[2 * b + 1]];
+      return (bx - ax) * (y - ay) - (by - ay) * (x - ax) > 0;
+    });
+    if (inside) found.push(r.regions[t]);
+  }
+  return found.sort();
+}
+
+// The arrays against triangulatePolygons() of the batch made here, itself held to the exact
+// checker; triangleOffsets and regions group its polygons by feature.
 function checkArrays(fc, r, fillRule) {
-  const { batch, heights, features } = featureBatch(fc);
+  const { batch, heights, features, firstParts } = partBatch(fc);
+  const direct = triangulatePolygons(batch, { fillRule });
+  checkPolygonTriangles(batch, direct, { fillRule });
   const n = batch.coords.length;
   assert.deepEqual(r.points.subarray(0, n), batch.coords, 'the rings\' points first');
-  checkPolygonTriangles(batch, {
-    triangles: r.triangles, extraPoints: r.points.slice(n), triangleOffsets: r.triangleOffsets,
-  }, { fillRule });
+  assert.deepEqual(r.points.subarray(n), direct.extraPoints, 'then the extra points');
+  assert.deepEqual(r.triangles, direct.triangles);
   assert.equal(r.regionFeatures.length, features.length);
-  r.regionFeatures.forEach((f, p) => assert.equal(f, features[p], `feature of polygon ${p}`));
-  for (let p = 0; p + 1 < r.triangleOffsets.length; p++) {
-    for (let t = r.triangleOffsets[p]; t < r.triangleOffsets[p + 1]; t++) {
-      assert.equal(r.regions[t], p, `triangle ${t} names its feature`);
+  r.regionFeatures.forEach((f, k) => assert.equal(f, features[k], `feature ${k}`));
+  assert.deepEqual(Array.from(r.triangleOffsets),
+    firstParts.map((p) => direct.triangleOffsets[p]), 'a feature\'s triangles: its parts\'');
+  for (let k = 0; k + 1 < r.triangleOffsets.length; k++) {
+    for (let t = r.triangleOffsets[k]; t < r.triangleOffsets[k + 1]; t++) {
+      assert.equal(r.regions[t], k, `triangle ${t} names its feature`);
     }
   }
   return { heights, n };
 }
 
-test('perFeature: each feature filled alone, the exact checker on every polygon', () => {
+test('perFeature: each polygon filled alone, the exact checker on every one', () => {
   for (const fillRule of ['evenodd', 'nonzero']) {
     const r = triangulateGeoJSON(mixed, { perFeature: true, output: 'arrays', fillRule });
     checkArrays(mixed, r, fillRule);
-    assert.equal(r.stats.polygons, 4);
+    assert.equal(r.stats.polygons, 8, 'A, B, the bow tie, the empty one, C\'s two parts, D\'s');
     assert.equal(r.stats.crossings, 1, 'the bow tie\'s crossing');
-    // Overlapping features keep their own triangles: both squares cover (7, 7).
-    const holders = new Set();
-    for (let t = 0; t < r.triangles.length / 3; t++) {
-      const [a, b, c] = [0, 1, 2].map((k) => r.triangles[3 * t + k]);
-      const x = [a, b, c].map((v) => r.points[2 * v]);
-      const y = [a, b, c].map((v) => r.points[2 * v + 1]);
-      const inside = [0, 1, 2].every((k) => {
-        const j = (k + 1) % 3;
-        return (x[j] - x[k]) * (7.5 - y[k]) - (y[j] - y[k]) * (7.25 - x[k]) >= 0;
-      });
-      if (inside) holders.add(r.regions[t]);
-    }
-    assert.deepEqual([...holders].sort(), [0, 1]);
+    // Overlapping features keep their own triangles, and so do overlapping parts of one.
+    assert.deepEqual(holders(r, 7.25, 7.5), [0, 1]);
+    assert.deepEqual(holders(r, 83.25, 3.5), [4, 4]);
   }
 });
 
