@@ -11,7 +11,7 @@ self.addEventListener('message', async ({ data }) => {
       wasm: await instantiateCompiled(createGeocdtModule, data.module), threads: 1,
     }));
     await api.init({ warmUp: false });
-    self.postMessage({ triangles: runWarmUp(api.triangulate) });
+    self.postMessage({ triangles: runWarmUp(api) });
   } finally {
     self.close();
   }

@@ -7,9 +7,9 @@ import { createApi } from './api.js';
 import { instantiateCompiled, runWarmUp } from './warm-up.js';
 
 parentPort.once('message', async ({ module }) => {
-  const { init, triangulate } = createApi(async () => ({
+  const api = createApi(async () => ({
     wasm: await instantiateCompiled(createGeocdtModule, module), threads: 1,
   }));
-  await init({ warmUp: false });
-  parentPort.postMessage({ triangles: runWarmUp(triangulate) });
+  await api.init({ warmUp: false });
+  parentPort.postMessage({ triangles: runWarmUp(api) });
 });

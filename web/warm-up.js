@@ -106,16 +106,68 @@ function countryGrid(k, m) {
   return [...rings, ...diagonals];
 }
 
-// Runs the warm-up with the worker's own triangulate(): first a call so small that its time is
-// compiling the functions every call reaches (the caller's call then finds them compiled),
-// then calls long enough for the engine to optimise them. Returns the triangles made, which
-// the worker reports when it is done (read by the tests only).
-export function runWarmUp(triangulate, rounds = 3) {
+// A batch for triangulatePolygons() that reaches its paths as map tiles and layers do:
+// buildings of four corners (no triangulation), triangles, wobbly rings with and without a
+// hole, rings of 64 points and more (the spatial order), a bow tie (the general engine); in
+// tile integers (the exact integer predicates) or in degrees (the filtered ones).
+function polygonWarmUpBatch(next, inTileUnits) {
+  const coords = [], ringOffsets = [0], polygonOffsets = [0];
+  const unit = inTileUnits ? 4096 : 1;
+  const put = (x, y) => coords.push(inTileUnits ? Math.round(x * unit) : x * unit,
+    inTileUnits ? Math.round(y * unit) : y * unit);
+  const ring = (cx, cy, radius, sides, clockwise) => {
+    for (let k = 0; k <= sides; k++) {
+      const angle = ((clockwise ? -2 : 2) * Math.PI * (k % sides)) / sides;
+      const wobble = radius * (0.75 + 0.25 * Math.sin(3 * angle + cx));
+      put(cx + wobble * Math.cos(angle), cy + wobble * Math.sin(angle));
+    }
+    ringOffsets.push(coords.length / 2);
+  };
+  const polygon = () => polygonOffsets.push(ringOffsets.length - 1);
+  for (let p = 0; p < 400; p++) {
+    const cx = next(), cy = next(), r = 0.002 + 0.01 * next();
+    const kind = p % 12;
+    if (kind < 6) {
+      ring(cx, cy, r, 4, false);  // a building
+    } else if (kind < 8) {
+      ring(cx, cy, r, 3, false);
+    } else if (kind < 10) {
+      ring(cx, cy, r, 8 + (p % 40), false);
+    } else if (kind === 10) {
+      ring(cx, cy, 3 * r, 24, false);
+      ring(cx, cy, r, 12, true);  // a hole
+    } else {
+      ring(cx, cy, 5 * r, 64 + (p % 200), false);
+    }
+    polygon();
+  }
+  for (const [x, y] of [[0, 0], [0.02, 0.02], [0.02, 0], [0, 0.02], [0, 0]]) put(0.5 + x, 0.5 + y);
+  ringOffsets.push(coords.length / 2);
+  polygon();
+  const Coords = inTileUnits ? Int16Array : Float64Array;
+  return {
+    coords: Coords.from(coords), ringOffsets: Uint32Array.from(ringOffsets),
+    polygonOffsets: Uint32Array.from(polygonOffsets),
+  };
+}
+
+// Runs the warm-up with the worker's own calls (api: its triangulate and triangulatePolygons):
+// first a call so small that its time is compiling the functions every call reaches (the
+// caller's call then finds them compiled), then calls long enough for the engine to optimise
+// them, triangulate()'s first. Returns the triangles made, which the worker reports when it
+// is done (read by the tests only).
+export function runWarmUp({ triangulate, triangulatePolygons }, rounds = 3) {
   let triangles = triangulate({ polylines: [[0, 0, 1, 1, 0, 1, 0, 0], [0.5, -1, 0.5, 2]] },
     { keep: 'inside' }).stats.triangles;
   const inputs = warmUpInputs();
+  const next = random(777);
+  const batches = [polygonWarmUpBatch(next, true), polygonWarmUpBatch(next, false)];
   for (let round = 0; round < rounds; round++) {
     for (const [input, options] of inputs) triangles += triangulate(input, options).stats.triangles;
+  }
+  // The polygon path after (a caller of triangulate() gets its warm-up as soon as before).
+  for (let round = 0; round < rounds; round++) {
+    for (const batch of batches) triangles += triangulatePolygons(batch).triangles.length / 3;
   }
   return triangles;
 }

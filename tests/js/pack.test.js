@@ -10,7 +10,7 @@ import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
 import { extname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { init, triangulate } from 'geocdt';
+import { init, triangulate, triangulatePolygons } from 'geocdt';
 import { checkProgressEvents } from './support/progress.js';
 import { runWarmUp } from '../../web/warm-up.js';
 
@@ -163,7 +163,7 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
       return reply;
     }, [warmUp, wasm]);
     await init({ warmUp: false });
-    assert.equal(triangles, runWarmUp(triangulate));
+    assert.equal(triangles, runWarmUp({ triangulate, triangulatePolygons }));
   });
 });
 
