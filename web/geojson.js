@@ -421,7 +421,9 @@ export function perFeatureMode(options) {
   }
   if (perFeature) {
     for (const [key, value] of Object.entries(rest)) {
-      if (key === 'fillRule' || (key === 'keep' && value === 'inside')) continue;
+      if (value === undefined || key === 'fillRule' || (key === 'keep' && value === 'inside')) {
+        continue;
+      }
       throw new TypeError(`geocdt: options.${key} does not apply with perFeature: true (each `
         + 'polygon is filled alone, inside triangles only: it takes fillRule and output)');
     }

@@ -176,7 +176,10 @@ test('perFeature: options it does not take, and a bad value, are TypeErrors', ()
   }
   throwsWith(() => triangulateGeoJSON(mixed, { perFeature: true, fillRule: 'odd' }), TypeError,
     /fillRule/);
-  // keep: 'inside' is what it does anyway; perFeature: false is the usual call.
+  // keep: 'inside' is what it does anyway, an option left undefined is no option, and
+  // perFeature: false is the usual call.
+  assert.equal(triangulateGeoJSON(mixed, { perFeature: true, refine: undefined }).type,
+    'FeatureCollection');
   const inside = triangulateGeoJSON(mixed, { perFeature: true, keep: 'inside', output: 'arrays' });
   assert.equal(inside.triangles.length,
     triangulateGeoJSON(mixed, { perFeature: true, output: 'arrays' }).triangles.length);
