@@ -151,12 +151,59 @@ function polygonWarmUpBatch(next, inTileUnits) {
   };
 }
 
-// Runs the warm-up with the worker's own calls (api: its triangulate and triangulatePolygons):
+// A raster of hills and a valley, width x height, with two breaklines across it (one along a
+// row, one diagonal, crossing each other) and a no-data hole: the terrain mesher's paths.
+function rasterWarmUp(width, height) {
+  const heights = new Float64Array(width * height);
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      heights[y * width + x] = Math.round(40 * Math.sin(x / 9) * Math.cos(y / 13) + 0.3 * x * y
+        / width + 25 * Math.exp(-(((x - width / 2) ** 2) + (y - height / 3) ** 2) / 300));
+    }
+  }
+  for (let y = 20; y < 26; y++) heights.fill(-9999, y * width + 30, y * width + 38);
+  const breaklines = [[2, height / 2, width - 3, height / 2], [5, 5, width - 6, height - 7]];
+  return { raster: { heights, width, height }, breaklines };
+}
+
+// Edits on a Triangulation (Triangulation: the api's class): points removed, moved far and
+// moved a little; roads inserted across them, one nudged, one removed.
+function editWarmUp(Triangulation, next, size) {
+  const t = new Triangulation();
+  try {
+    const points = new Float64Array(2 * size);
+    for (let i = 0; i < points.length; i++) points[i] = next();
+    const ids = t.insertPoints(points);
+    const roads = [];
+    for (let r = 0; r < 12; r++) {
+      const road = [];
+      for (let k = 0; k < 8; k++) road.push(next(), next());
+      roads.push(t.insertPolyline(road));
+    }
+    const edits = size / 10;
+    for (let k = 0; k < edits; k++) t.removePoint(ids[k]);
+    for (let k = edits; k < 2 * edits; k++) t.movePoint(ids[k], next(), next());
+    const step = 0.2 / Math.sqrt(size);
+    for (let k = 2 * edits; k < 3 * edits; k++) {
+      const [dx, dy] = [step * (next() - 0.5), step * (next() - 0.5)];
+      t.movePoint(ids[k], points[2 * k] + dx, points[2 * k + 1] + dy);
+    }
+    t.movePoint(roads[0][1], 0.5, 0.5);
+    t.removePolyline(1);
+    return t.results().triangles.length / 3;
+  } finally {
+    t.dispose();
+  }
+}
+
+// Runs the warm-up with the worker's own calls (api: its functions and Triangulation class):
 // first a call so small that its time is compiling the functions every call reaches (the
 // caller's call then finds them compiled), then calls long enough for the engine to optimise
-// them, triangulate()'s first. Returns the triangles made, which the worker reports when it
-// is done (read by the tests only).
-export function runWarmUp({ triangulate, triangulatePolygons }, rounds = 3) {
+// them: triangulate()'s first, then triangulatePolygons(), then voronoi(),
+// triangulateRaster() and edits. Returns the triangles made (with the Voronoi cells' ring
+// points), which the worker reports when it is done (read by the tests only).
+export function runWarmUp(api, rounds = 3) {
+  const { triangulate, triangulatePolygons, voronoi, triangulateRaster, Triangulation } = api;
   let triangles = triangulate({ polylines: [[0, 0, 1, 1, 0, 1, 0, 0], [0.5, -1, 0.5, 2]] },
     { keep: 'inside' }).stats.triangles;
   const inputs = warmUpInputs();
@@ -168,6 +215,19 @@ export function runWarmUp({ triangulate, triangulatePolygons }, rounds = 3) {
   // The polygon path after (a caller of triangulate() gets its warm-up as soon as before).
   for (let round = 0; round < rounds; round++) {
     for (const batch of batches) triangles += triangulatePolygons(batch).triangles.length / 3;
+  }
+  // Then the cells, the terrain and the edits, whose own code triangulate() does not reach.
+  const points = inputs[0][0].points.subarray(0, 2 * 5000);
+  const { coords, offsets } = inputs[1][0].polylines;
+  const rings = { coords: coords.subarray(0, 2 * offsets[32]), offsets: offsets.subarray(0, 33) };
+  const { raster, breaklines } = rasterWarmUp(160, 120);
+  for (let round = 0; round < rounds; round++) {
+    triangles += voronoi({ points }).coords.length / 2;
+    triangles += voronoi({ points, polylines: rings }).coords.length / 2;
+    triangles += triangulateRaster(raster, { maxError: 2, noData: -9999 }).triangles.length / 3;
+    triangles += triangulateRaster(raster, { maxError: 4, breaklines, minAngle: 20,
+      decimate: true, noData: -9999 }).triangles.length / 3;
+    triangles += editWarmUp(Triangulation, next, 6000);
   }
   return triangles;
 }

@@ -10,7 +10,7 @@ import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
 import { extname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { init, triangulate, triangulatePolygons } from 'geocdt';
+import * as geocdt from 'geocdt';
 import { checkProgressEvents } from './support/progress.js';
 import { runWarmUp } from '../../web/warm-up.js';
 
@@ -162,8 +162,8 @@ test('a Vite bundle runs in headless Chromium, with the worker', async () => {
       worker.postMessage({ module });
       return reply;
     }, [warmUp, wasm]);
-    await init({ warmUp: false });
-    assert.equal(triangles, runWarmUp({ triangulate, triangulatePolygons }));
+    await geocdt.init({ warmUp: false });
+    assert.equal(triangles, runWarmUp(geocdt));
   });
 });
 

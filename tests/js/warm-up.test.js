@@ -8,7 +8,7 @@ import { once } from 'node:events';
 import { readFileSync } from 'node:fs';
 import { availableParallelism } from 'node:os';
 import { Worker } from 'node:worker_threads';
-import { init, triangulate, triangulatePolygons } from 'geocdt';
+import * as geocdt from 'geocdt';
 import { runWarmUp } from '../../web/warm-up.js';
 
 const runModule = (script) => execFileSync(process.execPath,
@@ -26,8 +26,8 @@ test('the warm-up worker runs on the module it is sent, makes what runs here, an
     const [code] = await once(worker, 'exit');
     assert.deepEqual(errors, []);
     assert.equal(code, 0);
-    await init({ warmUp: false });
-    assert.equal(triangles, runWarmUp({ triangulate, triangulatePolygons }));
+    await geocdt.init({ warmUp: false });
+    assert.equal(triangles, runWarmUp(geocdt));
     assert.ok(triangles > 100_000, `${triangles} triangles`);
   });
 
