@@ -102,8 +102,8 @@ export interface RefineOptions {
   maxArea?: number;
   /**
    * A hard cap on the Steiner vertices of the call; when it ends refinement,
-   * stats.refineCapped says so. Default: none up to 20.7 degrees, else 64 per vertex plus 4 per
-   * maxArea of the refined area plus 1024.
+   * stats.refineCapped says so. Default: 64 per vertex plus 4 per maxArea of the refined area
+   * plus 1024.
    */
   maxSteinerPoints?: number;
 }

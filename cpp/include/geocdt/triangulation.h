@@ -122,9 +122,9 @@ struct RefineOptions {
   // cap ends it when nothing else does (30 degrees ends on real data, 34 mostly does).
   double minAngle = 20.0;
   double maxArea = 0.0;  // squared input units; 0 (or infinity) for no bound
-  // A hard cap on the Steiner vertices one call adds. 0 means the default: none up to
-  // kProvenAngle, else 64 per vertex before refinement, plus 4 per maxArea of the domain's
-  // area, plus 1024.
+  // A hard cap on the Steiner vertices one call adds. 0 means the default: 64 per vertex
+  // before refinement, plus 4 per maxArea of the domain's area, plus 1024 (at every angle:
+  // a safety net below kProvenAngle, which one input has needed).
   std::uint64_t maxSteinerPoints = 0;
   Keep keep = Keep::All;  // Inside refines only the inside of the rings; outside stays as is
   FillRule fill = FillRule::EvenOdd;

@@ -234,18 +234,18 @@ void Refiner::start() {
   rebuild();
   steinerFlag_.assign(d_.vertexCount(), 0);
   for (const SteinerVertex& s : d_.steiner) steinerFlag_[s.vertex] = 1;
+  // The default cap holds at every angle: below kProvenAngle refinement ends in theory, but a
+  // terrain mesh with breaklines ending on the raster's border once refined for ever at 17
+  // degrees (tests/cpp/terrain_test.cpp, seed 48633), and a cap beats a hang.
   if (cap_ == 0) {
-    cap_ = std::numeric_limits<std::uint64_t>::max();
-    if (minAngle_ > kProvenAngle) {
-      double domainArea = 0;
-      for (std::int32_t t = 0; std::isfinite(maxArea_) && t < topo_.slotCount(); ++t) {
-        if (!inRegion(t)) continue;
-        domainArea += shape(t).area;
-      }
-      const double byArea = std::isfinite(maxArea_) ? 4 * domainArea / maxArea_ : 0;
-      cap_ = 64 * static_cast<std::uint64_t>(d_.vertexCount()) + 1024 +
-             static_cast<std::uint64_t>(std::min(byArea, 1e18));
+    double domainArea = 0;
+    for (std::int32_t t = 0; std::isfinite(maxArea_) && t < topo_.slotCount(); ++t) {
+      if (!inRegion(t)) continue;
+      domainArea += shape(t).area;
     }
+    const double byArea = std::isfinite(maxArea_) ? 4 * domainArea / maxArea_ : 0;
+    cap_ = 64 * static_cast<std::uint64_t>(d_.vertexCount()) + 1024 +
+           static_cast<std::uint64_t>(std::min(byArea, 1e18));
   }
   for (std::int32_t e = 0; keepAll_ && e < static_cast<std::int32_t>(topo_.tri.size()); ++e) {
     if (topo_.isGhost(e / 3) || !topo_.isGhost(topo_.adj[e] / 3) || topo_.fixed[e]) continue;
