@@ -238,7 +238,7 @@ void steinerHeights(Build& b, const Delaunay& d, std::size_t first, const Raster
 Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
             const terrain::MesherLimits& limits, TerrainStats& stats) {
   Delaunay& d = StateAccess::of(b.triangulation).delaunay;
-  terrain::GreedyMesher mesher(d, raster, b.z, b.rings, limits);
+  terrain::GreedyMesher mesher(d, raster, b.z, b.given, b.rings, limits);
   mesher.measure();
   std::uint64_t inserted = 0;
   if (!mesher.run(inserted)) return d.lastError();

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <set>
 #include <string>
 #include <tuple>
@@ -282,6 +283,14 @@ TEST(Terrain, NoDataEverywhereGivesNothing) {
   EXPECT_TRUE(m.points.empty());
 }
 
+// The distance from (x, y) to the segment from (ax, ay) to (bx, by).
+double distanceToSegment(double x, double y, double ax, double ay, double bx, double by) {
+  const double dx = bx - ax, dy = by - ay, squared = dx * dx + dy * dy;
+  const double t =
+      squared > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / squared, 0.0, 1.0) : 0.0;
+  return std::hypot(x - ax - t * dx, y - ay - t * dy);
+}
+
 // The vertex at (x, y), which must exist.
 std::uint32_t vertexAt(const Mesh& m, double x, double y) {
   for (std::size_t v = 0; v < m.points.size() / 2; ++v)
@@ -326,17 +335,24 @@ TEST(Terrain, BreaklinesCrossEachOtherAndTheRastersEdges) {
   // Heights: given ones as given, the others read from the raster (bilinear).
   EXPECT_EQ(m.values[vertexAt(m, 5.5, 5.5)], 500);
   EXPECT_EQ(m.values[vertexAt(m, 94.5, 64.5)], 600);
-  // Crossings on the line with given heights take its heights, the others the raster's.
-  std::size_t crossings = 0;
+  // Points on the line with given heights take its heights, the others the raster's: its
+  // four crossings with the others, and the points that went in for pixels beside it.
+  std::size_t crossings = 0, beside = 0;
   for (std::size_t v = 0; v < m.points.size() / 2; ++v) {
     const double x = m.points[2 * v], y = m.points[2 * v + 1];
     if (x == std::floor(x) && y == std::floor(y)) continue;  // a pixel
     const double t = (x - 5.5) / 89;
     if (std::fabs(5.5 + 59 * t - y) > 1e-9 || t <= 0 || t >= 1) continue;
     EXPECT_NEAR(m.values[v], 500 + 100 * t, 1e-6);
-    ++crossings;
+    bool crossing = false;
+    for (std::size_t l = 0; l < 3; ++l)
+      for (std::size_t k = 0; k + 3 < inside[l].size(); k += 2)
+        crossing |= distanceToSegment(x, y, inside[l][k], inside[l][k + 1], inside[l][k + 2],
+                                      inside[l][k + 3]) < 1e-9;
+    ++(crossing ? crossings : beside);
   }
   EXPECT_EQ(crossings, 4u);
+  EXPECT_GT(beside, 0u);
   const auto bilinear = [&](double x, double y) {
     const auto i = static_cast<std::size_t>(x), j = static_cast<std::size_t>(y);
     const double tx = x - i, ty = y - j;
@@ -404,6 +420,13 @@ TEST(Terrain, BreaklinesKeepTheBoundOnTheJacksboroDem) {
         worst = std::min(worst, smallestAngle(m, t));
       // The lines meet each other and the raster's edges at 30 degrees or more.
       if (minAngle > 0) EXPECT_GE(worst, minAngle - 1e-9);
+      // Pixels beside a line first get its nearest point, so refinement has no slivers to
+      // mend with tiny triangles along it: 1.21× and 1.33× the plain mesh's triangles at 5
+      // and 20 m, where pixels beside the lines made 1.30× and 1.68×.
+      if (minAngle > 0 && e > 1) {
+        const double plain = static_cast<double>(mesh(r, withError(e)).triangles.size());
+        EXPECT_LE(static_cast<double>(m.triangles.size()), (e == 5 ? 1.25 : 1.45) * plain);
+      }
     }
   }
 }
@@ -491,13 +514,38 @@ TEST(Terrain, MinAngleRefinesAndKeepsTheBound) {
   EXPECT_GE(worst, 20.0 - 1e-9);
 }
 
+// The pixels under vertices of m that lie on one of the lines and whose height is not the
+// pixel's: a breakline point with a given height on a pixel position, or a point interpolated
+// along such a line. The surface there is the line's, and maxError cannot hold.
+std::vector<std::uint8_t> underGivenHeights(const Mesh& m, const RasterFile& r,
+                                            const std::vector<std::vector<double>>& lines) {
+  std::vector<std::uint8_t> exempt(r.heights.size(), 0);
+  for (std::size_t v = 0; v < m.points.size() / 2; ++v) {
+    const double x = m.points[2 * v], y = m.points[2 * v + 1];
+    if (x != std::floor(x) || y != std::floor(y) || x < 0 || y < 0 || x >= r.width || y >= r.height)
+      continue;
+    const std::size_t pixel = static_cast<std::size_t>(y) * r.width + static_cast<std::size_t>(x);
+    bool onLine = false;
+    for (const auto& l : lines)
+      for (std::size_t k = 0; k + 3 < l.size(); k += 2)
+        onLine |= distanceToSegment(x, y, l[k], l[k + 1], l[k + 2], l[k + 3]) < 1e-9;
+    if (onLine && m.values[v] != r.heights[pixel]) exempt[pixel] = 1;
+  }
+  return exempt;
+}
+
 // Small random rasters (plateaus, steps and noise), random no-data masks and random
 // breaklines (on pixel positions, along grid lines, on the border, repeated points, leaving
-// the raster), random bounds, sometimes minAngle: always a valid mesh within the bound, every
-// pixel with data covered. (Seed 3096 once refined for ever: a breakline ending on the border
-// half a degree off it; seed 275 left a border pixel uncovered, a split an ulp off its line.)
+// the raster; half of the time with some heights given), random bounds, sometimes minAngle:
+// always a valid mesh within the bound, every pixel with data covered, but for the pixels
+// under given heights. (Seed 3096 once refined for ever: a breakline ending on the border half
+// a degree off it; seed 275 left a border pixel uncovered, a split an ulp off its line; seed
+// 48633 refined for ever at 17 degrees, until refinement's default cap held at every angle.)
 TEST(Terrain, RandomRastersBreaklinesAndHoles) {
-  for (std::uint64_t seed = 1; seed <= 4000; ++seed) {
+  std::vector<std::uint64_t> seeds(4000);
+  std::iota(seeds.begin(), seeds.end(), 1);
+  seeds.push_back(48633);
+  for (const std::uint64_t seed : seeds) {
     SCOPED_TRACE(seed);
     testing::Random random(seed);
     const auto pick = [&](int n) { return static_cast<int>(random.uniform() * n); };
@@ -536,10 +584,17 @@ TEST(Terrain, RandomRastersBreaklinesAndHoles) {
     }
     if (pick(4) == 0) o.minAngle = 15 + 10 * random.uniform();
     o.decimate = pick(3) == 0;
+    std::vector<double> lineHeights;
+    for (const auto& l : lines)
+      for (std::size_t k = 0; k < l.size(); k += 2)
+        lineHeights.push_back(pick(2) ? std::nan("") : 10 * random.uniform());
+    const bool given = pick(2) == 0;
     TerrainStats stats;
-    const Mesh m = mesh(r, o, lines, nullptr, &stats);
+    const Mesh m = mesh(r, o, lines, given ? lineHeights.data() : nullptr, &stats);
     EXPECT_EQ(testing::checkTriangulation(m, {nullptr, nullptr, true, valid.empty()}), "");
-    const testing::RasterErrors e = testing::rasterErrors(m, r.heights, r.width, r.height, valid);
+    const testing::RasterErrors e =
+        testing::rasterErrors(m, r.heights, r.width, r.height, valid,
+                              given ? underGivenHeights(m, r, lines) : std::vector<std::uint8_t>{});
     EXPECT_EQ(e.problem, "");
     EXPECT_LE(e.maxError, std::max(o.maxError, 1e-9) * (1 + 1e-12) + 1e-9);
     EXPECT_LE(stats.maxError, std::max(o.maxError, 1e-9));

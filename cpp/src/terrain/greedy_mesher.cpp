@@ -48,6 +48,7 @@ void GreedyMesher::measure(std::vector<std::int32_t> windings) {
   // Vertices on pixels are never proposed again.
   const std::uint32_t w = raster_.width(), h = raster_.height();
   if (skip_.empty()) skip_.assign(static_cast<std::size_t>(w) * h, 0);
+  if (projected_.empty()) projected_.assign(skip_.size(), 0);
   for (std::uint32_t v = skipped_; v < d_.vertexCount(); ++v) {
     const double x = d_.xy[2 * v], y = d_.xy[2 * v + 1];
     if (x == std::floor(x) && y == std::floor(y) && x >= 0 && y >= 0 && x < w && y < h)
@@ -214,12 +215,90 @@ Hit GreedyMesher::ontoConstraint(const Hit& face, double x, double y) const {
   return face;
 }
 
+// A pixel closer to a breakline than this (in pixels) has its projection onto the line go in
+// first: the pixel itself beside the line would leave a sliver, which refinement (minAngle)
+// can only mend with a cascade of ever shorter subsegments along the line, and which the
+// surface through the point on the line often makes needless (bench/EXPERIMENTS.md, TN27).
+constexpr double kBreaklineReach = 0.5;
+
+// The point of a constrained edge of face h nearest the pixel at (x, y), if the pixel lies
+// within kBreaklineReach of it and the point lies farther from the edge's ends than from the
+// pixel (else an end is as near, and the split would only make a short edge); placed on the
+// edge as ontoConstraint places points, with the line's height there.
+bool GreedyMesher::breaklinePointNear(const Hit& h, double x, double y,
+                                      BreaklinePoint& onto) const {
+  const double* xy = d_.xy.data();
+  const std::int32_t t = h.edge / 3;
+  for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e) {
+    if (!topo_.fixed[e]) continue;
+    const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
+    const double ax = xy[2 * a], ay = xy[2 * a + 1], dx = xy[2 * b] - ax, dy = xy[2 * b + 1] - ay;
+    const double length = std::hypot(dx, dy);
+    const double along = ((x - ax) * dx + (y - ay) * dy) / (length * length);
+    const double qx = ax + along * dx, qy = ay + along * dy;
+    const double away = std::hypot(x - qx, y - qy);
+    if (!(away <= kBreaklineReach && along * length > away && (1 - along) * length > away))
+      continue;
+    const Hit split = ontoConstraint(h, qx, qy);
+    if (split.kind != Hit::Kind::Edge || split.edge != e) continue;
+    // The split joins q to the face's third corner c and to the corner d beyond the edge, and
+    // only the edges facing q are tested for flips then: q must lie strictly inside both
+    // triangles' circumcircles for those joins to be Delaunay. It does when it lies on the
+    // edge, and may not when rounding puts it ulps off beside a corner ulps from the line (a
+    // breakline that doubles back on itself).
+    const std::uint32_t c = topo_.tri[prevEdge(e)], d = topo_.tri[prevEdge(topo_.adj[e])];
+    const auto inCircle = [&](std::uint32_t u, std::uint32_t v, std::uint32_t w) {
+      return incircle(xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1], xy[2 * w], xy[2 * w + 1],
+                      qx, qy) == Sign::Positive;
+    };
+    if (!inCircle(a, b, c) || !inCircle(b, a, d)) continue;
+    onto.x = qx;
+    onto.y = qy;
+    onto.z = heightOnBreakline(a, b, qx, qy, onto.given);
+    onto.edge = split;
+    return true;
+  }
+  return false;
+}
+
+// The height at (x, y) on the constrained edge a-b: interpolated along each input segment
+// through it whose ends have given heights (averaged, as at crossings), else the raster's.
+double GreedyMesher::heightOnBreakline(std::uint32_t a, std::uint32_t b, double x, double y,
+                                       bool& given) const {
+  const ConstraintStore& store = d_.constraints;
+  double sum = 0;
+  int segments = 0;
+  if (const EdgeSource* source = store.find(a, b)) {
+    store.forEachSegment(*source, [&](std::uint32_t i) {
+      const SegmentEnds& ends = store.segments[i];
+      if (!given_[ends.a] || !given_[ends.b]) return;
+      const InputSegment g = store.geometry(i, d_.xy);
+      const double dx = g.bx - g.ax, dy = g.by - g.ay;
+      const double t = ((x - g.ax) * dx + (y - g.ay) * dy) / (dx * dx + dy * dy);
+      sum += (1 - t) * z_[ends.a] + t * z_[ends.b];
+      ++segments;
+    });
+  }
+  given = segments > 0;
+  return given ? sum / segments : raster_.sample(x, y);
+}
+
+bool GreedyMesher::insertBreaklinePoint(std::size_t pixel, const BreaklinePoint& onto) {
+  projected_[pixel] = 1;
+  return insertVertex(onto.x, onto.y, onto.z, onto.given, onto.edge);
+}
+
 bool GreedyMesher::insertTriangleCandidate(std::int32_t t) {
   const auto pixel = static_cast<std::size_t>(candidate_[t]);
   const double x = static_cast<double>(pixel % raster_.width());
   const double y = static_cast<double>(pixel / raster_.width());
   Hit h = locateIn(t, x, y);
   if (h.kind == Hit::Kind::Face) h = ontoConstraint(h, x, y);
+  BreaklinePoint onto;
+  if (h.kind == Hit::Kind::Face && !projected_[pixel] && breaklinePointNear(h, x, y, onto)) {
+    triangles_ += 2;
+    return insertBreaklinePoint(pixel, onto);
+  }
   if (h.kind == Hit::Kind::Vertex) {  // a vertex not made from this pixel sits on it
     skip_[pixel] = 1;
     measureTriangle(t);
@@ -252,6 +331,12 @@ std::int32_t GreedyMesher::edgeBetween(std::uint32_t a, std::uint32_t b) const {
 }
 
 bool GreedyMesher::insertPixel(std::size_t pixel, const Hit& h) {
+  skip_[pixel] = 1;
+  return insertVertex(static_cast<double>(pixel % raster_.width()),
+                      static_cast<double>(pixel / raster_.width()), raster_.at(pixel), false, h);
+}
+
+bool GreedyMesher::insertVertex(double x, double y, double z, bool given, const Hit& h) {
   const std::uint32_t v = d_.vertexCount();
   // The edge split, for the listener: its ends, and whether it was constrained or on the hull.
   std::uint32_t a = kGhost, b = kGhost;
@@ -262,13 +347,14 @@ bool GreedyMesher::insertPixel(std::size_t pixel, const Hit& h) {
     onSubsegment =
         topo_.fixed[h.edge] || topo_.isGhost(h.edge / 3) || topo_.isGhost(topo_.adj[h.edge] / 3);
   }
-  d_.xy.push_back(static_cast<double>(pixel % raster_.width()));
-  d_.xy.push_back(static_cast<double>(pixel / raster_.width()));
-  z_.push_back(raster_.at(pixel));
-  skip_[pixel] = 1;
+  d_.xy.push_back(x);
+  d_.xy.push_back(y);
+  z_.push_back(z);
+  given_.push_back(given);
   if (d_.insertLocated(h, v) != v) {
     d_.xy.resize(d_.xy.size() - 2);
     z_.pop_back();
+    given_.pop_back();
     return false;
   }
   ++stats_.insertions;

@@ -26,14 +26,29 @@ struct MesherStats {
   std::uint64_t scannedPixels = 0;
 };
 
+// A point on a constrained edge: where, its height, and the edge's split.
+struct BreaklinePoint {
+  double x = 0, y = 0, z = 0;
+  bool given = false;
+  Hit edge;
+};
+
 class GreedyMesher {
  public:
-  // z: one height per vertex of d, kept up to date for the vertices the mesher adds.
-  // rings: whether the mesh is bounded by rings (the area with data), whose inside (by the
-  // even-odd rule) is the mesh; otherwise every real triangle is.
-  GreedyMesher(Delaunay& d, const RasterSampler& raster, std::vector<double>& z, bool rings,
-               const MesherLimits& limits)
-      : d_(d), topo_(d.topo), raster_(raster), z_(z), rings_(rings), limits_(limits) {}
+  // z: one height per vertex of d, kept up to date for the vertices the mesher adds; given:
+  // per vertex, whether its height came with a breakline (the mesher's own vertices on such a
+  // breakline interpolate along it). rings: whether the mesh is bounded by rings (the area
+  // with data), whose inside (by the even-odd rule) is the mesh; otherwise every real
+  // triangle is.
+  GreedyMesher(Delaunay& d, const RasterSampler& raster, std::vector<double>& z,
+               std::vector<std::uint8_t>& given, bool rings, const MesherLimits& limits)
+      : d_(d),
+        topo_(d.topo),
+        raster_(raster),
+        z_(z),
+        given_(given),
+        rings_(rings),
+        limits_(limits) {}
 
   // Measures every triangle and border segment of the mesh as it is now: at the start, and
   // after anything else changed it (refinement), when only the slots that hold another
@@ -73,8 +88,15 @@ class GreedyMesher {
   void addBoundary(std::uint32_t a, std::uint32_t b);
   // Inserts the pixel at (i, j) as vertex, located by h; false on a failure of the core.
   bool insertPixel(std::size_t pixel, const Hit& h);
+  // Inserts vertex (x, y) with height z (given: interpolated along given heights), located by
+  // h, and measures its star; false on a failure of the core.
+  bool insertVertex(double x, double y, double z, bool given, const Hit& h);
   Hit locateIn(std::int32_t t, double x, double y);
   Hit ontoConstraint(const Hit& face, double x, double y) const;
+  // A point of a breakline near the pixel at (x, y) in face h, where that pixel goes first.
+  bool breaklinePointNear(const Hit& h, double x, double y, BreaklinePoint& onto) const;
+  bool insertBreaklinePoint(std::size_t pixel, const BreaklinePoint& onto);
+  double heightOnBreakline(std::uint32_t a, std::uint32_t b, double x, double y, bool& given) const;
   std::int32_t edgeBetween(std::uint32_t a, std::uint32_t b) const;
   // Returns a half-edge out of v.
   std::int32_t afterInsert(std::uint32_t v);
@@ -89,6 +111,7 @@ class GreedyMesher {
   Topology& topo_;
   const RasterSampler& raster_;
   std::vector<double>& z_;
+  std::vector<std::uint8_t>& given_;
   bool rings_;
   MesherLimits limits_;
   Listener listener_;
@@ -97,6 +120,9 @@ class GreedyMesher {
   // Per pixel: 1 for vertices and the border's pixels, which no triangle proposes.
   std::vector<std::uint8_t> skip_;
   std::uint32_t skipped_ = 0;  // the vertices whose pixels skip_ has
+  // Per pixel: 1 once a point of a breakline went in for it (breaklinePointNear), so that the
+  // pixel itself goes in the next time it is the largest error.
+  std::vector<std::uint8_t> projected_;
   // Per slot: its error and candidate pixel, and (with rings) its winding number.
   std::vector<double> error_;
   std::vector<std::int64_t> candidate_;

@@ -22,7 +22,8 @@ bool cellValid(const std::vector<std::uint8_t>& valid, std::uint32_t width, std:
 }  // namespace
 
 RasterErrors rasterErrors(const Mesh& mesh, const std::vector<double>& heights, std::uint32_t width,
-                          std::uint32_t height, const std::vector<std::uint8_t>& valid) {
+                          std::uint32_t height, const std::vector<std::uint8_t>& valid,
+                          const std::vector<std::uint8_t>& exempt) {
   RasterErrors r;
   std::vector<std::uint8_t> covered(heights.size(), 0);
   const std::vector<double>& p = mesh.points;
@@ -84,7 +85,7 @@ RasterErrors rasterErrors(const Mesh& mesh, const std::vector<double>& heights, 
         }
         const std::size_t pixel = static_cast<std::size_t>(j) * width + static_cast<std::size_t>(i);
         const double e = static_cast<double>(std::fabs(value - heights[pixel]));
-        r.maxError = std::max(r.maxError, e);
+        if (exempt.empty() || !exempt[pixel]) r.maxError = std::max(r.maxError, e);
         covered[pixel] = 1;
       }
   }

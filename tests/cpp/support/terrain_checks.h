@@ -20,8 +20,10 @@ struct RasterErrors {
 
 // valid: one byte per pixel (1: data), or empty for all. With no-data pixels, the mesh must
 // cover exactly the grid cells whose four corners have data: each pixel of such a cell must be
-// in a triangle, and each triangle's centroid in such a cell.
+// in a triangle, and each triangle's centroid in such a cell. exempt: one byte per pixel (1:
+// covered, but left out of maxError), or empty for none.
 RasterErrors rasterErrors(const Mesh& mesh, const std::vector<double>& heights, std::uint32_t width,
-                          std::uint32_t height, const std::vector<std::uint8_t>& valid = {});
+                          std::uint32_t height, const std::vector<std::uint8_t>& valid = {},
+                          const std::vector<std::uint8_t>& exempt = {});
 
 }  // namespace geocdt::testing
