@@ -219,6 +219,8 @@ Hit GreedyMesher::ontoConstraint(const Hit& face, double x, double y) const {
 // first: the pixel itself beside the line would leave a sliver, which refinement (minAngle)
 // can only mend with a cascade of ever shorter subsegments along the line, and which the
 // surface through the point on the line often makes needless (bench/EXPERIMENTS.md, TN27).
+// The other constrained edges, the boundary of the area with data, run along pixel rows and
+// columns: no pixel lies that near them but on them.
 constexpr double kBreaklineReach = 0.5;
 
 // The point of a constrained edge of face h nearest the pixel at (x, y), if the pixel lies
