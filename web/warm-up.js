@@ -151,7 +151,7 @@ function polygonWarmUpBatch(next, inTileUnits) {
   };
 }
 
-// A raster of hills and a valley, width x height, with two breaklines across it (one along a
+// A raster of waves and a hill, width x height, with two breaklines across it (one along a
 // row, one diagonal, crossing each other) and a no-data hole: the terrain mesher's paths.
 function rasterWarmUp(width, height) {
   const heights = new Float64Array(width * height);
