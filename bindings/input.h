@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geocdt/triangulation.h"
+#include "heap_vectors.h"
 
 namespace geocdt::wasm {
 
@@ -32,14 +33,14 @@ class Input {
   // freed then.
   bool resize(double pointCount, double linePointCount, double lineCount, double polygonCount,
               double valueCount);
-  std::uintptr_t pointsAddress() const { return address(points); }
-  std::uintptr_t lineCoordsAddress() const { return address(lineCoords); }
-  std::uintptr_t lineOffsetsAddress() const { return address(lineOffsets); }
-  std::uintptr_t polygonOffsetsAddress() const { return address(polygonOffsets); }
-  std::uintptr_t valuesAddress() const { return address(values); }
+  std::uintptr_t pointsAddress() const { return heapAddress(points); }
+  std::uintptr_t lineCoordsAddress() const { return heapAddress(lineCoords); }
+  std::uintptr_t lineOffsetsAddress() const { return heapAddress(lineOffsets); }
+  std::uintptr_t polygonOffsetsAddress() const { return heapAddress(polygonOffsets); }
+  std::uintptr_t valuesAddress() const { return heapAddress(values); }
   // Sizes the raster's heights (after resize(), which frees them); false when memory runs out.
   bool resizeRaster(double pixels);
-  std::uintptr_t rasterAddress() const { return address(raster); }
+  std::uintptr_t rasterAddress() const { return heapAddress(raster); }
 
   // The first i where lineOffsets breaks the layout, or -1: lineOffsets[0] is 0, no offset is
   // below the one before it, and the last one is the number of points in lineCoords.
@@ -59,12 +60,6 @@ class Input {
 
   void clear();             // frees the buffers
   void clearCoordinates();  // frees the points and polylines, keeps polygons and values
-
- private:
-  template <typename T>
-  static std::uintptr_t address(const std::vector<T>& v) {
-    return reinterpret_cast<std::uintptr_t>(v.data());
-  }
 };
 
 }  // namespace geocdt::wasm

@@ -2,21 +2,13 @@
 
 #include <iterator>
 
+#include "heap_vectors.h"
+
 // A Field without its case below is an error, not a warning.
 #pragma clang diagnostic error "-Wswitch"
 
 namespace geocdt::wasm {
 namespace {
-
-template <typename T>
-std::uintptr_t address(const std::vector<T>& v) {
-  return reinterpret_cast<std::uintptr_t>(v.data());
-}
-
-template <typename T>
-void release(std::vector<T>& v) {
-  std::vector<T>().swap(v);
-}
 
 double indexOrMinusOne(std::size_t i) { return i == kNoIndex ? -1.0 : static_cast<double>(i); }
 
@@ -128,29 +120,29 @@ ElementType elementType(Field field) {
 
 std::uintptr_t Output::data(int field) const {
   switch (static_cast<Field>(field)) {
-    case Field::Points: return address(mesh.points);
-    case Field::Triangles: return address(mesh.triangles);
-    case Field::Halfedges: return address(mesh.halfedges);
-    case Field::Constrained: return address(mesh.constrained);
-    case Field::ConstraintEdges: return address(mesh.constraintEdges);
-    case Field::SourceOffsets: return address(mesh.sourceOffsets);
-    case Field::Sources: return address(mesh.sources);
-    case Field::Inside: return address(mesh.inside);
-    case Field::Regions: return address(mesh.regions);
-    case Field::Values: return address(mesh.values);
-    case Field::InputToVertex: return address(inputToVertex);
-    case Field::VertexIds: return address(vertexIds);
-    case Field::Raster: return address(raster);
-    case Field::Steiner: return address(mesh.steiner);
-    case Field::SteinerParents: return address(mesh.steinerParents);
-    case Field::SteinerWeights: return address(mesh.steinerWeights);
-    case Field::SegmentOffsets: return address(mesh.segmentOffsets);
-    case Field::SegmentSources: return address(mesh.segmentSources);
-    case Field::Coords: return address(cells.coords);
-    case Field::RingOffsets: return address(cells.ringOffsets);
-    case Field::PolygonOffsets: return address(cells.polygonOffsets);
-    case Field::SiteOffsets: return address(cells.siteOffsets);
-    case Field::Sites: return address(cells.sites);
+    case Field::Points: return heapAddress(mesh.points);
+    case Field::Triangles: return heapAddress(mesh.triangles);
+    case Field::Halfedges: return heapAddress(mesh.halfedges);
+    case Field::Constrained: return heapAddress(mesh.constrained);
+    case Field::ConstraintEdges: return heapAddress(mesh.constraintEdges);
+    case Field::SourceOffsets: return heapAddress(mesh.sourceOffsets);
+    case Field::Sources: return heapAddress(mesh.sources);
+    case Field::Inside: return heapAddress(mesh.inside);
+    case Field::Regions: return heapAddress(mesh.regions);
+    case Field::Values: return heapAddress(mesh.values);
+    case Field::InputToVertex: return heapAddress(inputToVertex);
+    case Field::VertexIds: return heapAddress(vertexIds);
+    case Field::Raster: return heapAddress(raster);
+    case Field::Steiner: return heapAddress(mesh.steiner);
+    case Field::SteinerParents: return heapAddress(mesh.steinerParents);
+    case Field::SteinerWeights: return heapAddress(mesh.steinerWeights);
+    case Field::SegmentOffsets: return heapAddress(mesh.segmentOffsets);
+    case Field::SegmentSources: return heapAddress(mesh.segmentSources);
+    case Field::Coords: return heapAddress(cells.coords);
+    case Field::RingOffsets: return heapAddress(cells.ringOffsets);
+    case Field::PolygonOffsets: return heapAddress(cells.polygonOffsets);
+    case Field::SiteOffsets: return heapAddress(cells.siteOffsets);
+    case Field::Sites: return heapAddress(cells.sites);
   }
   return 0;
 }
@@ -219,25 +211,25 @@ emscripten::val Output::voronoiStats() const {
 }
 
 void Output::clear() {
-  release(mesh.points);
-  release(mesh.triangles);
-  release(mesh.halfedges);
-  release(mesh.constrained);
-  release(mesh.constraintEdges);
-  release(mesh.sourceOffsets);
-  release(mesh.sources);
-  release(mesh.segmentOffsets);
-  release(mesh.segmentSources);
-  release(mesh.inside);
-  release(mesh.regions);
-  release(mesh.values);
-  release(mesh.derivedVertices);
-  release(mesh.derivedOffsets);
-  release(mesh.derivedParents);
-  release(mesh.derivedWeights);
-  release(raster);
-  release(inputToVertex);
-  release(vertexIds);
+  freeVector(mesh.points);
+  freeVector(mesh.triangles);
+  freeVector(mesh.halfedges);
+  freeVector(mesh.constrained);
+  freeVector(mesh.constraintEdges);
+  freeVector(mesh.sourceOffsets);
+  freeVector(mesh.sources);
+  freeVector(mesh.segmentOffsets);
+  freeVector(mesh.segmentSources);
+  freeVector(mesh.inside);
+  freeVector(mesh.regions);
+  freeVector(mesh.values);
+  freeVector(mesh.derivedVertices);
+  freeVector(mesh.derivedOffsets);
+  freeVector(mesh.derivedParents);
+  freeVector(mesh.derivedWeights);
+  freeVector(raster);
+  freeVector(inputToVertex);
+  freeVector(vertexIds);
   cells = VoronoiCells();
   status = Status::success();
   stats = Stats{};

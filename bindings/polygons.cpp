@@ -1,21 +1,12 @@
 #include "polygons.h"
 
 #include "heap_reserve.h"
+#include "heap_vectors.h"
 #include "out_of_memory.h"
 
 namespace geocdt::wasm {
 
 namespace {
-
-template <typename T>
-std::uint32_t address(const std::vector<T>& v) {
-  return static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(v.data()));
-}
-
-template <typename T>
-void freeVector(std::vector<T>& v) {
-  std::vector<T>().swap(v);
-}
 
 // What a batch needs at its peak, by input point beyond its coordinates: the triangles (about
 // one a point, 12 bytes) and the offsets; the scratch of the small path is a few pages.
@@ -37,9 +28,9 @@ bool PolygonCall::prepare(double coordValues, double rings, double polygons) {
       },
       [&] { release(); });
   if (!s.ok()) return false;
-  header_[Coords] = address(coords_);
-  header_[RingOffsets] = address(rings_);
-  header_[PolygonOffsets] = address(polygons_);
+  header_[Coords] = heapAddress(coords_);
+  header_[RingOffsets] = heapAddress(rings_);
+  header_[PolygonOffsets] = heapAddress(polygons_);
   return true;
 }
 
@@ -66,11 +57,11 @@ bool PolygonCall::run(std::uint32_t dim, FillRule fill, std::uint32_t threads) {
   freeVector(coords_);
   freeVector(rings_);
   freeVector(polygons_);
-  header_[Triangles] = address(out_.triangles);
+  header_[Triangles] = heapAddress(out_.triangles);
   header_[TriangleCount] = static_cast<std::uint32_t>(out_.triangles.size());
-  header_[ExtraPoints] = address(out_.extraPoints);
+  header_[ExtraPoints] = heapAddress(out_.extraPoints);
   header_[ExtraCount] = static_cast<std::uint32_t>(out_.extraPoints.size());
-  header_[TriangleOffsets] = address(out_.triangleOffsets);
+  header_[TriangleOffsets] = heapAddress(out_.triangleOffsets);
   header_[OffsetCount] = static_cast<std::uint32_t>(out_.triangleOffsets.size());
   return status_.ok();
 }

@@ -23,7 +23,7 @@ namespace {
 
 using State = Triangulation::State;
 
-Status invalid(const std::string& message, std::size_t index) {
+Status invalidEdit(const std::string& message, std::size_t index) {
   return {StatusCode::InvalidArgument, message, index};
 }
 
@@ -39,11 +39,11 @@ std::string describe(const EditState& edit, std::uint32_t v) {
 // A vertex id that names a vertex now, or the reason it does not.
 Status checkId(const Delaunay& d, std::uint32_t id, const char* call) {
   if (id >= d.vertexCount())
-    return invalid(std::string(call) + ": no vertex has id " + std::to_string(id) +
-                       " (ids given so far run below " + std::to_string(d.vertexCount()) + ")",
-                   id);
+    return invalidEdit(std::string(call) + ": no vertex has id " + std::to_string(id) +
+                           " (ids given so far run below " + std::to_string(d.vertexCount()) + ")",
+                       id);
   if (d.isRemoved(id))
-    return invalid(std::string(call) + ": vertex " + std::to_string(id) + " was removed", id);
+    return invalidEdit(std::string(call) + ": vertex " + std::to_string(id) + " was removed", id);
   return Status::success();
 }
 
@@ -455,10 +455,10 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
   EditState& edit = state.edit;
   if (const Status s = checkId(d, id, "removePoint"); !s.ok()) return s;
   if (!(edit.kind(id) & kPointVertex))
-    return invalid("removePoint: vertex " + std::to_string(id) +
-                       " is not a point inserted with insertPoints (it is " + describe(edit, id) +
-                       ")",
-                   id);
+    return invalidEdit("removePoint: vertex " + std::to_string(id) +
+                           " is not a point inserted with insertPoints (it is " +
+                           describe(edit, id) + ")",
+                       id);
   if (removed) *removed = false;
   return catchOutOfMemory(
       [&] {
@@ -494,12 +494,12 @@ Status Triangulation::removePolyline(std::size_t polyline) {
   EditState& edit = state.edit;
   ConstraintStore& store = d.constraints;
   if (polyline >= polylineCount())
-    return invalid("removePolyline: no polyline " + std::to_string(polyline) + " (" +
-                       std::to_string(polylineCount()) + " inserted so far)",
-                   polyline);
+    return invalidEdit("removePolyline: no polyline " + std::to_string(polyline) + " (" +
+                           std::to_string(polylineCount()) + " inserted so far)",
+                       polyline);
   if (!hasPolyline(polyline))
-    return invalid("removePolyline: polyline " + std::to_string(polyline) + " was removed",
-                   polyline);
+    return invalidEdit("removePolyline: polyline " + std::to_string(polyline) + " was removed",
+                       polyline);
   const std::uint32_t first = store.firstSegment[polyline];
   const auto end = static_cast<std::uint32_t>(polyline + 1 < store.firstSegment.size()
                                                   ? store.firstSegment[polyline + 1]
@@ -539,9 +539,9 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
   EditState& edit = state.edit;
   if (const Status s = checkId(d, id, "movePoint"); !s.ok()) return s;
   if (!(edit.kind(id) & (kPointVertex | kPolylineVertex)))
-    return invalid("movePoint: vertex " + std::to_string(id) + " is " + describe(edit, id) +
-                       ", which moves only with what it was made from",
-                   id);
+    return invalidEdit("movePoint: vertex " + std::to_string(id) + " is " + describe(edit, id) +
+                           ", which moves only with what it was made from",
+                       id);
   if (!std::isfinite(x) || !std::isfinite(y) || std::fabs(x) > kMaxCoordinate ||
       std::fabs(y) > kMaxCoordinate) {
     const bool badY = std::isfinite(x) && std::fabs(x) <= kMaxCoordinate;
@@ -586,10 +586,10 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
         there = v;
   }
   if (there != kGhost && (edit.kind(there) & (kPointVertex | kPolylineVertex)))
-    return invalid("movePoint: the new place of vertex " + std::to_string(id) +
-                       " is that of vertex " + std::to_string(there) + " (" +
-                       describe(edit, there) + ")",
-                   id);
+    return invalidEdit("movePoint: the new place of vertex " + std::to_string(id) +
+                           " is that of vertex " + std::to_string(there) + " (" +
+                           describe(edit, there) + ")",
+                       id);
   return catchOutOfMemory([&] { return moveVertex(state, id, x, y, there, near); },
                           [&] { state.clear(); });
 }

@@ -24,25 +24,25 @@ namespace {
 
 using terrain::RasterSampler;
 
-Status invalid(std::string message, std::size_t index = kNoIndex) {
+Status invalidRaster(std::string message, std::size_t index = kNoIndex) {
   return {StatusCode::InvalidArgument, std::move(message), index};
 }
 
 Status checkOptions(const RasterView& raster, const TerrainOptions& o) {
   if (raster.width == 0 || raster.height == 0)
-    return invalid("the raster must have at least one pixel (width and height from 1 up)");
-  if (raster.heights == nullptr) return invalid("raster: null heights");
+    return invalidRaster("the raster must have at least one pixel (width and height from 1 up)");
+  if (raster.heights == nullptr) return invalidRaster("raster: null heights");
   if (static_cast<std::uint64_t>(raster.width) * raster.height >= (std::uint64_t{1} << 31))
-    return invalid("the raster must have fewer than 2^31 pixels");
+    return invalidRaster("the raster must have fewer than 2^31 pixels");
   if (!(o.maxError >= 0) || std::isinf(o.maxError))
-    return invalid("maxError must be a finite number from 0 up");
+    return invalidRaster("maxError must be a finite number from 0 up");
   if (!(o.minAngle >= 0 && o.minAngle < 60))
-    return invalid("minAngle must be a number of degrees from 0 to less than 60");
+    return invalidRaster("minAngle must be a number of degrees from 0 to less than 60");
   if (o.hasBbox && !(std::isfinite(o.minX) && std::isfinite(o.maxX) && std::isfinite(o.minY) &&
                      std::isfinite(o.maxY) && o.minX < o.maxX && o.minY < o.maxY &&
                      std::fabs(o.minX) <= kMaxCoordinate && std::fabs(o.maxX) <= kMaxCoordinate &&
                      std::fabs(o.minY) <= kMaxCoordinate && std::fabs(o.maxY) <= kMaxCoordinate))
-    return invalid(
+    return invalidRaster(
         "bbox must be finite numbers [minX, minY, maxX, maxY] with minX < maxX and "
         "minY < maxY");
   return Status::success();
@@ -77,12 +77,12 @@ Status validPixels(const RasterView& raster, const TerrainOptions& o,
 }
 
 Status checkBreaklines(const PolylineView* lines, std::size_t count, const double* heights) {
-  if (count > 0 && lines == nullptr) return invalid("null breaklines with a count");
+  if (count > 0 && lines == nullptr) return invalidRaster("null breaklines with a count");
   std::size_t at = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const PolylineView& line = lines[i];
     if (line.count > 0 && line.xy == nullptr)
-      return invalid("breakline " + std::to_string(i) + ": null coordinates with a count", i);
+      return invalidRaster("breakline " + std::to_string(i) + ": null coordinates with a count", i);
     for (std::size_t k = 0; k < 2 * line.count; ++k) {
       const double v = line.xy[k];
       if (std::isfinite(v) && std::fabs(v) <= kMaxCoordinate) continue;
@@ -98,9 +98,9 @@ Status checkBreaklines(const PolylineView* lines, std::size_t count, const doubl
     }
     for (std::size_t k = 0; heights && k < line.count; ++k)
       if (std::isinf(heights[at + k]))
-        return invalid("breakline " + std::to_string(i) + " point " + std::to_string(k) +
-                           ": its height is infinite (NaN reads it from the raster)",
-                       i);
+        return invalidRaster("breakline " + std::to_string(i) + " point " + std::to_string(k) +
+                                 ": its height is infinite (NaN reads it from the raster)",
+                             i);
     at += line.count;
   }
   return Status::success();

@@ -9,13 +9,14 @@
 #include "delaunay/first_triangle.h"
 #include "delaunay/insertion_order.h"
 #include "delaunay/vertex_edges.h"
+#include "exact/orient_by_index.h"
 #include "geocdt/predicates.h"
 
 namespace geocdt {
 
 bool Delaunay::build(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   const double* p = xy.data();
-  const Sign o = orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1]);
+  const Sign o = orientByIndex(p, a, b, c);
   if (o == Sign::Zero) return false;
   if (o == Sign::Negative) std::swap(b, c);
   const std::int32_t t = addSlots(4), g0 = t + 1, g1 = t + 2, g2 = t + 3;

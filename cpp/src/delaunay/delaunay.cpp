@@ -6,18 +6,10 @@
 #include <array>
 #include <utility>
 
+#include "exact/orient_by_index.h"
 #include "geocdt/predicates.h"
 
 namespace geocdt {
-
-namespace {
-
-inline bool ccw(const double* p, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  return orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1]) ==
-         Sign::Positive;
-}
-
-}  // namespace
 
 Delaunay& Delaunay::operator=(Delaunay&& other) noexcept {
   xy = std::move(other.xy);
@@ -301,7 +293,7 @@ void Delaunay::legalizeAround(std::uint32_t p) {
     } else {
       // (a, b, p) is a ghost triangle: flip when p lies beyond the real edge of the ghost
       // triangle (b, a, d), which then is no longer on the hull.
-      flip = a == kGhost ? ccw(q, d, b, p) : ccw(q, a, d, p);
+      flip = a == kGhost ? counterClockwise(q, d, b, p) : counterClockwise(q, a, d, p);
     }
     if (!flip) continue;
     const std::int32_t twinAD = adj[fn], twinDB = adj[fp], twinBP = adj[e + 1];
@@ -345,7 +337,7 @@ bool Delaunay::isLocallyDelaunay(std::int32_t e) const {
     if (v == kGhost) return true;  // both sides ghost-facing: the hull rule is checked from d
     // The neighbour (y, x, d) is a ghost triangle: v must not lie beyond its real edge.
     const std::int32_t r = d == kGhost ? f : (x == kGhost ? prevEdge(f) : nextEdge(f));
-    return !ccw(xy.data(), topo.tri[r], topo.tri[nextEdge(r)], v);
+    return !counterClockwise(xy.data(), topo.tri[r], topo.tri[nextEdge(r)], v);
   }
   const double* p = xy.data();
   return incircle(p[2 * y], p[2 * y + 1], p[2 * x], p[2 * x + 1], p[2 * d], p[2 * d + 1], p[2 * v],

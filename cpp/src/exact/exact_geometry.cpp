@@ -40,7 +40,7 @@ int baseOf(std::initializer_list<double> values, int lowest = 1 << 20) {
   return lowest;
 }
 
-Number fixed(double v, int base) {
+Number inUnits(double v, int base) {
   Number r;
   detail::set_double(r, v, base);
   return r;
@@ -75,7 +75,7 @@ Number product(const Number& a, const Number& b) {
 }
 
 Number difference(double a, double b, int base) {
-  return sum(fixed(a, base), fixed(b, base), true);
+  return sum(inUnits(a, base), inUnits(b, base), true);
 }
 
 template <int A, int B>
@@ -176,14 +176,14 @@ class CrossingCoordinate {
     // X = a + d * num / den along the axis.
     Number den = sum(product(dx, fy), product(dy, fx), true);
     const Number num = sum(product(gx, fy), product(gy, fx), true);
-    const Number a = fixed(axis_ == 0 ? s.ax : s.ay, base);
+    const Number a = inUnits(axis_ == 0 ? s.ax : s.ay, base);
     Number scaled = sum(product(a, den), product(axis_ == 0 ? dx : dy, num));
     if (detail::sign(den) < 0) {
       negate(den);
       negate(scaled);
     }
     const Number twice = sum(scaled, scaled);
-    const Number midpoint = product(sum(fixed(c, base), fixed(n, base)), den);
+    const Number midpoint = product(sum(inUnits(c, base), inUnits(n, base)), den);
     return compare(twice, midpoint);
   }
 
@@ -256,8 +256,8 @@ bool estimateCrossing(const InputSegment& s, const InputSegment& t, double& x, d
   const Number den = sum(product(dx, fy), product(dy, fx), true);
   if (detail::sign(den) == 0) return false;
   const Number num = sum(product(ox, fy), product(oy, fx), true);
-  const Number nx = sum(product(fixed(s.ax, base), den), product(dx, num));
-  const Number ny = sum(product(fixed(s.ay, base), den), product(dy, num));
+  const Number nx = sum(product(inUnits(s.ax, base), den), product(dx, num));
+  const Number ny = sum(product(inUnits(s.ay, base), den), product(dy, num));
   // Units: den counts 2^(2 base), nx and ny 2^(3 base). Only a guess, rounded to double
   // from about 100 bits: roundCoordinate's steps from it find the one double whose interval
   // holds the crossing, whatever the guess.
@@ -392,9 +392,9 @@ bool segmentMeetsCell(const InputSegment& s, double x, double y) {
   if (d - error > far) return false;
 
   const int base = std::min({baseOf({s.ax, s.ay, s.bx, s.by, x, y}), xl, xh, yl, yh});
-  const Number ax = fixed(s.ax, base), ay = fixed(s.ay, base);
+  const Number ax = inUnits(s.ax, base), ay = inUnits(s.ay, base);
   const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
-  const Number px = fixed(x, base), py = fixed(y, base);
+  const Number px = inUnits(x, base), py = inUnits(y, base);
   // a + t d lies in [lo, hi) on each axis, for t in [0, 1].
   Bound lower{integer(0), integer(1), false}, upper{integer(1), integer(1), false};
   const auto tighten = [&](const Number& a, const Number& d, const Number& p, int l, int h) {

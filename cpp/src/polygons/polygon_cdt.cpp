@@ -5,6 +5,7 @@
 
 #include "delaunay/first_triangle.h"
 #include "delaunay/insertion_order.h"
+#include "exact/orient_by_index.h"
 #include "exact/small_integer_predicates.h"
 #include "geocdt/predicates.h"
 #include "labels/slot_windings.h"
@@ -12,14 +13,6 @@
 namespace geocdt {
 
 namespace {
-
-inline Sign orient(const double* p, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  return orient2d(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1]);
-}
-
-inline bool ccw(const double* p, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  return orient(p, a, b, c) == Sign::Positive;
-}
 
 constexpr std::int32_t kUnseen = std::numeric_limits<std::int32_t>::min();
 
@@ -68,7 +61,7 @@ bool PolygonCdt::insertPoints() {
   flipBudget_ = 16 * static_cast<std::uint64_t>(n_) + 64;
 
   std::uint32_t a = at(0), b = at(i1), c = at(i2);
-  if (orient(p_, a, b, c) == Sign::Negative) std::swap(b, c);
+  if (orientByIndex(p_, a, b, c) == Sign::Negative) std::swap(b, c);
   // The first triangle and its three ghosts, as Delaunay::build lays them out.
   topo_.setTriangle(0, a, b, c);
   topo_.setTriangle(1, b, a, kGhost);
@@ -286,7 +279,7 @@ void PolygonCdt::legalize(std::uint32_t p) {
     } else if (d == kGhost) {
       flip = false;
     } else {
-      flip = a == kGhost ? ccw(q, d, b, p) : ccw(q, a, d, p);
+      flip = a == kGhost ? counterClockwise(q, d, b, p) : counterClockwise(q, a, d, p);
     }
     if (!flip) continue;
     const std::int32_t fn = s + kNext[f - s];  // (only now: fewer live registers above)
@@ -435,7 +428,7 @@ bool PolygonCdt::flipIn(std::uint32_t u, std::uint32_t v) {
     if (h < 0) return false;
     const std::int32_t f = topo_.adj[h];
     const std::uint32_t x = q.u, y = q.v, a = topo_.tri[prevEdge(h)], d = topo_.tri[prevEdge(f)];
-    if (!ccw(p, a, x, d) || !ccw(p, d, y, a)) {
+    if (!counterClockwise(p, a, x, d) || !counterClockwise(p, d, y, a)) {
       queue_.push_back(q);
       continue;
     }
@@ -444,7 +437,7 @@ bool PolygonCdt::flipIn(std::uint32_t u, std::uint32_t v) {
     touched_.push_back(f / 3);
     // The new diagonal a-d (now prevEdge(h)) crosses u -> v when a and d lie strictly apart.
     if (a != u && a != v && d != u && d != v) {
-      const Sign sa = orient(p, u, v, a), sd = orient(p, u, v, d);
+      const Sign sa = orientByIndex(p, u, v, a), sd = orientByIndex(p, u, v, d);
       if (sa != Sign::Zero && sd != Sign::Zero && sa != sd) queue_.push_back({a, d, prevEdge(h)});
     }
   }
@@ -464,7 +457,7 @@ bool PolygonCdt::isLocallyDelaunay(std::int32_t e) const {
   if (v == kGhost || d == kGhost || x == kGhost || y == kGhost) {
     if (v == kGhost) return true;
     const std::int32_t r = d == kGhost ? f : (x == kGhost ? prevEdge(f) : nextEdge(f));
-    return !ccw(p_, tri[r], tri[nextEdge(r)], v);
+    return !counterClockwise(p_, tri[r], tri[nextEdge(r)], v);
   }
   const double* p = p_;
   return incircle(p[2 * y], p[2 * y + 1], p[2 * x], p[2 * x + 1], p[2 * d], p[2 * d + 1], p[2 * v],

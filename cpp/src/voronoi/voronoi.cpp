@@ -21,15 +21,15 @@
 namespace geocdt {
 namespace {
 
-Status invalid(const std::string& message) {
+Status invalidSites(const std::string& message) {
   return {StatusCode::InvalidArgument, "voronoi: " + message};
 }
 
 Status checkInput(const double* xy, std::size_t count, std::size_t ringCount,
                   const VoronoiOptions& options) {
-  if (count == 0) return invalid("no sites");
-  if (xy == nullptr) return invalid("null sites with a count");
-  if (count >= kGhost - 8) return invalid("too many sites: at most 4294967287");
+  if (count == 0) return invalidSites("no sites");
+  if (xy == nullptr) return invalidSites("null sites with a count");
+  if (count >= kGhost - 8) return invalidSites("too many sites: at most 4294967287");
   const std::size_t bad = firstInvalidCoordinate(xy, 0, 2 * count);
   if (bad < 2 * count)
     return {StatusCode::InvalidCoordinate,
@@ -39,13 +39,13 @@ Status checkInput(const double* xy, std::size_t count, std::size_t ringCount,
   if (options.clip == VoronoiClip::Box) {
     const double* b = options.box;
     if (firstInvalidCoordinate(b, 0, 4) < 4)
-      return invalid("the box's coordinates must be finite numbers within 1e150");
+      return invalidSites("the box's coordinates must be finite numbers within 1e150");
     if (!(b[0] < b[2]) || !(b[1] < b[3]))
-      return invalid("the box must have xmin < xmax and ymin < ymax");
+      return invalidSites("the box must have xmin < xmax and ymin < ymax");
   }
   if (options.clip == VoronoiClip::Rings && ringCount == 0)
-    return invalid("clipping to rings needs rings");
-  if (!(options.lloydTolerance >= 0)) return invalid("lloydTolerance must be 0 or more");
+    return invalidSites("clipping to rings needs rings");
+  if (!(options.lloydTolerance >= 0)) return invalidSites("lloydTolerance must be 0 or more");
   return Status::success();
 }
 
