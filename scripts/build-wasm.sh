@@ -53,9 +53,10 @@ if command -v flock >/dev/null 2>&1; then
   flock 9
 fi
 
-emcmake cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+emcmake cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGEOCDT_UNITY_BUILD=ON \
+  >/dev/null
 cmake --build "$build" -j2 --target geocdt_wasm
-emcmake cmake -S "$root" -B "$threads_build" -DCMAKE_BUILD_TYPE=Release \
+emcmake cmake -S "$root" -B "$threads_build" -DCMAKE_BUILD_TYPE=Release -DGEOCDT_UNITY_BUILD=ON \
   -DGEOCDT_WASM_THREADS=ON >/dev/null
 # (Emscripten warns that growing shared memory slows JS access to it: the binding reads the
 # heap once per output array.)

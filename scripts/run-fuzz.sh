@@ -68,7 +68,8 @@ if [ "$step" != run ]; then
   fi
 
   CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DGEOCDT_BUILD_FUZZ=ON -DGEOCDT_BUILD_TESTS=OFF -DGEOCDT_BUILD_BENCH=OFF >/dev/null
+    -DGEOCDT_BUILD_FUZZ=ON -DGEOCDT_BUILD_TESTS=OFF -DGEOCDT_BUILD_BENCH=OFF \
+    -DGEOCDT_UNITY_BUILD=ON >/dev/null
   cmake --build "$build" -j2 --target $targets
 fi
 [ "$step" = build ] && exit 0

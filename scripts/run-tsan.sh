@@ -17,7 +17,7 @@ esac
 if [ "$step" != run ]; then
   CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS=-fsanitize=thread -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=thread \
-    -DGEOCDT_BUILD_BENCH=OFF >/dev/null
+    -DGEOCDT_BUILD_BENCH=OFF -DGEOCDT_UNITY_BUILD=ON >/dev/null
   cmake --build "$build" -j2 --target threads_test
 fi
 [ "$step" = build ] && exit 0

@@ -9,7 +9,7 @@ set -eu
 cd "$(dirname "$0")/.."
 sh scripts/ensure-deps.sh cpp
 jobs=$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 2)
-cmake -S . -B build -DGEOCDT_BUILD_TESTS=ON -DGEOCDT_REQUIRE_ALL_TESTS=ON
+cmake -S . -B build -DGEOCDT_BUILD_TESTS=ON -DGEOCDT_REQUIRE_ALL_TESTS=ON -DGEOCDT_UNITY_BUILD=ON
 cmake --build build -j "$jobs"
 cd build
 ctest --output-on-failure -j "$jobs" "$@"
