@@ -12,10 +12,13 @@ before(() => init());
 const worker = createWorker();
 after(() => worker.terminate());
 
+// Short segments in a 1000-wide square: a few crossings, a constraints phase of its own.
 function segments(n, seed) {
   const rnd = random(seed);
-  return Array.from({ length: n }, () => [rnd() * 1000, rnd() * 1000, rnd() * 1000,
-    rnd() * 1000]);
+  return Array.from({ length: n }, () => {
+    const x = rnd() * 980, y = rnd() * 980;
+    return [x, y, x + rnd() * 20, y + rnd() * 20];
+  });
 }
 
 // Records each report with the time it arrived.
