@@ -283,14 +283,6 @@ TEST(Terrain, NoDataEverywhereGivesNothing) {
   EXPECT_TRUE(m.points.empty());
 }
 
-// The distance from (x, y) to the segment from (ax, ay) to (bx, by).
-double distanceToSegment(double x, double y, double ax, double ay, double bx, double by) {
-  const double dx = bx - ax, dy = by - ay, squared = dx * dx + dy * dy;
-  const double t =
-      squared > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / squared, 0.0, 1.0) : 0.0;
-  return std::hypot(x - ax - t * dx, y - ay - t * dy);
-}
-
 // The vertex at (x, y), which must exist.
 std::uint32_t vertexAt(const Mesh& m, double x, double y) {
   for (std::size_t v = 0; v < m.points.size() / 2; ++v)
@@ -347,8 +339,8 @@ TEST(Terrain, BreaklinesCrossEachOtherAndTheRastersEdges) {
     bool crossing = false;
     for (std::size_t l = 0; l < 3; ++l)
       for (std::size_t k = 0; k + 3 < inside[l].size(); k += 2)
-        crossing |= distanceToSegment(x, y, inside[l][k], inside[l][k + 1], inside[l][k + 2],
-                                      inside[l][k + 3]) < 1e-9;
+        crossing |= testing::distanceToSegment(x, y, inside[l][k], inside[l][k + 1],
+                                               inside[l][k + 2], inside[l][k + 3]) < 1e-9;
     ++(crossing ? crossings : beside);
   }
   EXPECT_EQ(crossings, 4u);
@@ -514,26 +506,6 @@ TEST(Terrain, MinAngleRefinesAndKeepsTheBound) {
   EXPECT_GE(worst, 20.0 - 1e-9);
 }
 
-// The pixels under vertices of m that lie on one of the lines and whose height is not the
-// pixel's: a breakline point with a given height on a pixel position, or a point interpolated
-// along such a line. The surface there is the line's, and maxError cannot hold.
-std::vector<std::uint8_t> underGivenHeights(const Mesh& m, const RasterFile& r,
-                                            const std::vector<std::vector<double>>& lines) {
-  std::vector<std::uint8_t> exempt(r.heights.size(), 0);
-  for (std::size_t v = 0; v < m.points.size() / 2; ++v) {
-    const double x = m.points[2 * v], y = m.points[2 * v + 1];
-    if (x != std::floor(x) || y != std::floor(y) || x < 0 || y < 0 || x >= r.width || y >= r.height)
-      continue;
-    const std::size_t pixel = static_cast<std::size_t>(y) * r.width + static_cast<std::size_t>(x);
-    bool onLine = false;
-    for (const auto& l : lines)
-      for (std::size_t k = 0; k + 3 < l.size(); k += 2)
-        onLine |= distanceToSegment(x, y, l[k], l[k + 1], l[k + 2], l[k + 3]) < 1e-9;
-    if (onLine && m.values[v] != r.heights[pixel]) exempt[pixel] = 1;
-  }
-  return exempt;
-}
-
 // Small random rasters (plateaus, steps and noise), random no-data masks and random
 // breaklines (on pixel positions, along grid lines, on the border, repeated points, leaving
 // the raster; half of the time with some heights given), random bounds, sometimes minAngle:
@@ -592,9 +564,10 @@ TEST(Terrain, RandomRastersBreaklinesAndHoles) {
     TerrainStats stats;
     const Mesh m = mesh(r, o, lines, given ? lineHeights.data() : nullptr, &stats);
     EXPECT_EQ(testing::checkTriangulation(m, {nullptr, nullptr, true, valid.empty()}), "");
-    const testing::RasterErrors e =
-        testing::rasterErrors(m, r.heights, r.width, r.height, valid,
-                              given ? underGivenHeights(m, r, lines) : std::vector<std::uint8_t>{});
+    const testing::RasterErrors e = testing::rasterErrors(
+        m, r.heights, r.width, r.height, valid,
+        given ? testing::underGivenHeights(m, r.heights, r.width, r.height, lines)
+              : std::vector<std::uint8_t>{});
     EXPECT_EQ(e.problem, "");
     EXPECT_LE(e.maxError, std::max(o.maxError, 1e-9) * (1 + 1e-12) + 1e-9);
     EXPECT_LE(stats.maxError, std::max(o.maxError, 1e-9));

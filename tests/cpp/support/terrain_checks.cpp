@@ -108,4 +108,29 @@ RasterErrors rasterErrors(const Mesh& mesh, const std::vector<double>& heights, 
   return r;
 }
 
+double distanceToSegment(double x, double y, double ax, double ay, double bx, double by) {
+  const double dx = bx - ax, dy = by - ay, squared = dx * dx + dy * dy;
+  const double t =
+      squared > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / squared, 0.0, 1.0) : 0.0;
+  return std::hypot(x - ax - t * dx, y - ay - t * dy);
+}
+
+std::vector<std::uint8_t> underGivenHeights(const Mesh& mesh, const std::vector<double>& heights,
+                                            std::uint32_t width, std::uint32_t height,
+                                            const std::vector<std::vector<double>>& lines) {
+  std::vector<std::uint8_t> exempt(heights.size(), 0);
+  for (std::size_t v = 0; v < mesh.points.size() / 2; ++v) {
+    const double x = mesh.points[2 * v], y = mesh.points[2 * v + 1];
+    if (x != std::floor(x) || y != std::floor(y) || x < 0 || y < 0 || x >= width || y >= height)
+      continue;
+    const std::size_t pixel = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
+    bool onLine = false;
+    for (const auto& l : lines)
+      for (std::size_t k = 0; k + 3 < l.size(); k += 2)
+        onLine |= distanceToSegment(x, y, l[k], l[k + 1], l[k + 2], l[k + 3]) < 1e-9;
+    if (onLine && mesh.values[v] != heights[pixel]) exempt[pixel] = 1;
+  }
+  return exempt;
+}
+
 }  // namespace geocdt::testing

@@ -26,4 +26,15 @@ RasterErrors rasterErrors(const Mesh& mesh, const std::vector<double>& heights, 
                           std::uint32_t height, const std::vector<std::uint8_t>& valid = {},
                           const std::vector<std::uint8_t>& exempt = {});
 
+// The distance from (x, y) to the segment from (ax, ay) to (bx, by), in floating point.
+double distanceToSegment(double x, double y, double ax, double ay, double bx, double by);
+
+// The pixels under vertices of the mesh that lie on one of the lines (x, y pairs) and whose
+// height is not the pixel's: a breakline point with a given height on a pixel position, or a
+// point interpolated along such a line. The surface there is the line's, and maxError cannot
+// hold: rasterErrors' exempt mask.
+std::vector<std::uint8_t> underGivenHeights(const Mesh& mesh, const std::vector<double>& heights,
+                                            std::uint32_t width, std::uint32_t height,
+                                            const std::vector<std::vector<double>>& lines);
+
 }  // namespace geocdt::testing
