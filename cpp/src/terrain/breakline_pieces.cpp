@@ -90,8 +90,9 @@ class Cutter {
     out_.original.push_back(original ? original[1] : kNaN);
   }
 
-  // Ends the open piece: one point alone is dropped, and a closed one is cut before its last
-  // segment (a ring would bound an area).
+  // Ends the open piece: one point alone is dropped, and a closed one is cut in two at its
+  // last point away from its ends (a ring would bound an area: the mesh would leave out what
+  // it holds where there is no data elsewhere).
   void close() {
     if (!open_) return;
     open_ = false;
@@ -108,14 +109,20 @@ class Cutter {
       out_.offsets.push_back(end);
       return;
     }
-    // Points first .. end - 2, then end - 2 .. end - 1: point end - 2 repeated at end - 1.
-    const std::uint32_t k = end - 2;
+    // Points first .. k, then k .. end - 1, k repeated: neither part closed. (Before the last
+    // segment would not do: a ring may end with its first point repeated.)
+    std::uint32_t k = end - 2;
+    while (k > first && xy[2 * k] == xy[2 * first] && xy[2 * k + 1] == xy[2 * first + 1]) --k;
+    if (k == first) {  // every point the same: no segment to constrain
+      out_.offsets.push_back(end);
+      return;
+    }
     out_.xy.insert(out_.xy.begin() + 2 * (k + 1), {out_.xy[2 * k], out_.xy[2 * k + 1]});
     out_.original.insert(out_.original.begin() + 2 * (k + 1),
                          {out_.original[2 * k], out_.original[2 * k + 1]});
     out_.z.insert(out_.z.begin() + (k + 1), out_.z[k]);
     out_.given.insert(out_.given.begin() + (k + 1), out_.given[k]);
-    out_.offsets.push_back(end - 1);
+    out_.offsets.push_back(k + 1);
     out_.offsets.push_back(end + 1);
     out_.breakline.push_back(out_.breakline.back());
   }
