@@ -3,7 +3,8 @@
 // mesh must be valid (constrained Delaunay, counter-clockwise, no gap), cover exactly the
 // grid cells with data, and, without limits, hold every pixel within maxError (checked over
 // every pixel by terrain_checks, independently of the mesher) but for those under given
-// breakline heights.
+// breakline heights. Cut into two tiles sharing a column, where the documented conditions
+// hold, both tiles must have the same vertices and heights on it.
 //
 // Input: byte 0 = width (1 + low 5 bits), byte 1 = height (likewise), byte 2 = options (bits
 // 0-1: how bytes become heights, bit 2: no data, bit 3: decimate, bit 4: minAngle, bit 5:
@@ -13,6 +14,7 @@
 // length byte (2 + low 2 bits points; bit 2: on pixel positions, bit 3: the last point
 // repeated) and two bytes a point, then with given heights a byte a point (255: none).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -122,7 +124,42 @@ void print(const Input& input) {
   }
 }
 
+// The vertices of m on column x, with their heights, in order.
+std::vector<std::array<double, 2>> onColumn(const Mesh& m, double x) {
+  std::vector<std::array<double, 2>> out;
+  for (std::size_t v = 0; v < m.points.size() / 2; ++v)
+    if (m.points[2 * v] == x) out.push_back({m.points[2 * v + 1], m.values[v]});
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Under the documented conditions (web/API.md, "Tiles that match along their borders": the
+// same maxError, no limits, no minAngle, data next to the border; here no breaklines
+// either), the raster cut into two tiles that share column c: both must have the same
+// vertices and heights on it as each other.
+void tilesMatch(const Input& input) {
+  const TerrainOptions& o = input.options;
+  if (input.width < 3 || !input.lines.empty() || o.maxTriangles > 0 || o.maxVertices > 0 ||
+      o.minAngle > 0 || o.hasNoData)
+    return;
+  const std::uint32_t c = input.width / 2;
+  Mesh tile[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::uint32_t from = k == 0 ? 0 : c, width = k == 0 ? c + 1 : input.width - c;
+    std::vector<double> heights;
+    for (std::uint32_t j = 0; j < input.height; ++j)
+      for (std::uint32_t i = 0; i < width; ++i)
+        heights.push_back(input.heights[j * input.width + from + i]);
+    const Status s =
+        triangulateRaster({heights.data(), width, input.height}, nullptr, 0, nullptr, o, tile[k]);
+    if (!s.ok()) fail("a tile: triangulateRaster returned an error: " + s.message);
+  }
+  if (onColumn(tile[0], c) != onColumn(tile[1], 0))
+    fail("two tiles sharing column " + std::to_string(c) + " have different vertices on it");
+}
+
 void run(const Input& input) {
+  tilesMatch(input);
   std::vector<PolylineView> views;
   for (const auto& line : input.lines) views.push_back({line.data(), line.size() / 2});
   Mesh m;
