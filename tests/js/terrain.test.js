@@ -153,6 +153,21 @@ test('no-data holes are left out, their boundary constrained', () => {
   assert.ok(worst <= 2);
 });
 
+test('a closed breakline bounds nothing where pixels have no data elsewhere', () => {
+  const raster = crop(dem, 60);
+  const heights = Float64Array.from(raster.heights);
+  heights[0] = -32768;  // one pixel without data: the mesh covers the area with data only
+  const holey = { heights, width: 60, height: 60 };
+  // Closed, and closed with its first point repeated at the end (once cut into a ring).
+  for (const ring of [[10, 10, 40, 10, 25, 35, 10, 10], [10, 10, 40, 10, 25, 35, 10, 10, 10, 10]]) {
+    const r = triangulateRaster(holey, { maxError: 5, noData: -32768, breaklines: [ring] });
+    checkMesh(r, {}, { keepAll: false });
+    const { worst, uncovered } = pixelErrors(r, holey);
+    assert.equal(uncovered, 1, `only the pixel without data left out (${ring.length / 2} points)`);
+    assert.ok(worst <= 5);
+  }
+});
+
 test('tiles that share a border get the same vertices along it', () => {
   // Two tiles side by side sharing column 150, in map coordinates x = column, y = -row.
   const tile = (left, width) => {
