@@ -194,11 +194,19 @@ Hit GreedyMesher::locateIn(std::int32_t t, double x, double y) {
 // chain runs through a rounded crossing passes beside the pixels on it) goes onto that edge:
 // the chain bends through it, by no more than that, instead of passing a pixel-less sliver
 // away with the heights of its far ends. Only where all four triangles of the split keep
-// their orientation, and not on the hull, which must stay convex.
+// their orientation, not on the hull, which must stay convex, and where the split's joins are
+// Delaunay: it joins the point to the face's third corner c and to the corner d beyond the
+// edge, and only the edges facing the point are tested for flips then, so the point must lie
+// strictly inside both triangles' circumcircles. On the edge it always does; ulps off it,
+// beside a corner ulps from the line (a rounded point of a breakline), it may not.
 Hit GreedyMesher::ontoConstraint(const Hit& face, double x, double y) const {
   const double* xy = d_.xy.data();
   const auto orient = [&](std::uint32_t a, std::uint32_t b) {
     return orient2d(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1], x, y);
+  };
+  const auto inCircle = [&](std::uint32_t u, std::uint32_t v, std::uint32_t w) {
+    return incircle(xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1], xy[2 * w], xy[2 * w + 1], x,
+                    y) == Sign::Positive;
   };
   const std::int32_t t = face.edge / 3;
   for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e) {
@@ -209,7 +217,8 @@ Hit GreedyMesher::ontoConstraint(const Hit& face, double x, double y) const {
     if (!(std::fabs(cross) <= kEdgeReach * std::hypot(bx - ax, by - ay))) continue;
     const std::uint32_t beyond = topo_.tri[prevEdge(topo_.adj[e])];
     if (beyond == kGhost) continue;
-    if (orient(beyond, b) == Sign::Positive && orient(a, beyond) == Sign::Positive)
+    if (orient(beyond, b) == Sign::Positive && orient(a, beyond) == Sign::Positive &&
+        inCircle(a, b, topo_.tri[prevEdge(e)]) && inCircle(b, a, beyond))
       return {Hit::Kind::Edge, e};
   }
   return face;
@@ -241,19 +250,10 @@ bool GreedyMesher::breaklinePointNear(const Hit& h, double x, double y,
     const double away = std::hypot(x - qx, y - qy);
     if (!(away <= kBreaklineReach && along * length > away && (1 - along) * length > away))
       continue;
+    // (Where rounding puts q ulps off the edge, ontoConstraint checks that the split keeps
+    // the mesh Delaunay.)
     const Hit split = ontoConstraint(h, qx, qy);
     if (split.kind != Hit::Kind::Edge || split.edge != e) continue;
-    // The split joins q to the face's third corner c and to the corner d beyond the edge, and
-    // only the edges facing q are tested for flips then: q must lie strictly inside both
-    // triangles' circumcircles for those joins to be Delaunay. It does when it lies on the
-    // edge, and may not when rounding puts it ulps off beside a corner ulps from the line (a
-    // breakline that doubles back on itself).
-    const std::uint32_t c = topo_.tri[prevEdge(e)], d = topo_.tri[prevEdge(topo_.adj[e])];
-    const auto inCircle = [&](std::uint32_t u, std::uint32_t v, std::uint32_t w) {
-      return incircle(xy[2 * u], xy[2 * u + 1], xy[2 * v], xy[2 * v + 1], xy[2 * w], xy[2 * w + 1],
-                      qx, qy) == Sign::Positive;
-    };
-    if (!inCircle(a, b, c) || !inCircle(b, a, d)) continue;
     onto.x = qx;
     onto.y = qy;
     onto.z = heightOnBreakline(a, b, qx, qy, onto.given);
