@@ -7,7 +7,7 @@
 #
 # Environment: GEOCDT_FUZZ_BUILD (build directory, default build-fuzz),
 # GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines fuzz_refine fuzz_strips
-# fuzz_polygons fuzz_voronoi fuzz_edits"),
+# fuzz_polygons fuzz_voronoi fuzz_edits fuzz_terrain"),
 # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: as much fuzzing on
 # any machine, as long as the seconds do not cut it short; not the very same inputs, see
 # tests/fuzz/README.md), GEOCDT_FUZZ_TIMEOUT (seconds one input may take, default 20;
@@ -20,7 +20,8 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 build=${GEOCDT_FUZZ_BUILD:-$root/build-fuzz}
-targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines fuzz_refine fuzz_strips fuzz_polygons fuzz_voronoi fuzz_edits}
+targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines fuzz_refine fuzz_strips fuzz_polygons \
+  fuzz_voronoi fuzz_edits fuzz_terrain}
 
 # (0 would mean no limit to libFuzzer.)
 case $seconds in
