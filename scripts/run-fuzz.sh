@@ -6,8 +6,8 @@
 #   scripts/run-fuzz.sh [seconds-per-target]     (default 60)
 #
 # Environment: GEOCDT_FUZZ_BUILD (build directory, default build-fuzz),
-# GEOCDT_FUZZ_TARGETS (default "fuzz_points fuzz_polylines fuzz_refine fuzz_strips
-# fuzz_polygons fuzz_voronoi fuzz_edits fuzz_terrain"),
+# GEOCDT_FUZZ_TARGETS (default: every target of tests/fuzz/CMakeLists.txt, which the
+# configure step lists in <build>/fuzz_targets.txt),
 # GEOCDT_FUZZ_SEED and GEOCDT_FUZZ_RUNS (a fixed seed and number of inputs: as much fuzzing on
 # any machine, as long as the seconds do not cut it short; not the very same inputs, see
 # tests/fuzz/README.md), GEOCDT_FUZZ_TIMEOUT (seconds one input may take, default 20;
@@ -20,8 +20,7 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 build=${GEOCDT_FUZZ_BUILD:-$root/build-fuzz}
-targets=${GEOCDT_FUZZ_TARGETS:-fuzz_points fuzz_polylines fuzz_refine fuzz_strips fuzz_polygons \
-  fuzz_voronoi fuzz_edits fuzz_terrain}
+targets=${GEOCDT_FUZZ_TARGETS:-}
 
 # (0 would mean no limit to libFuzzer.)
 case $seconds in
@@ -71,6 +70,15 @@ if [ "$step" != run ]; then
   CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DGEOCDT_BUILD_FUZZ=ON -DGEOCDT_BUILD_TESTS=OFF -DGEOCDT_BUILD_BENCH=OFF \
     -DGEOCDT_UNITY_BUILD=ON >/dev/null
+fi
+if [ -z "$targets" ]; then
+  [ -f "$build/fuzz_targets.txt" ] || {
+    echo "run-fuzz: $build has no fuzz_targets.txt: build the targets first (GEOCDT_FUZZ_STEP=build)" >&2
+    exit 1
+  }
+  targets=$(cat "$build/fuzz_targets.txt")
+fi
+if [ "$step" != run ]; then
   cmake --build "$build" -j2 --target $targets
 fi
 [ "$step" = build ] && exit 0
