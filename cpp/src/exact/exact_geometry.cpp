@@ -7,44 +7,26 @@
 
 #include "exact/bigint.h"
 #include "exact/double_double.h"
+#include "exact/fixed_point.h"
 #include "geocdt/predicates.h"
 
 namespace geocdt {
 namespace {
 
 using detail::BigInt;
-// A finite double, or a power of two from 2^-1075 up, is an integer below 2^2101 in units of
-// the smallest unit among the inputs: 66 limbs, plus room for the carries of sums; products
-// of up to four such numbers need four times that. One type for all (operations touch only
-// the limbs in use), so that the arithmetic is compiled once: it is the wasm's size.
-using Number = BigInt<276>;
+// Fixed-point numbers in units of the smallest unit among the inputs: a finite double, or a
+// power of two from 2^-1075 up, with room for products of up to four of them.
+using fixed::baseOf;
+using fixed::difference;
+using fixed::Number;
+using fixed::product;
+using fixed::sum;
 
 // The filters are in double, with error bounds for double: long double's precision varies
 // (64 bits on x86, 53 on MSVC and under valgrind, 113 in wasm), and an answer must not.
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 // Covers what underflow can take from the products and sums of a filter.
 constexpr double kUnderflow = 0x1p-1000;
-
-// The exponent of the lowest set bit's unit: v is an integer multiple of 2^unitExponent(v).
-int unitExponent(double v) {
-  if (v == 0) return 1 << 20;
-  std::uint64_t mantissa;
-  int exponent;
-  detail::decompose(v, mantissa, exponent);
-  return exponent;
-}
-
-// The lowest unit among values, so that each is an integer multiple of 2^base.
-int baseOf(std::initializer_list<double> values, int lowest = 1 << 20) {
-  for (const double v : values) lowest = std::min(lowest, unitExponent(v));
-  return lowest;
-}
-
-Number inUnits(double v, int base) {
-  Number r;
-  detail::set_double(r, v, base);
-  return r;
-}
 
 Number integer(std::uint32_t v) {
   Number r;
@@ -60,22 +42,6 @@ Number power(int exponent, int base) {
   r.limb[word] = std::uint32_t{1} << (shift % 32);
   r.size = word + 1;
   return r;
-}
-
-Number sum(const Number& a, const Number& b, bool subtract = false) {
-  Number r;
-  detail::add(r, a, b, subtract);
-  return r;
-}
-
-Number product(const Number& a, const Number& b) {
-  Number r;
-  detail::multiply(r, a, b);
-  return r;
-}
-
-Number difference(double a, double b, int base) {
-  return sum(inUnits(a, base), inUnits(b, base), true);
 }
 
 template <int A, int B>
@@ -174,16 +140,16 @@ class CrossingCoordinate {
     const Number fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
     const Number gx = difference(t.ax, s.ax, base), gy = difference(t.ay, s.ay, base);
     // X = a + d * num / den along the axis.
-    Number den = sum(product(dx, fy), product(dy, fx), true);
-    const Number num = sum(product(gx, fy), product(gy, fx), true);
-    const Number a = inUnits(axis_ == 0 ? s.ax : s.ay, base);
+    Number den = difference(product(dx, fy), product(dy, fx));
+    const Number num = difference(product(gx, fy), product(gy, fx));
+    const Number a = fixed::fixed(axis_ == 0 ? s.ax : s.ay, base);
     Number scaled = sum(product(a, den), product(axis_ == 0 ? dx : dy, num));
     if (detail::sign(den) < 0) {
       negate(den);
       negate(scaled);
     }
     const Number twice = sum(scaled, scaled);
-    const Number midpoint = product(sum(inUnits(c, base), inUnits(n, base)), den);
+    const Number midpoint = product(sum(fixed::fixed(c, base), fixed::fixed(n, base)), den);
     return compare(twice, midpoint);
   }
 
@@ -253,11 +219,11 @@ bool estimateCrossing(const InputSegment& s, const InputSegment& t, double& x, d
   const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
   const Number fx = difference(t.bx, t.ax, base), fy = difference(t.by, t.ay, base);
   const Number ox = difference(t.ax, s.ax, base), oy = difference(t.ay, s.ay, base);
-  const Number den = sum(product(dx, fy), product(dy, fx), true);
+  const Number den = difference(product(dx, fy), product(dy, fx));
   if (detail::sign(den) == 0) return false;
-  const Number num = sum(product(ox, fy), product(oy, fx), true);
-  const Number nx = sum(product(inUnits(s.ax, base), den), product(dx, num));
-  const Number ny = sum(product(inUnits(s.ay, base), den), product(dy, num));
+  const Number num = difference(product(ox, fy), product(oy, fx));
+  const Number nx = sum(product(fixed::fixed(s.ax, base), den), product(dx, num));
+  const Number ny = sum(product(fixed::fixed(s.ay, base), den), product(dy, num));
   // Units: den counts 2^(2 base), nx and ny 2^(3 base). Only a guess, rounded to double
   // from about 100 bits: roundCoordinate's steps from it find the one double whose interval
   // holds the crossing, whatever the guess.
@@ -392,14 +358,14 @@ bool segmentMeetsCell(const InputSegment& s, double x, double y) {
   if (d - error > far) return false;
 
   const int base = std::min({baseOf({s.ax, s.ay, s.bx, s.by, x, y}), xl, xh, yl, yh});
-  const Number ax = inUnits(s.ax, base), ay = inUnits(s.ay, base);
+  const Number ax = fixed::fixed(s.ax, base), ay = fixed::fixed(s.ay, base);
   const Number dx = difference(s.bx, s.ax, base), dy = difference(s.by, s.ay, base);
-  const Number px = inUnits(x, base), py = inUnits(y, base);
+  const Number px = fixed::fixed(x, base), py = fixed::fixed(y, base);
   // a + t d lies in [lo, hi) on each axis, for t in [0, 1].
   Bound lower{integer(0), integer(1), false}, upper{integer(1), integer(1), false};
   const auto tighten = [&](const Number& a, const Number& d, const Number& p, int l, int h) {
-    const Number lo = sum(sum(p, power(l, base), true), a, true);  // lo - a
-    const Number hi = sum(sum(p, power(h, base)), a, true);        // hi - a
+    const Number lo = difference(difference(p, power(l, base)), a);  // lo - a
+    const Number hi = difference(sum(p, power(h, base)), a);         // hi - a
     const int sd = detail::sign(d);
     if (sd == 0) return detail::sign(lo) <= 0 && detail::sign(hi) > 0;
     Number positive = d;
@@ -443,7 +409,7 @@ bool withinDistance(const InputSegment& s, double x, double y, int e) {
     const Number vx = difference(x, s.bx, base), vy = difference(y, s.by, base);
     return compare(sum(product(vx, vx), product(vy, vy)), r2) <= 0;
   }
-  const Number cross = sum(product(dx, wy), product(dy, wx), true);
+  const Number cross = difference(product(dx, wy), product(dy, wx));
   return compare(product(cross, cross), product(r2, length2)) <= 0;
 }
 
