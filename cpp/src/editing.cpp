@@ -1,4 +1,4 @@
-// Triangulation's editing calls: removePoint, removePolyline and movePoint. Each checks its
+// Triangulation's editing calls: removePoint(s), removePolyline and movePoint. Each checks its
 // arguments before it changes anything, takes the constraints off what changes
 // (ConstraintEditor), removes or moves the vertices (Delaunay::removeVertex,
 // reinsertVertex), then inserts the joined chains and the moved segments again, computing
@@ -11,6 +11,7 @@
 #include "constraints/chain_check.h"
 #include "constraints/constraint_editor.h"
 #include "constraints/snap_rounding.h"
+#include "delaunay/insertion_order.h"
 #include "delaunay/vertex_edges.h"
 #include "geocdt/triangulation.h"
 #include "invalid_coordinate.h"
@@ -486,6 +487,70 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
         return finishEdit(state, editor, ends, keep);
       },
       [&] { state.clear(); });
+}
+
+Status Triangulation::removePoints(const std::uint32_t* ids, std::size_t count,
+                                   std::size_t* removed) {
+  const Delaunay& d = state_->delaunay;
+  const EditState& edit = state_->edit;
+  if (removed) *removed = 0;
+  // The reason ids[k] cannot go, with k as the status's index.
+  const auto refusal = [&](std::size_t k) {
+    const std::string call = "removePoints: ids[" + std::to_string(k) + "]";
+    Status s = checkId(d, ids[k], call.c_str());
+    if (s.ok())
+      s = invalidEdit(call + ": vertex " + std::to_string(ids[k]) +
+                          " is not a point inserted with insertPoints (it is " +
+                          describe(edit, ids[k]) + ")",
+                      k);
+    s.index = k;
+    return s;
+  };
+  // Every id checked before anything changes; their places kept for the order (one read of
+  // each, in ids' order).
+  std::vector<double> places(2 * count);
+  double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t id = ids[k];
+    if (id >= d.vertexCount() || d.isRemoved(id) || !(edit.kind(id) & kPointVertex))
+      return refusal(k);
+    const double x = d.xy[2 * static_cast<std::size_t>(id)];
+    const double y = d.xy[2 * static_cast<std::size_t>(id) + 1];
+    places[2 * k] = x;
+    places[2 * k + 1] = y;
+    minX = std::min(minX, x);
+    maxX = std::max(maxX, x);
+    minY = std::min(minY, y);
+    maxY = std::max(maxY, y);
+  }
+  // The ids along a Hilbert curve over their bounding box: (position << 32 | id), so that a
+  // repeated id sorts next to itself.
+  constexpr int kBits = 16;
+  const double side = std::max(maxX - minX, maxY - minY);
+  const double scale = side > 0 ? ((1 << kBits) - 1) / side : 0;
+  std::vector<std::uint64_t> order(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto cx = static_cast<std::uint32_t>((places[2 * k] - minX) * scale);
+    const auto cy = static_cast<std::uint32_t>((places[2 * k + 1] - minY) * scale);
+    order[k] = std::uint64_t{hilbertIndex(cx, cy, kBits)} << 32 | ids[k];
+  }
+  std::vector<double>().swap(places);
+  std::sort(order.begin(), order.end());
+  for (std::size_t i = 1; i < count; ++i) {
+    if (order[i] != order[i - 1]) continue;
+    const auto id = static_cast<std::uint32_t>(order[i]);
+    const std::size_t first = std::find(ids, ids + count, id) - ids;
+    const std::size_t again = std::find(ids + first + 1, ids + count, id) - ids;
+    return invalidEdit("removePoints: ids[" + std::to_string(again) + "]: vertex " +
+                           std::to_string(id) + " is also ids[" + std::to_string(first) + "]",
+                       again);
+  }
+  for (const std::uint64_t key : order) {
+    bool went = false;
+    if (const Status s = removePoint(static_cast<std::uint32_t>(key), &went); !s.ok()) return s;
+    if (removed && went) ++*removed;
+  }
+  return Status::success();
 }
 
 Status Triangulation::removePolyline(std::size_t polyline) {

@@ -76,6 +76,94 @@ TEST(Editing, RemovingHullVerticesFirst) {
   }
 }
 
+// removePoints: batches of random points, some of them polylines' vertices too, removed in
+// its own order; the mesh must be what removing them one by one gives (triangulate() of
+// what remains), and the count must say how many vertices went.
+TEST(Editing, RemovingPointsInBatches) {
+  Triangulation t;
+  EditModel model;
+  ASSERT_TRUE(model.insertPoints(t, testing::uniformPoints(2000, 21)).ok());
+  Random random(22);
+  // Polylines through some of the points: those points' vertices stay.
+  std::vector<std::uint32_t> ids = model.pointIds();
+  std::vector<std::uint32_t> onLines;
+  for (int line = 0; line < 12; ++line) {
+    std::vector<double> xy;
+    for (int k = 0; k < 4; ++k) {
+      const std::uint32_t id = ids[random.next() % ids.size()];
+      if (std::find(onLines.begin(), onLines.end(), id) != onLines.end()) continue;
+      onLines.push_back(id);
+      const std::vector<double> at = model.place(id);
+      xy.insert(xy.end(), at.begin(), at.end());
+    }
+    ASSERT_TRUE(model.insertPolyline(t, xy).ok());
+  }
+  for (std::size_t i = ids.size(); i > 1; --i) std::swap(ids[i - 1], ids[random.next() % i]);
+  std::size_t at = 0;
+  for (const std::size_t batch : {1u, 7u, 250u, 900u}) {
+    const std::vector<std::uint32_t> chosen(ids.begin() + at, ids.begin() + at + batch);
+    at += batch;
+    std::size_t stay = 0;
+    for (const std::uint32_t id : chosen)
+      stay += std::find(onLines.begin(), onLines.end(), id) != onLines.end();
+    const std::size_t vertices = t.vertexCount();
+    std::size_t removed = 0;
+    const Status s = model.removePoints(t, chosen, &removed);
+    ASSERT_TRUE(s.ok()) << s.message;
+    EXPECT_EQ(removed, batch - stay) << "batch of " << batch;
+    EXPECT_EQ(t.vertexCount(), vertices - removed);
+    for (const std::uint32_t id : chosen) {
+      const bool kept = std::find(onLines.begin(), onLines.end(), id) != onLines.end();
+      EXPECT_EQ(t.hasVertex(id), kept) << id;
+    }
+    ASSERT_EQ(model.check(t), "") << "after the batch of " << batch;
+    ASSERT_EQ(model.compare(t), "") << "after the batch of " << batch;
+  }
+  // The rest, in one call: the polylines' vertices stay, nothing else.
+  const std::vector<std::uint32_t> rest(ids.begin() + at, ids.end());
+  const std::size_t vertices = t.vertexCount();
+  std::size_t removed = 0;
+  ASSERT_TRUE(model.removePoints(t, rest, &removed).ok());
+  ASSERT_EQ(model.check(t), "");
+  ASSERT_EQ(model.compare(t), "");
+  EXPECT_EQ(t.vertexCount(), vertices - removed);
+  for (const std::uint32_t id : onLines) EXPECT_TRUE(t.hasVertex(id)) << id;
+  for (const std::uint32_t id : ids)
+    if (std::find(onLines.begin(), onLines.end(), id) == onLines.end())
+      EXPECT_FALSE(t.hasVertex(id)) << id;
+  ASSERT_TRUE(t.removePoints(nullptr, 0).ok());
+}
+
+TEST(Editing, RemovingPointsWithABadIdChangesNothing) {
+  Triangulation t;
+  std::uint32_t ids[4];
+  const double xy[] = {0, 0, 1, 0, 0, 1, 1, 1};
+  ASSERT_TRUE(t.insertPoints(xy, 4, ids).ok());
+  const double line[] = {0, 0, 2, 2};
+  std::uint32_t lineIds[2];
+  ASSERT_TRUE(t.insertPolyline(line, 2, lineIds).ok());
+  ASSERT_TRUE(t.removePoint(ids[3]).ok());
+  const auto refused = [&](std::vector<std::uint32_t> batch, std::size_t index,
+                           const std::string& words) {
+    std::size_t removed = 7;
+    const Status s = t.removePoints(batch.data(), batch.size(), &removed);
+    EXPECT_EQ(s.code, StatusCode::InvalidArgument);
+    EXPECT_EQ(s.index, index) << s.message;
+    EXPECT_NE(s.message.find(words), std::string::npos) << s.message;
+    EXPECT_EQ(removed, 0u);
+    EXPECT_EQ(t.vertexCount(), 4u);  // three points and the polyline's far end
+  };
+  refused({ids[0], 99}, 1, "ids[1]: no vertex has id 99");
+  refused({ids[1], ids[0], ids[3]}, 2, "ids[2]: vertex 3 was removed");
+  refused({ids[0], lineIds[1]}, 1, "is not a point inserted with insertPoints");
+  refused({ids[1], ids[0], ids[1]}, 2, "ids[2]: vertex 1 is also ids[0]");
+  std::size_t removed = 0;
+  ASSERT_TRUE(t.removePoints(ids, 3, &removed).ok());
+  EXPECT_EQ(removed, 2u);  // (0, 0) stays as the polyline's
+  EXPECT_TRUE(t.hasVertex(ids[0]));
+  EXPECT_EQ(t.vertexCount(), 2u);
+}
+
 TEST(Editing, CollinearStateAndBack) {
   Triangulation t;
   EditModel model;

@@ -103,11 +103,27 @@ void run(const Input& input) {
         require(model.insertPolyline(t, line), what);
         break;
       }
-      case 3: {  // remove a point
+      case 3: {  // remove a point; with bit 4 of arg, every few points in one call
         if (ids.empty()) break;
-        const std::uint32_t id = ids[arg % ids.size()];
-        what = "removePoint " + std::to_string(id);
-        require(model.removePoint(t, id), what);
+        if (!(arg & 16)) {
+          const std::uint32_t id = ids[arg % ids.size()];
+          what = "removePoint " + std::to_string(id);
+          require(model.removePoint(t, id), what);
+          break;
+        }
+        std::vector<std::uint32_t> batch;
+        const std::size_t step = 1 + arg % 4;
+        for (std::size_t i = arg % step; i < ids.size(); i += step) batch.push_back(ids[i]);
+        if (batch.empty()) break;
+        if (arg & 8) {  // one of them twice: refused, nothing changed
+          batch.push_back(batch.front());
+          const std::size_t vertices = t.vertexCount(), triangles = t.triangleCount();
+          requireRefused(t.removePoints(batch.data(), batch.size()), t, vertices, triangles,
+                         "removePoints with a repeated id");
+          batch.pop_back();
+        }
+        what = "removePoints of " + std::to_string(batch.size());
+        require(model.removePoints(t, batch), what);
         break;
       }
       case 4: {  // remove a polyline

@@ -97,6 +97,14 @@ Status EditModel::removePoint(Triangulation& t, std::uint32_t id, bool* removed)
   return s;
 }
 
+Status EditModel::removePoints(Triangulation& t, const std::vector<std::uint32_t>& ids,
+                               std::size_t* removed) {
+  const Status s = t.removePoints(ids.data(), ids.size(), removed);
+  if (s.ok())
+    for (const std::uint32_t id : ids) pointUses_.erase(id);
+  return s;
+}
+
 Status EditModel::removePolyline(Triangulation& t, std::size_t polyline) {
   const Status s = t.removePolyline(polyline);
   if (s.ok()) lines_[polyline].live = false;

@@ -20,6 +20,8 @@ class EditModel {
   Status insertPolyline(Triangulation& t, const std::vector<double>& xy);
   // Edits t and the model alike.
   Status removePoint(Triangulation& t, std::uint32_t id, bool* removed = nullptr);
+  Status removePoints(Triangulation& t, const std::vector<std::uint32_t>& ids,
+                      std::size_t* removed = nullptr);
   Status removePolyline(Triangulation& t, std::size_t polyline);
   Status movePoint(Triangulation& t, std::uint32_t id, double x, double y);
 
