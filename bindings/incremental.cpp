@@ -87,6 +87,16 @@ int Incremental::removePoint(Output& out, double id) {
   return removed ? 1 : 0;
 }
 
+double Incremental::removePoints(Output& out, Input& input) {
+  std::size_t removed = 0;
+  const bool ok = guarded(
+      out,
+      [&] { return triangulation_.removePoints(input.ids.data(), input.ids.size(), &removed); },
+      "out of memory while editing: the triangulation was cleared");
+  input.clear();
+  return ok ? static_cast<double>(removed) : -1;
+}
+
 bool Incremental::removePolyline(Output& out, double polyline) {
   return guarded(
       out, [&] { return triangulation_.removePolyline(static_cast<std::size_t>(polyline)); },

@@ -47,6 +47,9 @@ class Incremental {
   // succeeded. Ids come as doubles that JS checked to be integers in [0, 2^32). JS calls
   // removePoint and movePoint through the plain exports of edit_calls.cpp.
   int removePoint(Output& out, double id);
+  // The ids JS wrote into input.ids (freed afterwards): the vertices that went, or -1 on an
+  // error.
+  double removePoints(Output& out, Input& input);
   bool removePolyline(Output& out, double polyline);
   bool movePoint(Output& out, double id, double x, double y);
   bool hasVertex(double id) const {

@@ -80,8 +80,22 @@ std::vector<PolylineView> Input::polylines() const {
   return views;
 }
 
+bool Input::resizeIds(double count) {
+  std::vector<std::uint32_t>().swap(ids);
+  if (4 * count >= 4294967296.0) return false;
+  try {
+    ids.resize(static_cast<std::size_t>(count));
+  } catch (const std::bad_alloc&) {
+    return false;
+  } catch (const std::length_error&) {
+    return false;
+  }
+  return true;
+}
+
 void Input::clear() {
   clearCoordinates();
+  std::vector<std::uint32_t>().swap(ids);
   std::vector<std::uint32_t>().swap(polygonOffsets);
   std::vector<double>().swap(values);
   std::vector<double>().swap(raster);

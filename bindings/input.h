@@ -27,6 +27,8 @@ class Input {
   std::vector<double> values;
   // The heights of triangulateRaster()'s raster, row by row.
   std::vector<double> raster;
+  // The vertex ids of a batch edit (removePoints).
+  std::vector<std::uint32_t> ids;
 
   // Sizes the arrays for JS to fill (the numbers arrive as doubles: JS may ask for more than
   // size_t holds); polygonCount -1: no polygons. false when memory runs out; everything is
@@ -41,6 +43,9 @@ class Input {
   // Sizes the raster's heights (after resize(), which frees them); false when memory runs out.
   bool resizeRaster(double pixels);
   std::uintptr_t rasterAddress() const { return heapAddress(raster); }
+  // Sizes the ids (freed by clear()); false when memory runs out.
+  bool resizeIds(double count);
+  std::uintptr_t idsAddress() const { return heapAddress(ids); }
 
   // The first i where lineOffsets breaks the layout, or -1: lineOffsets[0] is 0, no offset is
   // below the one before it, and the last one is the number of points in lineCoords.

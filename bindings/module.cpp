@@ -88,6 +88,8 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("valuesAddress", &Input::valuesAddress)
       .function("resizeRaster", &Input::resizeRaster)
       .function("rasterAddress", &Input::rasterAddress)
+      .function("resizeIds", &Input::resizeIds)
+      .function("idsAddress", &Input::idsAddress)
       .function("badOffset", &Input::badOffset)
       .function("badPolygonOffset", &Input::badPolygonOffset)
       .function("clear", &Input::clear);
@@ -104,6 +106,7 @@ EMSCRIPTEN_BINDINGS(geocdt) {
       .function("rasterize", &Incremental::rasterize)
       .function("valuesPerPoint", &Incremental::valuesPerPoint)
       .function("hasValues", &Incremental::hasValues)
+      .function("removePoints", &Incremental::removePoints)
       .function("removePolyline", &Incremental::removePolyline)
       .function("hasVertex", &Incremental::hasVertex)
       .function("hasPolyline", &Incremental::hasPolyline)

@@ -179,6 +179,19 @@ export function createApi(instantiate) {
     return id;
   }
 
+  // An array or typed array of ids, each checked as checkId checks one.
+  function checkIds(ids, call) {
+    if (!Array.isArray(ids) && !(ArrayBuffer.isView(ids) && !(ids instanceof DataView))) {
+      throw new TypeError(`geocdt: ${call}: ids must be an array or typed array, `
+        + `got ${describe(ids)}`);
+    }
+    if (ids instanceof Uint32Array || ids instanceof Uint16Array || ids instanceof Uint8Array) {
+      return ids;
+    }
+    for (let i = 0; i < ids.length; i++) checkId(ids[i], `${call}: ids[${i}]`);
+    return ids;
+  }
+
   // insertPoints(xy, values?, options?): values is an array or typed array, options an object.
   const splitValues = (values, options) => (values != null && typeof values === 'object'
     && !Array.isArray(values) && !ArrayBuffer.isView(values)
@@ -250,6 +263,14 @@ export function createApi(instantiate) {
     removePoint(id) {
       const live = this.#live();
       return this.#kernel.removePoint(live, checkId(id, 'removePoint(id)'));
+    }
+
+    // Removes many points of insertPoints in one call, nearby ones one after the other (which
+    // costs less than a call each in random order); returns how many vertices went (the
+    // others stay as polylines' vertices: hasVertex tells). A bad id changes nothing.
+    removePoints(ids) {
+      const live = this.#live();
+      return this.#kernel.removePoints(live, checkIds(ids, 'removePoints(ids)'));
     }
 
     // Removes polyline k (numbered in insertion order from 0; the others keep their numbers).

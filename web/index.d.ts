@@ -554,6 +554,15 @@ export class Triangulation {
    */
   removePoint(id: number): boolean;
   /**
+   * Removes many points inserted with insertPoints in one call, as removePoint would one by
+   * one, nearby points one after the other (which costs less than a call each in random
+   * order). Returns how many vertices went; the others stay as polylines' vertices
+   * (hasVertex tells which).
+   * @throws RangeError when an id names no point now, or comes twice (error.index: its index
+   *   in ids); nothing changes then. TypeError when ids is not an array or typed array.
+   */
+  removePoints(ids: ArrayLike<number>): number;
+  /**
    * Removes polyline k (insertion order; the others keep their numbers): its edges become
    * free, and its vertices, crossings and Steiner points that nothing else needs go.
    * @throws RangeError when k names no polyline now.

@@ -574,6 +574,24 @@ export class Kernel {
     return result === 1;
   }
 
+  // ids: checked integers in [0, 2^32).
+  removePoints(incremental, ids) {
+    this.enter();
+    let removed;
+    try {
+      if (!this.input.resizeIds(ids.length)) {
+        throw outOfMemoryError(`the ids alone need ${4 * ids.length} bytes`);
+      }
+      if (ids.length > 0) this.heap().HEAPU32.set(ids, this.input.idsAddress() / 4);
+      removed = incremental.removePoints(this.output, this.input);
+    } finally {
+      this.input.clear();
+      this.leave();
+    }
+    this.checkEdit(removed >= 0);
+    return removed;
+  }
+
   removePolyline(incremental, k) {
     this.idle();
     this.checkEdit(incremental.removePolyline(this.output, k));

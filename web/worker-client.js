@@ -286,6 +286,7 @@ export class RemoteTriangulation {
 
   // Editing: the worker's Triangulation answers (a bad id rejects with its RangeError).
   removePoint(id) { return this.#call('removePoint', [id]); }
+  removePoints(ids) { return this.#call('removePoints', [ids]); }
   removePolyline(k) { return this.#call('removePolyline', [k]); }
   movePoint(id, x, y) { return this.#call('movePoint', [id, x, y]); }
   hasVertex(id) { return this.#call('hasVertex', [id]); }

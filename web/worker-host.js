@@ -50,6 +50,7 @@ export function createHost(api, post) {
     rasterize: (_, id, options) => live(id).rasterize(options),
     locate: (_, id, x, y) => live(id).locate(x, y),
     removePoint: (_, id, vertex) => live(id).removePoint(vertex),
+    removePoints: (_, id, ids) => live(id).removePoints(ids),
     removePolyline: (_, id, k) => live(id).removePolyline(k),
     movePoint: (_, id, vertex, x, y) => live(id).movePoint(vertex, x, y),
     hasVertex: (_, id, vertex) => live(id).hasVertex(vertex),

@@ -91,6 +91,8 @@ export class RemoteTriangulation {
   locate(x: number, y: number): Promise<Location>;
   /** As Triangulation's: resolves to whether the vertex went; a bad id rejects (RangeError). */
   removePoint(id: number): Promise<boolean>;
+  /** As Triangulation's: resolves to how many vertices went; a bad id rejects (RangeError). */
+  removePoints(ids: ArrayLike<number>): Promise<number>;
   removePolyline(polyline: number): Promise<void>;
   movePoint(id: number, x: number, y: number): Promise<void>;
   hasVertex(id: number): Promise<boolean>;

@@ -1,5 +1,6 @@
 // Editing in place through the wasm build: 100,000 removals and 100,000 moves of free points
-// from a 1M-point Triangulation, one call each, against the time to insert the 1M points;
+// from a 1M-point Triangulation, one call each, against the time to insert the 1M points
+// (then 100,000 more removals in one removePoints call, no target);
 // and removing polylines from meshes of 100k and 1M points of the same density (the larger
 // spreads wider), whose cost must not grow with the mesh. Also 100,000 small moves (up to a
 // quarter of the spacing, as a drag or an animation frame makes them; no target). Alternating
@@ -75,8 +76,10 @@ function pointRound(Mesh, size, round) {
     t.movePoint(id, xy[2 * id] + offsets[2 * k], xy[2 * id + 1] + offsets[2 * k + 1]);
   }
   const f = performance.now();
+  t.removePoints(order.subarray(3 * edits, 4 * edits));
+  const g = performance.now();
   t.dispose();
-  return { insert: b - a, removals: d - c, moves: e - d, smallMoves: f - e };
+  return { insert: b - a, removals: d - c, moves: e - d, smallMoves: f - e, batch: g - f };
 }
 
 // Runs in the page: `rounds` point rounds with the browser build; sources: pointRound's,
@@ -144,6 +147,9 @@ function pointLines(list) {
   console.log(`- ${n(edits)} small moves (up to a quarter of the spacing): `
     + `${median(list.map((r) => r.smallMoves)).toFixed(0)} ms = `
     + `${median(list.map((r) => r.smallMoves / r.insert)).toFixed(3)}× (no target)`);
+  console.log(`- ${n(edits)} more removals in one removePoints call (from the points left): `
+    + `${median(list.map((r) => r.batch)).toFixed(0)} ms = `
+    + `${median(list.map((r) => r.batch / r.insert)).toFixed(3)}× (no target)`);
 }
 
 console.log(`## Editing, ${n(size)} points (${rounds} rounds, medians)\n`);

@@ -130,6 +130,40 @@ test('random sequences of insertions, removals and moves match triangulate()', (
   }
 });
 
+// removePoints: random batches, some of their points also polylines' vertices (which stay),
+// removed in one call each; the mesh must be triangulate()'s of what remains.
+test('removePoints removes a batch as removePoint would one by one', () => {
+  for (let seed = 1; seed <= 4; seed++) {
+    const rand = random(100 + seed);
+    const coordinate = () => Math.floor(rand() * 1000 * 64) / 64;
+    const t = new Triangulation();
+    const model = new Model();
+    model.insertPoints(t, Array.from({ length: 600 }, coordinate));
+    let points = [...model.points];
+    for (let k = 0; k < 3; k++) {  // through some of the points, and across each other
+      const through = [0, 1, 2].map(() => points[Math.floor(rand() * points.length)]);
+      model.insertPolyline(t, through.flatMap((id) => model.places.get(id)));
+    }
+    const onLine = (id) => model.lines.some((line) => line.live && line.ids.includes(id));
+    for (const size of [1, 20, 120]) {
+      points = [...model.points];
+      const batch = new Set();
+      while (batch.size < size) batch.add(points[Math.floor(rand() * points.length)]);
+      const ids = seed % 2 === 0 ? Uint32Array.from(batch) : [...batch];
+      const stay = [...batch].filter(onLine).length;
+      const label = `seed ${seed}, a batch of ${size}`;
+      assert.equal(t.removePoints(ids), size - stay, `${label}: how many vertices went`);
+      for (const id of batch) {
+        model.points.delete(id);
+        assert.equal(t.hasVertex(id), onLine(id), `${label}: vertex ${id}`);
+      }
+      model.check(t, label);
+    }
+    assert.equal(t.removePoints([]), 0);
+    t.dispose();
+  }
+});
+
 // A drag: one point moved in small steps, mostly within its star, where a free point or a
 // polyline vertex whose segments are whole edges moves by flips alone; after each step the
 // mesh is triangulate()'s, polylines' edges unflipped.
@@ -169,6 +203,15 @@ test('bad ids throw a RangeError and change nothing', () => {
   throwsWith(() => t.removePolyline(1), RangeError, /no polyline 1/);
   throwsWith(() => t.movePoint(ids[0], NaN, 0), RangeError, /new place of vertex/);
   throwsWith(() => t.movePoint(ids[0], 4, 4), RangeError, /is that of vertex/);
+  throwsWith(() => t.removePoints(5), TypeError, /ids must be an array or typed array/);
+  throwsWith(() => t.removePoints([ids[0], '1']), TypeError, /ids\[1\]: the id must be a number/);
+  throwsWith(() => t.removePoints([ids[0], 1.5]), RangeError, /ids\[1\]: the id must be an integer/);
+  throwsWith(() => t.removePoints(new Int32Array([ids[0], -1])), RangeError, /ids\[1\]/);
+  throwsWith(() => t.removePoints([ids[0], ids[1], 99]), RangeError, /ids\[2\]: no vertex has id 99/);
+  throwsWith(() => t.removePoints([ids[0], line[0]]), RangeError, /not a point inserted/);
+  throwsWith(() => t.removePoints([ids[1], ids[0], ids[1]]), RangeError,
+    /ids\[2\]: vertex 1 is also ids\[0\]/);
+  assert.throws(() => t.removePoints(new Uint32Array([ids[0], 99])), (e) => e.index === 1);
   assert.deepEqual(arrays(t.results()), before);
   assert.equal(t.removePoint(ids[0]), true);
   throwsWith(() => t.removePoint(ids[0]), RangeError, /was removed/);
@@ -251,9 +294,12 @@ test('the worker edits its Triangulation', async () => {
     const t = worker.createTriangulation();
     const ids = await t.insertPoints([0, 0, 4, 0, 0, 4, 4, 4, 2, 1], { transfer: false });
     assert.equal(await t.removePoint(ids[4]), true);
+    assert.equal(await t.removePoints([ids[0], ids[1]]), 2);
+    await assert.rejects(t.removePoints([ids[2], 99]), (e) => e instanceof RangeError
+      && e.index === 1);
     await t.movePoint(ids[3], 5, 5);
     const r = await t.results();
-    assert.deepEqual(Array.from(r.vertexIds), [0, 1, 2, 3]);
+    assert.deepEqual(Array.from(r.vertexIds), [2, 3]);
     await assert.rejects(t.removePoint(ids[4]), RangeError);
     await t.dispose();
   } finally {

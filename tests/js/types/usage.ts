@@ -87,7 +87,8 @@ async function main(): Promise<void> {
   const outputIds: Uint32Array = tri.results().vertexIds;
   const stillThere: boolean = tri.hasVertex(v[2]);
   const removedCount: number = tri.stats.removed;
-  void [wentAway, outputIds, stillThere, removedCount];
+  const wentInBatch: number = tri.removePoints(new Uint32Array([v[3]])) + tri.removePoints([]);
+  void [wentAway, outputIds, stillThere, removedCount, wentInBatch];
   tri.dispose();
   const heap: number = memoryUsage().heapBytes;
 
@@ -137,9 +138,10 @@ async function main(): Promise<void> {
   await rt.insertPoints(new Int32Array(6), { onProgress: () => {} });
   const located = await rt.locate(0, 0);
   const remoteWent: boolean = await rt.removePoint(0);
+  const remoteBatch: number = await rt.removePoints([2, 3]);
   await rt.movePoint(1, 0.5, 0.5);
   await rt.removePolyline(0);
-  void remoteWent;
+  void [remoteWent, remoteBatch];
   const rv = worker.createTriangulation({ valuesPerPoint: 1 });
   await rv.insertPoints([0, 0, 1, 0, 0, 1], [1, 2, 3], { transfer: false });
   const remoteAt: Float64Array = await rv.interpolate([0.1, 0.1], { method: 'linear' });
