@@ -31,13 +31,15 @@ bool Input::resize(double pointCount, double linePointCount, double lineCount, d
       .ok();
 }
 
-bool Input::resizeRaster(double pixels) {
-  std::vector<double>().swap(raster);
-  if (8 * pixels >= 4294967296.0) return false;
-  // The heights, and a byte a pixel and the mesh the call makes: at most two triangles a pixel.
-  reserveHeap(8 * pixels + 1 * pixels + kReservePerPoint * pixels / 2);
+namespace {
+
+// v sized to count elements; false (v empty) when that cannot be.
+template <typename T>
+bool resizeOrEmpty(std::vector<T>& v, double count) {
+  std::vector<T>().swap(v);
+  if (sizeof(T) * count >= 4294967296.0) return false;
   try {
-    raster.resize(static_cast<std::size_t>(pixels));
+    v.resize(static_cast<std::size_t>(count));
   } catch (const std::bad_alloc&) {
     return false;
   } catch (const std::length_error&) {
@@ -45,6 +47,17 @@ bool Input::resizeRaster(double pixels) {
   }
   return true;
 }
+
+}  // namespace
+
+bool Input::resizeRaster(double pixels) {
+  if (8 * pixels >= 4294967296.0) return false;
+  // The heights, and a byte a pixel and the mesh the call makes: at most two triangles a pixel.
+  reserveHeap(8 * pixels + 1 * pixels + kReservePerPoint * pixels / 2);
+  return resizeOrEmpty(raster, pixels);
+}
+
+bool Input::resizeIds(double count) { return resizeOrEmpty(ids, count); }
 
 double Input::badOffset() const {
   if (lineOffsets.empty()) return -1;
@@ -78,19 +91,6 @@ std::vector<PolylineView> Input::polylines() const {
     views[i] = {lineCoords.data() + 2 * static_cast<std::size_t>(lineOffsets[i]),
                 static_cast<std::size_t>(lineOffsets[i + 1] - lineOffsets[i])};
   return views;
-}
-
-bool Input::resizeIds(double count) {
-  std::vector<std::uint32_t>().swap(ids);
-  if (4 * count >= 4294967296.0) return false;
-  try {
-    ids.resize(static_cast<std::size_t>(count));
-  } catch (const std::bad_alloc&) {
-    return false;
-  } catch (const std::length_error&) {
-    return false;
-  }
-  return true;
 }
 
 void Input::clear() {
