@@ -179,7 +179,8 @@ export function createApi(instantiate) {
     return id;
   }
 
-  // An array or typed array of ids, each checked as checkId checks one.
+  // An array or typed array of ids, each checked as checkId checks one; a bad one's error
+  // has its index in ids, as the core's refusals have.
   function checkIds(ids, call) {
     if (!Array.isArray(ids) && !(ArrayBuffer.isView(ids) && !(ids instanceof DataView))) {
       throw new TypeError(`geocdt: ${call}: ids must be an array or typed array, `
@@ -188,7 +189,14 @@ export function createApi(instantiate) {
     if (ids instanceof Uint32Array || ids instanceof Uint16Array || ids instanceof Uint8Array) {
       return ids;
     }
-    for (let i = 0; i < ids.length; i++) checkId(ids[i], `${call}: ids[${i}]`);
+    for (let i = 0; i < ids.length; i++) {
+      try {
+        checkId(ids[i], `${call}: ids[${i}]`);
+      } catch (error) {
+        error.index = i;
+        throw error;
+      }
+    }
     return ids;
   }
 
@@ -270,7 +278,7 @@ export function createApi(instantiate) {
     // others stay as polylines' vertices: hasVertex tells). A bad id changes nothing.
     removePoints(ids) {
       const live = this.#live();
-      return this.#kernel.removePoints(live, checkIds(ids, 'removePoints(ids)'));
+      return this.#kernel.removePoints(live, checkIds(ids, 'removePoints'));
     }
 
     // Removes polyline k (numbered in insertion order from 0; the others keep their numbers).

@@ -17,6 +17,9 @@ export type Coordinates =
   | Uint8ClampedArray
   | readonly number[];
 
+/** Vertex ids: integers from 0 to 2^32 - 1, in any numeric typed array or an array. */
+export type Ids = Coordinates;
+
 /** Offsets (n + 1 for n things) in any integer array. */
 export type Offsets = Uint32Array | Int32Array | Uint16Array | Uint8Array | readonly number[];
 
@@ -559,9 +562,10 @@ export class Triangulation {
    * order). Returns how many vertices went; the others stay as polylines' vertices
    * (hasVertex tells which).
    * @throws RangeError when an id names no point now, or comes twice (error.index: its index
-   *   in ids); nothing changes then. TypeError when ids is not an array or typed array.
+   *   in ids; the first such); nothing changes then. TypeError when ids is not an array or
+   *   typed array.
    */
-  removePoints(ids: ArrayLike<number>): number;
+  removePoints(ids: Ids): number;
   /**
    * Removes polyline k (insertion order; the others keep their numbers): its edges become
    * free, and its vertices, crossings and Steiner points that nothing else needs go.

@@ -286,7 +286,11 @@ export class RemoteTriangulation {
 
   // Editing: the worker's Triangulation answers (a bad id rejects with its RangeError).
   removePoint(id) { return this.#call('removePoint', [id]); }
-  removePoints(ids) { return this.#call('removePoints', [ids]); }
+  // (Copied now: the message goes after the worker is ready, and the caller may change ids.)
+  removePoints(ids) {
+    return this.#call('removePoints', [ArrayBuffer.isView(ids) || Array.isArray(ids)
+      ? ids.slice() : ids]);
+  }
   removePolyline(k) { return this.#call('removePolyline', [k]); }
   movePoint(id, x, y) { return this.#call('movePoint', [id, x, y]); }
   hasVertex(id) { return this.#call('hasVertex', [id]); }

@@ -2,7 +2,7 @@
 // worker_threads Worker (Node). Coordinates go to the worker and results come back as
 // transferred buffers, not copies.
 import type {
-  Coordinates, CoreStats, EarcutTriangles, GeoJSONInput, GeoJSONOptions, GeoJSONResult,
+  Coordinates, CoreStats, Ids, EarcutTriangles, GeoJSONInput, GeoJSONOptions, GeoJSONResult,
   InterpolateOptions, Location, MemoryUsage, Mesh, MeshOptions, Offsets, PolygonBatch,
   PolygonTriangles, ProgressOptions, RasterOptions, RefineOptions, ResultsOptions,
   TriangleFeatureCollection, TriangulateInput, TriangulateOptions, TriangulatePolygonsOptions,
@@ -92,7 +92,7 @@ export class RemoteTriangulation {
   /** As Triangulation's: resolves to whether the vertex went; a bad id rejects (RangeError). */
   removePoint(id: number): Promise<boolean>;
   /** As Triangulation's: resolves to how many vertices went; a bad id rejects (RangeError). */
-  removePoints(ids: ArrayLike<number>): Promise<number>;
+  removePoints(ids: Ids): Promise<number>;
   removePolyline(polyline: number): Promise<void>;
   movePoint(id: number, x: number, y: number): Promise<void>;
   hasVertex(id: number): Promise<boolean>;

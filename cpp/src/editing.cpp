@@ -489,65 +489,72 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
       [&] { state.clear(); });
 }
 
+namespace {
+
+// The first k < count whose id came before in ids (its index in repeat, the earlier one's in
+// first), or false. count must stay below 2^32.
+bool firstRepeat(const std::uint32_t* ids, std::size_t count, std::size_t& repeat,
+                 std::size_t& first) {
+  std::vector<std::uint64_t> byId(count);
+  for (std::size_t k = 0; k < count; ++k) byId[k] = std::uint64_t{ids[k]} << 32 | k;
+  std::sort(byId.begin(), byId.end());
+  repeat = count;
+  for (std::size_t i = 1; i < count; ++i) {
+    const std::size_t k = static_cast<std::uint32_t>(byId[i]);
+    if (byId[i] >> 32 != byId[i - 1] >> 32 || k >= repeat) continue;
+    repeat = k;  // the group's second: its earliest repeat
+    std::size_t j = i - 1;
+    while (j > 0 && byId[j - 1] >> 32 == byId[i] >> 32) --j;
+    first = static_cast<std::uint32_t>(byId[j]);
+  }
+  return repeat < count;
+}
+
+}  // namespace
+
 Status Triangulation::removePoints(const std::uint32_t* ids, std::size_t count,
                                    std::size_t* removed) {
   const Delaunay& d = state_->delaunay;
   const EditState& edit = state_->edit;
   if (removed) *removed = 0;
-  // The reason ids[k] cannot go, with k as the status's index.
-  const auto refusal = [&](std::size_t k) {
-    const std::string call = "removePoints: ids[" + std::to_string(k) + "]";
-    Status s = checkId(d, ids[k], call.c_str());
-    if (s.ok())
-      s = invalidEdit(call + ": vertex " + std::to_string(ids[k]) +
-                          " is not a point inserted with insertPoints (it is " +
-                          describe(edit, ids[k]) + ")",
-                      k);
-    s.index = k;
-    return s;
-  };
-  // Every id checked before anything changes; their places kept for the order (one read of
-  // each, in ids' order).
-  std::vector<double> places(2 * count);
-  double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
-  for (std::size_t k = 0; k < count; ++k) {
-    const std::uint32_t id = ids[k];
-    if (id >= d.vertexCount() || d.isRemoved(id) || !(edit.kind(id) & kPointVertex))
-      return refusal(k);
-    const double x = d.xy[2 * static_cast<std::size_t>(id)];
-    const double y = d.xy[2 * static_cast<std::size_t>(id) + 1];
-    places[2 * k] = x;
-    places[2 * k + 1] = y;
-    minX = std::min(minX, x);
-    maxX = std::max(maxX, x);
-    minY = std::min(minY, y);
-    maxY = std::max(maxY, y);
-  }
-  // The ids along a Hilbert curve over their bounding box: (position << 32 | id), so that a
-  // repeated id sorts next to itself.
-  constexpr int kBits = 16;
-  const double side = std::max(maxX - minX, maxY - minY);
-  const double scale = side > 0 ? ((1 << kBits) - 1) / side : 0;
-  std::vector<std::uint64_t> order(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    const auto cx = static_cast<std::uint32_t>((places[2 * k] - minX) * scale);
-    const auto cy = static_cast<std::uint32_t>((places[2 * k + 1] - minY) * scale);
-    order[k] = std::uint64_t{hilbertIndex(cx, cy, kBits)} << 32 | ids[k];
-  }
-  std::vector<double>().swap(places);
-  std::sort(order.begin(), order.end());
-  for (std::size_t i = 1; i < count; ++i) {
-    if (order[i] != order[i - 1]) continue;
-    const auto id = static_cast<std::uint32_t>(order[i]);
-    const std::size_t first = std::find(ids, ids + count, id) - ids;
-    const std::size_t again = std::find(ids + first + 1, ids + count, id) - ids;
-    return invalidEdit("removePoints: ids[" + std::to_string(again) + "]: vertex " +
-                           std::to_string(id) + " is also ids[" + std::to_string(first) + "]",
-                       again);
-  }
-  for (const std::uint64_t key : order) {
+  // Every id checked before anything changes; the first bad one in ids' order is named (with
+  // its index), whether it names no point now or repeats an earlier one. Then the order.
+  std::vector<std::uint32_t> order;
+  const Status checked = catchOutOfMemory(
+      [&] {
+        std::size_t bad = 0;
+        while (bad < count && ids[bad] < d.vertexCount() && !d.isRemoved(ids[bad]) &&
+               (edit.kind(ids[bad]) & kPointVertex))
+          ++bad;
+        // Past vertexCount() valid ids, one must repeat: the search stops there.
+        std::size_t repeat = 0, first = 0;
+        if (firstRepeat(ids, std::min<std::size_t>(bad, d.vertexCount() + std::size_t{1}), repeat,
+                        first))
+          return invalidEdit("removePoints: ids[" + std::to_string(repeat) + "]: vertex " +
+                                 std::to_string(ids[repeat]) + " is also ids[" +
+                                 std::to_string(first) + "]",
+                             repeat);
+        if (bad < count) {
+          const std::string call = "removePoints: ids[" + std::to_string(bad) + "]";
+          Status s = checkId(d, ids[bad], call.c_str());
+          if (s.ok())
+            s = invalidEdit(call + ": vertex " + std::to_string(ids[bad]) +
+                                " is not a point inserted with insertPoints (it is " +
+                                describe(edit, ids[bad]) + ")",
+                            bad);
+          s.index = bad;
+          return s;
+        }
+        // Along a Hilbert curve of their places: consecutive removals touch nearby memory.
+        order = insertionOrder(d.xy.data(), ids, static_cast<std::uint32_t>(count),
+                               InsertionOrder::Hilbert);
+        return Status::success();
+      },
+      [] {}, "out of memory while checking the ids of removePoints: nothing changed");
+  if (!checked.ok()) return checked;
+  for (const std::uint32_t id : order) {
     bool went = false;
-    if (const Status s = removePoint(static_cast<std::uint32_t>(key), &went); !s.ok()) return s;
+    if (const Status s = removePoint(id, &went); !s.ok()) return s;
     if (removed && went) ++*removed;
   }
   return Status::success();

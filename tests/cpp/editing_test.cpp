@@ -157,11 +157,29 @@ TEST(Editing, RemovingPointsWithABadIdChangesNothing) {
   refused({ids[1], ids[0], ids[3]}, 2, "ids[2]: vertex 3 was removed");
   refused({ids[0], lineIds[1]}, 1, "is not a point inserted with insertPoints");
   refused({ids[1], ids[0], ids[1]}, 2, "ids[2]: vertex 1 is also ids[0]");
+  // The first problem in ids' order is named.
+  refused({ids[0], ids[0], 99}, 1, "ids[1]: vertex 0 is also ids[0]");
+  refused({ids[2], ids[0], ids[2], ids[0]}, 2, "ids[2]: vertex 2 is also ids[0]");
+  refused({ids[0], 99, ids[0]}, 1, "ids[1]: no vertex has id 99");
   std::size_t removed = 0;
   ASSERT_TRUE(t.removePoints(ids, 3, &removed).ok());
   EXPECT_EQ(removed, 2u);  // (0, 0) stays as the polyline's
   EXPECT_TRUE(t.hasVertex(ids[0]));
   EXPECT_EQ(t.vertexCount(), 2u);
+}
+
+TEST(Editing, RemovingPointsThatAreUlpsApart) {
+  // Their spread is subnormal: the Hilbert order's scale would overflow.
+  Triangulation t;
+  EditModel model;
+  ASSERT_TRUE(
+      model.insertPoints(t, {0, 0, 5e-324, 0, 0, 5e-324, 5e-324, 5e-324, 1e-323, 1e-323, 1e-323, 0})
+          .ok());
+  std::size_t removed = 0;
+  ASSERT_TRUE(model.removePoints(t, {0, 2, 4}, &removed).ok());
+  EXPECT_EQ(removed, 3u);
+  EXPECT_EQ(model.check(t), "");
+  EXPECT_EQ(t.vertexCount(), 3u);
 }
 
 TEST(Editing, CollinearStateAndBack) {

@@ -212,6 +212,8 @@ test('bad ids throw a RangeError and change nothing', () => {
   throwsWith(() => t.removePoints([ids[1], ids[0], ids[1]]), RangeError,
     /ids\[2\]: vertex 1 is also ids\[0\]/);
   assert.throws(() => t.removePoints(new Uint32Array([ids[0], 99])), (e) => e.index === 1);
+  assert.throws(() => t.removePoints([ids[0], ids[1], -1]), (e) => e.index === 2);
+  assert.throws(() => t.removePoints([ids[0], ids[0], 99]), (e) => e.index === 1);
   assert.deepEqual(arrays(t.results()), before);
   assert.equal(t.removePoint(ids[0]), true);
   throwsWith(() => t.removePoint(ids[0]), RangeError, /was removed/);
@@ -297,9 +299,13 @@ test('the worker edits its Triangulation', async () => {
     assert.equal(await t.removePoints([ids[0], ids[1]]), 2);
     await assert.rejects(t.removePoints([ids[2], 99]), (e) => e instanceof RangeError
       && e.index === 1);
+    const later = new Uint32Array([ids[2]]);
+    const removing = t.removePoints(later);
+    later[0] = 99;  // after the call: the worker has the ids as they were
+    assert.equal(await removing, 1);
     await t.movePoint(ids[3], 5, 5);
     const r = await t.results();
-    assert.deepEqual(Array.from(r.vertexIds), [2, 3]);
+    assert.deepEqual(Array.from(r.vertexIds), [3]);
     await assert.rejects(t.removePoint(ids[4]), RangeError);
     await t.dispose();
   } finally {

@@ -344,10 +344,12 @@ class Triangulation {
   Status removePoint(std::uint32_t id, bool* removed = nullptr);
   // Removes the points ids[0..count) as removePoint would, one after the other, in an order
   // of its own: along a Hilbert curve of their places, so that consecutive removals touch
-  // nearby memory (in random order they cost about 40% more). *removed (if not
-  // null) receives how many vertices went; the others stay as polylines' (hasVertex tells
-  // which). Every id is checked first, as removePoint checks it and none twice: a bad one is
-  // reported with its index in ids, and nothing changes.
+  // nearby memory (in random order they cost about 40% more). *removed (if not null)
+  // receives how many vertices went; the others stay as polylines' (hasVertex tells which).
+  // Every id is checked first, as removePoint checks it, and none may come twice: the first
+  // bad one is reported with its index in ids, and nothing changes. A failure midway (out of
+  // memory, which clears the triangulation as removePoint does) leaves the removals before
+  // it done.
   Status removePoints(const std::uint32_t* ids, std::size_t count, std::size_t* removed = nullptr);
   // Removes polyline `polyline` (numbered in insertion order; the others keep their
   // numbers): its edges are freed and made Delaunay again, its vertices that no point and no
