@@ -45,11 +45,11 @@ std::vector<double> uniform(std::size_t n, std::uint64_t seed) {
 }
 
 struct PointRun {
-  double triangulate, removals, moves, smallMoves;
+  double triangulate, removals, moves, smallMoves, batch;
 };
 
 // Triangulates n points, then removes `edits` of them, moves `edits` others to random places
-// and `edits` more a little, one call each.
+// and `edits` more a little, one call each; then removes `edits` more in one removePoints call.
 PointRun pointRun(const std::vector<double>& xy, std::size_t edits, std::uint64_t seed) {
   const std::size_t n = xy.size() / 2;
   geocdt::Triangulation t;
@@ -79,7 +79,10 @@ PointRun pointRun(const std::vector<double>& xy, std::size_t edits, std::uint64_
   for (std::size_t k = 0; k < edits; ++k)
     if (!t.movePoint(ids[2 * edits + k], nudges[2 * k], nudges[2 * k + 1]).ok()) std::abort();
   const auto f = Clock::now();
-  return {milliseconds(a, b), milliseconds(c, d), milliseconds(d, e), milliseconds(e, f)};
+  if (!t.removePoints(ids.data() + 3 * edits, edits).ok()) std::abort();
+  const auto g = Clock::now();
+  return {milliseconds(a, b), milliseconds(c, d), milliseconds(d, e), milliseconds(e, f),
+          milliseconds(f, g)};
 }
 
 struct LineRun {
@@ -127,7 +130,7 @@ int main(int argc, char** argv) {
   const std::size_t edits = n / 10;
   const std::vector<double> xy = uniform(n, 1);
   std::vector<double> triangulate, removals, moves, smallMoves, removalRatio, moveRatio,
-      smallMoveRatio;
+      smallMoveRatio, batch, batchRatio;
   std::vector<double> smallLines, largeLines;
   std::uint64_t smallCrossings = 0, largeCrossings = 0;
   for (int run = 0; run < runs; ++run) {
@@ -139,6 +142,8 @@ int main(int argc, char** argv) {
     moveRatio.push_back(p.moves / p.triangulate);
     smallMoves.push_back(p.smallMoves);
     smallMoveRatio.push_back(p.smallMoves / p.triangulate);
+    batch.push_back(p.batch);
+    batchRatio.push_back(p.batch / p.triangulate);
     const LineRun small = lineRun(n / 10, 20 + run), large = lineRun(n, 20 + run);
     smallLines.push_back(small.milliseconds / static_cast<double>(small.crossings));
     largeLines.push_back(large.milliseconds / static_cast<double>(large.crossings));
@@ -155,6 +160,8 @@ int main(int argc, char** argv) {
               median(moves), mr, verdict(mr <= 1.0));
   std::printf("  %zu small moves (up to a quarter of the spacing): %.1f ms = %.3fx (no target)\n",
               edits, median(smallMoves), median(smallMoveRatio));
+  std::printf("  %zu more removals in one removePoints call: %.1f ms = %.3fx (no target)\n", edits,
+              median(batch), median(batchRatio));
   std::printf(
       "  removing 200 polylines: %.2f us a crossing at %zu points (%llu crossings), %.2f us at "
       "%zu (%llu): %.2fx (target: within 1.5x): %s\n",
