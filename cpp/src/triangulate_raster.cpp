@@ -38,13 +38,16 @@ Status checkOptions(const RasterView& raster, const TerrainOptions& o) {
     return invalidRaster("maxError must be a finite number from 0 up");
   if (!(o.minAngle >= 0 && o.minAngle < 60))
     return invalidRaster("minAngle must be a number of degrees from 0 to less than 60");
+  // A single column or row spans no width or height: its bbox may be flat that way.
+  const bool wide = raster.width > 1, tall = raster.height > 1;
   if (o.hasBbox && !(std::isfinite(o.minX) && std::isfinite(o.maxX) && std::isfinite(o.minY) &&
-                     std::isfinite(o.maxY) && o.minX < o.maxX && o.minY < o.maxY &&
+                     std::isfinite(o.maxY) && (wide ? o.minX < o.maxX : o.minX <= o.maxX) &&
+                     (tall ? o.minY < o.maxY : o.minY <= o.maxY) &&
                      std::fabs(o.minX) <= kMaxCoordinate && std::fabs(o.maxX) <= kMaxCoordinate &&
                      std::fabs(o.minY) <= kMaxCoordinate && std::fabs(o.maxY) <= kMaxCoordinate))
     return invalidRaster(
-        "bbox must be finite numbers [minX, minY, maxX, maxY] with minX < maxX and "
-        "minY < maxY");
+        "bbox must be finite numbers [minX, minY, maxX, maxY] within 1e150, with minX < maxX "
+        "and minY < maxY (minX <= maxX for a single column, minY <= maxY for a single row)");
   return Status::success();
 }
 

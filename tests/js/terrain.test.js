@@ -233,6 +233,21 @@ test('bbox maps pixel positions; limits stop at the largest error first', () => 
   withinBound(few, raster, few.stats.maxError);
 });
 
+// Pixel (0, 0) is at (minX, maxY): a single column at minX, a single row at maxY, and their
+// bbox may be flat that way.
+test('a single row, a single column and one pixel land on the bbox\'s north-west', () => {
+  const row = { heights: [5, 0, 9], width: 3, height: 1 };
+  const column = { ...row, width: 1, height: 3 };
+  const points = (raster, bbox) => Array.from(triangulateRaster(raster, { bbox }).points);
+  assert.deepEqual(points(row, [1, 2, 3, 4]), [1, 4, 2, 4, 3, 4]);
+  assert.deepEqual(points(row, [1, 4, 3, 4]), [1, 4, 2, 4, 3, 4]);
+  assert.deepEqual(points(column, [1, 2, 3, 4]), [1, 4, 1, 3, 1, 2]);
+  assert.deepEqual(points(column, [1, 2, 1, 4]), [1, 4, 1, 3, 1, 2]);
+  assert.deepEqual(points({ heights: [5], width: 1, height: 1 }, [1, 2, 3, 4]), [1, 4]);
+  assert.deepEqual(points({ heights: [5], width: 1, height: 1 }, [1, 2, 1, 2]), [1, 2]);
+  throwsWith(() => points(row, [1, 2, 1, 4]), RangeError, /minX < maxX and minY <= maxY/);
+});
+
 test('minAngle refines and keeps the bound', () => {
   const raster = crop(dem, 100);
   const r = triangulateRaster(raster, { maxError: 5, minAngle: 20 });
@@ -266,6 +281,14 @@ test('bad input is a clear RangeError or TypeError, and the module stays usable'
   throwsWith(() => triangulateRaster(ok, { maxError: NaN }), RangeError, /maxError/);
   throwsWith(() => triangulateRaster(ok, { minAngle: 60 }), RangeError, /minAngle/);
   throwsWith(() => triangulateRaster(ok, { bbox: [1, 0, 0, 1] }), RangeError, /bbox/);
+  throwsWith(() => triangulateRaster(ok, { bbox: [0, 0, 0, 1] }), RangeError,
+    /must have minX < maxX and minY < maxY/);
+  throwsWith(() => triangulateRaster(ok, { bbox: [0, 0, 2e150, 1] }), RangeError,
+    /bbox\[2\] is 2e\+150, beyond the supported/);
+  throwsWith(() => triangulateRaster(ok, { breaklines: [[0, 0, 1, 1]],
+    breaklineHeights: [Infinity, 1] }), RangeError, /breaklineHeights\[0\] is Infinity/);
+  throwsWith(() => triangulateRaster(ok, { breaklines: [[0, 0, 1, 1]],
+    breaklineHeights: [[1, 1]] }), TypeError, /breaklineHeights must be flat/);
   throwsWith(() => triangulateRaster(ok, { maxTriangles: 0 }), RangeError, /maxTriangles/);
   throwsWith(() => triangulateRaster(ok, { breaklines: [[0, 0, NaN, 1]] }), RangeError,
     /breaklines\[0\]\[2\] \(x of point 1 of breakline 0\) is NaN/);

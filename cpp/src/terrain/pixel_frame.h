@@ -21,23 +21,30 @@ class PixelFrame {
 
   bool mapped() const { return mapped_; }  // false: pixel positions are the map's
   // The ends of the range are given as they are, so that tiles sharing a border agree on it.
+  // A single column lies at minX (the west edge), a single row at maxY (the north edge).
   double mapX(double x) const {
     if (!mapped_) return x;
+    if (lastX_ == 0) return minX_;
     if (x == lastX_) return maxX_;
-    return lastX_ > 0 ? minX_ + (maxX_ - minX_) * (x / lastX_) : minX_;
+    return minX_ + (maxX_ - minX_) * (x / lastX_);
   }
   double mapY(double y) const {
     if (!mapped_) return y;
+    if (lastY_ == 0) return maxY_;
     if (y == lastY_) return minY_;
-    return lastY_ > 0 ? maxY_ - (maxY_ - minY_) * (y / lastY_) : maxY_;
+    return maxY_ - (maxY_ - minY_) * (y / lastY_);
   }
   double pixelX(double x) const {
     if (!mapped_) return x;
+    if (lastX_ == 0)
+      return maxX_ > minX_ ? (x - minX_) / (maxX_ - minX_) : (x > minX_) - (x < minX_);
     if (x == maxX_) return lastX_;
     return lastX_ * ((x - minX_) / (maxX_ - minX_));
   }
   double pixelY(double y) const {
     if (!mapped_) return y;
+    if (lastY_ == 0)
+      return maxY_ > minY_ ? (maxY_ - y) / (maxY_ - minY_) : (y < maxY_) - (y > maxY_);
     if (y == minY_) return lastY_;
     return lastY_ * ((maxY_ - y) / (maxY_ - minY_));
   }
