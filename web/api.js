@@ -86,7 +86,7 @@ export function createApi(instantiate) {
     const started = now();
     const k = ready();
     const checked = checkHeightmap(raster);
-    const mesh = k.triangulateRaster(checked, checkRasterOptions(options));
+    const mesh = k.triangulateRaster(checked, checkRasterOptions(options, checked));
     return finish(mesh, started);
   }
 

@@ -74,6 +74,17 @@ export function checkOffsets(offsets, name, things, parts) {
   if (offsets.length === 0) {
     throw new RangeError(`geocdt: ${name} is empty: n ${things} take n + 1 offsets`);
   }
+  // (Signed offsets would wrap past 2^31 on their way into the binding's unsigned ones.)
+  if (offsets instanceof Int32Array || Array.isArray(offsets)) {
+    for (let i = 0; i < offsets.length; i++) {
+      if (offsets[i] < 0) {
+        const short = name.slice(name.lastIndexOf('.') + 1);
+        const why = i === 0 ? 'the first offset must be 0'
+          : `below ${short}[${i - 1}] = ${offsets[i - 1]}`;
+        throw new RangeError(`geocdt: ${name}[${i}] is ${offsets[i]}: ${why}`);
+      }
+    }
+  }
   return offsets;
 }
 
@@ -132,6 +143,25 @@ export function checkValues(values, points, valuesPerPoint, name = 'values') {
   return values;
 }
 
+// bbox's four numbers: finite, within MAX_COORDINATE, and minX < maxX, minY < maxY (or equal,
+// where flatX / flatY: a raster of one column / one row).
+function checkBbox(bbox, flatX, flatY) {
+  for (let i = 0; i < 4; i++) {
+    if (typeof bbox[i] !== 'number' || !Number.isFinite(bbox[i])) {
+      throw new RangeError(`geocdt: options.bbox[${i}] must be a finite number, got ${bbox[i]}`);
+    }
+    if (Math.abs(bbox[i]) > MAX_COORDINATE) {
+      throw new RangeError(`geocdt: options.bbox[${i}] is ${problem(bbox[i])}`);
+    }
+  }
+  const x = flatX ? bbox[0] <= bbox[2] : bbox[0] < bbox[2];
+  const y = flatY ? bbox[1] <= bbox[3] : bbox[1] < bbox[3];
+  if (!x || !y) {
+    throw new RangeError(`geocdt: options.bbox [${Array.from(bbox).join(', ')}] must have `
+      + `minX ${flatX ? '<=' : '<'} maxX and minY ${flatY ? '<=' : '<'} maxY`);
+  }
+}
+
 // rasterize()'s options: { bbox: [minX, minY, maxX, maxY], width, height }, within what a
 // Float32Array in the wasm heap can hold.
 export function checkRaster(options, valuesPerPoint) {
@@ -144,15 +174,7 @@ export function checkRaster(options, valuesPerPoint) {
     throw new TypeError(
       `geocdt: options.bbox must be [minX, minY, maxX, maxY], got ${describe(bbox)}`);
   }
-  for (let i = 0; i < 4; i++) {
-    if (typeof bbox[i] !== 'number' || !Number.isFinite(bbox[i])) {
-      throw new RangeError(`geocdt: options.bbox[${i}] must be a finite number, got ${bbox[i]}`);
-    }
-  }
-  if (!(bbox[0] < bbox[2]) || !(bbox[1] < bbox[3])) {
-    throw new RangeError(`geocdt: options.bbox [${bbox.join(', ')}] must have minX < maxX and `
-      + 'minY < maxY');
-  }
+  checkBbox(bbox, false, false);
   for (const [name, v] of [['width', width], ['height', height]]) {
     if (!Number.isInteger(v) || v < 1) {
       throw new RangeError(`geocdt: options.${name} must be a whole number from 1 up, got ${v}`);
@@ -235,8 +257,16 @@ export function checkEarcutInput(data, holeIndices, dim) {
       + `numbers or a numeric typed array, got ${describe(data)}`);
   }
   checkAttached(data, 'data');
+  if (typeof dim !== 'number') {
+    throw new TypeError(`geocdt: earcut() dim must be a number, got ${describe(dim)}`);
+  }
   if (!Number.isInteger(dim) || dim < 2) {
     throw new RangeError(`geocdt: earcut() dim must be an integer from 2 up, got ${dim}`);
+  }
+  // GeoJSON positions ([[x, y], ...]) are the likely mistake: named before the length.
+  if (Array.isArray(data) && data.length > 0 && typeof data[0] !== 'number') {
+    throw new TypeError(`geocdt: earcut() data[0] must be a number, got ${describe(data[0])} `
+      + '(data is flat: x0, y0, x1, y1, ...)');
   }
   if (data.length % dim !== 0) {
     throw new RangeError(`geocdt: earcut() data has ${data.length} numbers, not a multiple of `
@@ -252,6 +282,10 @@ export function checkEarcutInput(data, holeIndices, dim) {
   for (let i = 0; i < holes.length; i++) {
     const start = holes[i];
     const before = i === 0 ? 0 : holes[i - 1];
+    if (typeof start !== 'number') {
+      throw new TypeError(`geocdt: earcut() holeIndices[${i}] must be a number, got `
+        + `${describe(start)}`);
+    }
     if (!Number.isInteger(start) || start < before || start > points) {
       throw new RangeError(`geocdt: earcut() holeIndices[${i}] is ${start}: hole ${i} must `
         + `start at a vertex index from ${before} to ${points}`);
@@ -353,8 +387,8 @@ export function checkHeightmap(raster) {
 }
 
 // triangulateRaster()'s options, checked: numbers for the binding (0 for no limit), and the
-// breaklines as checkInput() gives polylines.
-export function checkRasterOptions(options) {
+// breaklines as checkInput() gives polylines. raster: checkHeightmap()'s (its width and height).
+export function checkRasterOptions(options, raster) {
   if (options != null && typeof options !== 'object') {
     throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
   }
@@ -402,11 +436,27 @@ export function checkRasterOptions(options) {
     minX: 0, minY: 0, maxX: 0, maxY: 0,
   };
   if (bbox !== undefined) {
-    const b = checkRaster({ bbox, width: 1, height: 1 }, 1).bbox;
-    [checked.minX, checked.minY, checked.maxX, checked.maxY] = b;
+    if ((!Array.isArray(bbox) && !isNumericTypedArray(bbox)) || bbox.length !== 4) {
+      throw new TypeError(
+        `geocdt: options.bbox must be [minX, minY, maxX, maxY], got ${describe(bbox)}`);
+    }
+    checkBbox(bbox, raster.width === 1, raster.height === 1);
+    [checked.minX, checked.minY, checked.maxX, checked.maxY] = bbox;
   }
   const lines = checkPolylines(breaklines, 'options.breaklines');
+  if (Array.isArray(breaklineHeights) && breaklineHeights.some((h) => typeof h === 'object')) {
+    throw new TypeError('geocdt: options.breaklineHeights must be flat: one number per '
+      + 'breakline point, the breaklines one after the other');
+  }
   const heights = breaklineHeights == null ? undefined
     : checkValues(breaklineHeights, lines.points, 1, 'options.breaklineHeights');
+  if (heights !== undefined) {
+    for (let i = 0; i < heights.length; i++) {
+      if (heights[i] === Infinity || heights[i] === -Infinity) {
+        throw new RangeError(`geocdt: options.breaklineHeights[${i}] is ${heights[i]}: a height `
+          + 'must be finite (NaN takes the raster\'s)');
+      }
+    }
+  }
   return { options: checked, lines, heights };
 }

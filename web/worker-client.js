@@ -144,7 +144,7 @@ export class GeocdtWorker {
   async triangulateRaster(raster, options) {
     const { transfer = true, ...rest } = options ?? {};
     const { heights, width, height } = checkHeightmap(raster);
-    const { lines } = checkRasterOptions(rest);
+    const { lines } = checkRasterOptions(rest, { width, height });
     const buffers = new Set();
     const sent = { ...rest };
     if (rest.breaklines != null) {

@@ -208,6 +208,13 @@ test('bad input: TypeError or RangeError naming the polygon and ring; the module
     throwsWith(() => earcut([0, 0, 1, 0, 1], null, 2), RangeError, /not a multiple of dim = 2/);
     throwsWith(() => earcut([0, 0, 1, 0, 0, 1], [5]), RangeError, /holeIndices\[0\] is 5/);
     throwsWith(() => earcut([0, 0, NaN, 0, 0, 1, 9], null, 3.5), RangeError, /dim must be/);
+    throwsWith(() => earcut([0, 0, 1, 0, 0, 1], [], '2'), TypeError, /dim must be a number/);
+    throwsWith(() => earcut([0, 0, 1, 0, 0, 1], ['1']), TypeError,
+      /holeIndices\[0\] must be a number/);
+    throwsWith(() => earcut([[0, 0], [1, 0], [0, 1]]), TypeError,
+      /data\[0\] must be a number, got an Array \(data is flat/);
+    throwsWith(() => triangulatePolygons(bad({ ringOffsets: Int32Array.from([0, -5, 14]) })),
+      RangeError, /ringOffsets\[1\] is -5: below ringOffsets\[0\] = 0/);
     throwsWith(() => earcut([0, 0, NaN, 0, 0, 1]), RangeError,
       /data\[2\] \(x of point 1, in polygon 0 ring 0\) is NaN/);
     // Usable after all that, and nothing left on the heap.
