@@ -162,6 +162,25 @@ function checkBbox(bbox, flatX, flatY) {
   }
 }
 
+// Every pixel on a place of its own, as the core maps them (x = minX + (maxX - minX) i /
+// (width - 1), the last column at maxX; rows from maxY down): a bbox within ulps of flat maps
+// neighbours together.
+function checkPixelPlaces({ minX, minY, maxX, maxY }, { width, height }) {
+  const place = (i, last, from, to) => (i === last ? to : from + (to - from) * (i / last));
+  for (let i = 1; i < width; i++) {
+    if (!(place(i, width - 1, minX, maxX) > place(i - 1, width - 1, minX, maxX))) {
+      throw new RangeError(`geocdt: options.bbox is too narrow for ${width} columns: columns `
+        + `${i - 1} and ${i} land on the same x`);
+    }
+  }
+  for (let j = 1; j < height; j++) {
+    if (!(place(j, height - 1, maxY, minY) < place(j - 1, height - 1, maxY, minY))) {
+      throw new RangeError(`geocdt: options.bbox is too low for ${height} rows: rows ${j - 1} `
+        + `and ${j} land on the same y`);
+    }
+  }
+}
+
 // rasterize()'s options: { bbox: [minX, minY, maxX, maxY], width, height }, within what a
 // Float32Array in the wasm heap can hold.
 export function checkRaster(options, valuesPerPoint) {
@@ -442,6 +461,7 @@ export function checkRasterOptions(options, raster) {
     }
     checkBbox(bbox, raster.width === 1, raster.height === 1);
     [checked.minX, checked.minY, checked.maxX, checked.maxY] = bbox;
+    checkPixelPlaces(checked, raster);
   }
   const lines = checkPolylines(breaklines, 'options.breaklines');
   if (Array.isArray(breaklineHeights) && breaklineHeights.some((h) => typeof h === 'object')) {

@@ -48,6 +48,20 @@ Status checkOptions(const RasterView& raster, const TerrainOptions& o) {
     return invalidRaster(
         "bbox must be finite numbers [minX, minY, maxX, maxY] within 1e150, with minX < maxX "
         "and minY < maxY (minX <= maxX for a single column, minY <= maxY for a single row)");
+  // Every pixel on a place of its own: a bbox within ulps of flat maps neighbours together.
+  if (o.hasBbox) {
+    const terrain::PixelFrame frame(o.minX, o.minY, o.maxX, o.maxY, raster.width, raster.height);
+    for (std::uint32_t i = 1; i < raster.width; ++i)
+      if (!(frame.mapX(i) > frame.mapX(i - 1.0)))
+        return invalidRaster("bbox is too narrow for " + std::to_string(raster.width) +
+                             " columns: columns " + std::to_string(i - 1) + " and " +
+                             std::to_string(i) + " land on the same x");
+    for (std::uint32_t j = 1; j < raster.height; ++j)
+      if (!(frame.mapY(j) < frame.mapY(j - 1.0)))
+        return invalidRaster("bbox is too low for " + std::to_string(raster.height) +
+                             " rows: rows " + std::to_string(j - 1) + " and " + std::to_string(j) +
+                             " land on the same y");
+  }
   return Status::success();
 }
 

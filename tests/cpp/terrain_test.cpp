@@ -591,10 +591,22 @@ TEST(Terrain, BadInputIsRefused) {
   o.hasBbox = true;
   o.minX = 1, o.maxX = 0, o.minY = 0, o.maxY = 1;
   EXPECT_EQ(triangulateRaster(view, nullptr, 0, nullptr, o, m).code, StatusCode::InvalidArgument);
+  // Within ulps of flat: neighbouring pixels would land on one place.
+  o.minX = 0, o.maxX = 5e-324, o.minY = 0, o.maxY = 1;
+  Status s = triangulateRaster(view, nullptr, 0, nullptr, o, m);
+  EXPECT_EQ(s.code, StatusCode::InvalidArgument);
+  EXPECT_NE(s.message.find("too narrow for 10 columns"), std::string::npos) << s.message;
+  o.minX = 1, o.maxX = 1 + 0x1p-50, o.minY = 0, o.maxY = 1;
+  EXPECT_EQ(triangulateRaster(view, nullptr, 0, nullptr, o, m).code, StatusCode::InvalidArgument);
+  o.maxX = 2, o.minY = 1, o.maxY = 1 + 0x1p-50;
+  s = triangulateRaster(view, nullptr, 0, nullptr, o, m);
+  EXPECT_NE(s.message.find("too low for 10 rows"), std::string::npos) << s.message;
+  o.minY = 0, o.maxY = 1;
+  EXPECT_TRUE(triangulateRaster(view, nullptr, 0, nullptr, o, m).ok());
   EXPECT_EQ(triangulateRaster({r.heights.data(), 0, 10}, nullptr, 0, nullptr, {}, m).code,
             StatusCode::InvalidArgument);
   r.heights[23] = std::nan("");
-  Status s = triangulateRaster(view, nullptr, 0, nullptr, {}, m);
+  s = triangulateRaster(view, nullptr, 0, nullptr, {}, m);
   EXPECT_EQ(s.code, StatusCode::InvalidCoordinate);
   EXPECT_EQ(s.index, 23u);
   EXPECT_NE(s.message.find("column 3, row 2"), std::string::npos) << s.message;

@@ -283,6 +283,10 @@ test('bad input is a clear RangeError or TypeError, and the module stays usable'
   throwsWith(() => triangulateRaster(ok, { bbox: [1, 0, 0, 1] }), RangeError, /bbox/);
   throwsWith(() => triangulateRaster(ok, { bbox: [0, 0, 0, 1] }), RangeError,
     /must have minX < maxX and minY < maxY/);
+  throwsWith(() => triangulateRaster(ok, { bbox: [0, 0, 5e-324, 1] }), RangeError,
+    /bbox is too narrow for 4 columns: columns 0 and 1 land on the same x/);
+  throwsWith(() => triangulateRaster(ok, { bbox: [0, 1, 1, 1 + 2 ** -52] }), RangeError,
+    /bbox is too low for 3 rows/);
   throwsWith(() => triangulateRaster(ok, { bbox: [0, 0, 2e150, 1] }), RangeError,
     /bbox\[2\] is 2e\+150, beyond the supported/);
   throwsWith(() => triangulateRaster(ok, { breaklines: [[0, 0, 1, 1]],
