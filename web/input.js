@@ -74,18 +74,18 @@ export function checkOffsets(offsets, name, things, parts) {
   if (offsets.length === 0) {
     throw new RangeError(`geocdt: ${name} is empty: n ${things} take n + 1 offsets`);
   }
-  // (Signed offsets would wrap past 2^31 on their way into the binding's unsigned ones.)
-  if (offsets instanceof Int32Array || Array.isArray(offsets)) {
-    for (let i = 0; i < offsets.length; i++) {
-      if (offsets[i] < 0) {
-        const short = name.slice(name.lastIndexOf('.') + 1);
-        const why = i === 0 ? 'the first offset must be 0'
-          : `below ${short}[${i - 1}] = ${offsets[i - 1]}`;
-        throw new RangeError(`geocdt: ${name}[${i}] is ${offsets[i]}: ${why}`);
-      }
-    }
-  }
   return offsets;
+}
+
+// A negative offset of an Int32Array, which would wrap past 2^31 on its way into the binding's
+// unsigned ones (an array's are checked as they are copied).
+function checkSignedOffsets(offsets, name) {
+  if (!(offsets instanceof Int32Array)) return;
+  const i = offsets.findIndex((v) => v < 0);
+  if (i < 0) return;
+  const why = i === 0 ? 'offsets cannot be negative'
+    : `below ${name}[${i - 1}] = ${offsets[i - 1]}`;
+  throw new RangeError(`geocdt: ${name}[${i}] is ${offsets[i]}: ${why}`);
 }
 
 // The flat polylines form: { coords, offsets } in GeoArrow's layout.
@@ -266,6 +266,8 @@ export function checkPolygons(polygons) {
   checkCoordinates(coords, 'coords');
   checkOffsets(ringOffsets, 'ringOffsets', 'rings', 'vertex');
   checkOffsets(polygonOffsets, 'polygonOffsets', 'polygons', 'ring');
+  checkSignedOffsets(ringOffsets, 'ringOffsets');
+  checkSignedOffsets(polygonOffsets, 'polygonOffsets');
   return { coords, ringOffsets, polygonOffsets };
 }
 
