@@ -1,4 +1,4 @@
-// Triangulation's editing calls: removePoint(s), removePolyline and movePoint. Each checks its
+// Triangulation's editing calls: removePoint, removePolyline and movePoint. Each checks its
 // arguments before it changes anything, takes the constraints off what changes
 // (ConstraintEditor), removes or moves the vertices (Delaunay::removeVertex,
 // reinsertVertex), then inserts the joined chains and the moved segments again, computing
@@ -11,8 +11,8 @@
 #include "constraints/chain_check.h"
 #include "constraints/constraint_editor.h"
 #include "constraints/snap_rounding.h"
-#include "delaunay/insertion_order.h"
 #include "delaunay/vertex_edges.h"
+#include "edit_refusals.h"
 #include "geocdt/triangulation.h"
 #include "invalid_coordinate.h"
 #include "out_of_memory.h"
@@ -23,30 +23,6 @@ namespace geocdt {
 namespace {
 
 using State = Triangulation::State;
-
-Status invalidEdit(const std::string& message, std::size_t index) {
-  return {StatusCode::InvalidArgument, message, index};
-}
-
-// What vertex v is, for messages.
-std::string describe(const EditState& edit, std::uint32_t v) {
-  const std::uint8_t kind = edit.kind(v);
-  if (kind & kPointVertex) return "a point";
-  if (kind & kPolylineVertex) return "a polyline's vertex";
-  if (kind & kSteinerVertex) return "a Steiner point of refinement";
-  return "a crossing of polylines";
-}
-
-// A vertex id that names a vertex now, or the reason it does not.
-Status checkId(const Delaunay& d, std::uint32_t id, const char* call) {
-  if (id >= d.vertexCount())
-    return invalidEdit(std::string(call) + ": no vertex has id " + std::to_string(id) +
-                           " (ids given so far run below " + std::to_string(d.vertexCount()) + ")",
-                       id);
-  if (d.isRemoved(id))
-    return invalidEdit(std::string(call) + ": vertex " + std::to_string(id) + " was removed", id);
-  return Status::success();
-}
 
 // f(e) for each half-edge out of v (v in the triangulation); stops when f returns true.
 template <typename F>
@@ -458,7 +434,7 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
   if (!(edit.kind(id) & kPointVertex))
     return invalidEdit("removePoint: vertex " + std::to_string(id) +
                            " is not a point inserted with insertPoints (it is " +
-                           describe(edit, id) + ")",
+                           describeVertex(edit, id) + ")",
                        id);
   if (removed) *removed = false;
   return catchOutOfMemory(
@@ -487,77 +463,6 @@ Status Triangulation::removePoint(std::uint32_t id, bool* removed) {
         return finishEdit(state, editor, ends, keep);
       },
       [&] { state.clear(); });
-}
-
-namespace {
-
-// The first k < count whose id came before in ids (its index in repeat, the earlier one's in
-// first), or false. count must stay below 2^32.
-bool firstRepeat(const std::uint32_t* ids, std::size_t count, std::size_t& repeat,
-                 std::size_t& first) {
-  std::vector<std::uint64_t> byId(count);
-  for (std::size_t k = 0; k < count; ++k) byId[k] = std::uint64_t{ids[k]} << 32 | k;
-  std::sort(byId.begin(), byId.end());
-  repeat = count;
-  for (std::size_t i = 1; i < count; ++i) {
-    const std::size_t k = static_cast<std::uint32_t>(byId[i]);
-    if (byId[i] >> 32 != byId[i - 1] >> 32 || k >= repeat) continue;
-    repeat = k;  // the group's second: its earliest repeat
-    std::size_t j = i - 1;
-    while (j > 0 && byId[j - 1] >> 32 == byId[i] >> 32) --j;
-    first = static_cast<std::uint32_t>(byId[j]);
-  }
-  return repeat < count;
-}
-
-}  // namespace
-
-Status Triangulation::removePoints(const std::uint32_t* ids, std::size_t count,
-                                   std::size_t* removed) {
-  const Delaunay& d = state_->delaunay;
-  const EditState& edit = state_->edit;
-  if (removed) *removed = 0;
-  // Every id checked before anything changes; the first bad one in ids' order is named (with
-  // its index), whether it names no point now or repeats an earlier one. Then the order.
-  std::vector<std::uint32_t> order;
-  const Status checked = catchOutOfMemory(
-      [&] {
-        std::size_t bad = 0;
-        while (bad < count && ids[bad] < d.vertexCount() && !d.isRemoved(ids[bad]) &&
-               (edit.kind(ids[bad]) & kPointVertex))
-          ++bad;
-        // Past vertexCount() valid ids, one must repeat: the search stops there.
-        std::size_t repeat = 0, first = 0;
-        if (firstRepeat(ids, std::min<std::size_t>(bad, d.vertexCount() + std::size_t{1}), repeat,
-                        first))
-          return invalidEdit("removePoints: ids[" + std::to_string(repeat) + "]: vertex " +
-                                 std::to_string(ids[repeat]) + " is also ids[" +
-                                 std::to_string(first) + "]",
-                             repeat);
-        if (bad < count) {
-          const std::string call = "removePoints: ids[" + std::to_string(bad) + "]";
-          Status s = checkId(d, ids[bad], call.c_str());
-          if (s.ok())
-            s = invalidEdit(call + ": vertex " + std::to_string(ids[bad]) +
-                                " is not a point inserted with insertPoints (it is " +
-                                describe(edit, ids[bad]) + ")",
-                            bad);
-          s.index = bad;
-          return s;
-        }
-        // Along a Hilbert curve of their places: consecutive removals touch nearby memory.
-        order = insertionOrder(d.xy.data(), ids, static_cast<std::uint32_t>(count),
-                               InsertionOrder::Hilbert);
-        return Status::success();
-      },
-      [] {}, "out of memory while checking the ids of removePoints: nothing changed");
-  if (!checked.ok()) return checked;
-  for (const std::uint32_t id : order) {
-    bool went = false;
-    if (const Status s = removePoint(id, &went); !s.ok()) return s;
-    if (removed && went) ++*removed;
-  }
-  return Status::success();
 }
 
 Status Triangulation::removePolyline(std::size_t polyline) {
@@ -611,7 +516,8 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
   EditState& edit = state.edit;
   if (const Status s = checkId(d, id, "movePoint"); !s.ok()) return s;
   if (!(edit.kind(id) & (kPointVertex | kPolylineVertex)))
-    return invalidEdit("movePoint: vertex " + std::to_string(id) + " is " + describe(edit, id) +
+    return invalidEdit("movePoint: vertex " + std::to_string(id) + " is " +
+                           describeVertex(edit, id) +
                            ", which moves only with what it was made from",
                        id);
   if (!std::isfinite(x) || !std::isfinite(y) || std::fabs(x) > kMaxCoordinate ||
@@ -660,7 +566,7 @@ Status Triangulation::movePoint(std::uint32_t id, double x, double y) {
   if (there != kGhost && (edit.kind(there) & (kPointVertex | kPolylineVertex)))
     return invalidEdit("movePoint: the new place of vertex " + std::to_string(id) +
                            " is that of vertex " + std::to_string(there) + " (" +
-                           describe(edit, there) + ")",
+                           describeVertex(edit, there) + ")",
                        id);
   return catchOutOfMemory([&] { return moveVertex(state, id, x, y, there, near); },
                           [&] { state.clear(); });
