@@ -8,7 +8,7 @@ namespace geocdt {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 // Two doubles that are equal, NaN included.
 bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
@@ -17,7 +17,7 @@ bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)
 
 void VertexValues::grow(std::uint32_t vertexCount) {
   if (!active_) return;
-  values_.resize(static_cast<std::size_t>(vertexCount) * perPoint_, kNaN);
+  values_.resize(static_cast<std::size_t>(vertexCount) * perPoint_, kNoValue);
   given_.resize(vertexCount, 0);
 }
 
@@ -41,7 +41,7 @@ void VertexValues::record(const std::uint32_t* ids, std::size_t count, const dou
     for (std::size_t j = 0; j < k && none && given_[v]; ++j) none = std::isnan(to[j]);
     if (none) {
       given_[v] = 1;
-      for (std::size_t j = 0; j < k; ++j) to[j] = from ? from[j] : kNaN;
+      for (std::size_t j = 0; j < k; ++j) to[j] = from ? from[j] : kNoValue;
       continue;
     }
     if (from == nullptr) continue;
