@@ -175,9 +175,9 @@ void chainOf(const InputSegment& s, std::uint32_t a, std::uint32_t b,
   joinVerticesBetween(s, chain, others, xy);
 }
 
-struct Crossing {
+struct RoundedCrossing {
   double x, y;
-  bool operator<(const Crossing& o) const { return x != o.x ? x < o.x : y < o.y; }
+  bool operator<(const RoundedCrossing& o) const { return x != o.x ? x < o.x : y < o.y; }
 };
 
 }  // namespace
@@ -398,8 +398,8 @@ Status findNearTriangles(Delaunay& fresh, SnapRound& round) {
 
 // Rounded crossings of the segments that cross properly (pairs near a common triangle), and
 // the extra hot pixels, sorted and without repeats.
-std::vector<Crossing> roundedCrossings(const Delaunay& fresh, const SnapRound& round,
-                                       const std::vector<double>& extra) {
+std::vector<RoundedCrossing> roundedCrossings(const Delaunay& fresh, const SnapRound& round,
+                                              const std::vector<double>& extra) {
   const auto& slotSegment = round.slotSegment;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   for (std::size_t from = 0; from < slotSegment.size();) {
@@ -412,32 +412,33 @@ std::vector<Crossing> roundedCrossings(const Delaunay& fresh, const SnapRound& r
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  std::vector<Crossing> crossings;
+  std::vector<RoundedCrossing> crossings;
   for (const auto& [i, j] : pairs) {
     const InputSegment s = segmentOf(fresh, i), t = segmentOf(fresh, j);
     if (!crossProperly(s, t)) continue;
-    Crossing c{};
+    RoundedCrossing c{};
     roundedCrossing(s, t, c.x, c.y);
     crossings.push_back(c);
   }
   for (std::size_t k = 0; k + 1 < extra.size(); k += 2) {
-    Crossing c{};
+    RoundedCrossing c{};
     c.x = extra[k];
     c.y = extra[k + 1];
     crossings.push_back(c);
   }
   std::sort(crossings.begin(), crossings.end());
-  crossings.erase(
-      std::unique(crossings.begin(), crossings.end(),
-                  [](const Crossing& a, const Crossing& b) { return a.x == b.x && a.y == b.y; }),
-      crossings.end());
+  crossings.erase(std::unique(crossings.begin(), crossings.end(),
+                              [](const RoundedCrossing& a, const RoundedCrossing& b) {
+                                return a.x == b.x && a.y == b.y;
+                              }),
+                  crossings.end());
   return crossings;
 }
 
 // Each new crossing joins the candidates of the segments near the triangles holding it; then
 // all are inserted, numbered from keep on.
-Status insertCrossings(Delaunay& fresh, std::uint32_t keep, const std::vector<Crossing>& crossings,
-                       SnapRound& round) {
+Status insertCrossings(Delaunay& fresh, std::uint32_t keep,
+                       const std::vector<RoundedCrossing>& crossings, SnapRound& round) {
   const auto near = [&](std::int32_t t, std::uint32_t v) {
     const std::uint32_t slot = static_cast<std::uint32_t>(t);
     auto it = std::lower_bound(round.slotSegment.begin(), round.slotSegment.end(),
