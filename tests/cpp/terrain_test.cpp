@@ -490,6 +490,22 @@ TEST(Terrain, LimitsStopAtTheLargestErrorFirst) {
   EXPECT_LE(c.points.size() / 2, 300u);
 }
 
+// Past about 30,000 triangles the mesher takes the largest error tile by tile, for the cache;
+// a limit keeps the largest error first all the way. 30,000 vertices are more than greedy
+// insertion needs for 10 m on the DEM (about 28,300); tile by tile, the tiles after the first
+// would still be far coarser.
+TEST(Terrain, LimitsKeepTheLargestErrorFirstOnLargeMeshes) {
+  const RasterFile r = jacksboro();
+  ASSERT_EQ(r.width, 403u);
+  TerrainOptions o;
+  o.maxVertices = 30000;
+  TerrainStats stats;
+  const Mesh m = mesh(r, o, {}, nullptr, &stats);
+  EXPECT_EQ(m.points.size() / 2, 30000u);
+  EXPECT_LE(stats.maxError, 10.0);
+  expectWithinBound(m, r, stats.maxError);
+}
+
 TEST(Terrain, MinAngleRefinesAndKeepsTheBound) {
   const RasterFile r = hills(120, 90, 6);
   TerrainOptions o = withError(1);

@@ -1,8 +1,10 @@
 #pragma once
-// The items waiting to be split (triangles by slot, border segments by index), largest error
-// first: a binary max-heap that knows where each item sits, so that an item whose error
-// changes moves in place instead of leaving a stale entry behind. Only items whose error
-// exceeds the bound are in it: the others would never be split.
+// The items waiting to be split (triangles by slot, border segments by index), the lowest rank
+// first and the largest error first within a rank. Each rank (a tile, once the mesher orders
+// by tiles; all 0 before) has a binary max-heap of its own, small and warm while its tile is
+// meshed, and every item knows where it sits, so that an item whose error changes moves in
+// place instead of leaving a stale entry behind. Only items whose error exceeds the bound are
+// in it: the others would never be split.
 #include <cstdint>
 #include <vector>
 
@@ -10,50 +12,73 @@ namespace geocdt::terrain {
 
 class CandidateQueue {
  public:
-  bool empty() const { return heap_.empty(); }
-  std::size_t size() const { return heap_.size(); }
-  std::uint32_t top() const { return heap_[0].item; }
-  double topError() const { return heap_[0].error; }
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  std::uint32_t top() const { return heaps_[first_][0].item; }
+  double topError() const { return heaps_[first_][0].error; }
+  std::uint32_t topRank() const { return first_; }
 
-  // Puts item in the queue with this error, or moves it there if it is in already.
-  void set(std::uint32_t item, double error) {
-    if (item >= position_.size()) position_.resize(item + item / 2 + 16, kAbsent);
-    std::uint32_t at = position_[item];
+  // Puts item in the queue with this error and rank, or moves it there if it is in already.
+  void set(std::uint32_t item, double error, std::uint32_t rank = 0) {
+    if (item >= position_.size()) {
+      position_.resize(item + item / 2 + 16, kAbsent);
+      rank_.resize(position_.size(), 0);
+    }
+    if (position_[item] != kAbsent && rank_[item] != rank) remove(item);
+    const std::uint32_t at = position_[item];
     if (at == kAbsent) {
-      at = static_cast<std::uint32_t>(heap_.size());
-      heap_.push_back({error, item});
-      position_[item] = at;
-      up(at);
+      push(item, error, rank);
       return;
     }
-    const double before = heap_[at].error;
-    heap_[at].error = error;
+    std::vector<Entry>& heap = heaps_[rank];
+    const double before = heap[at].error;
+    heap[at].error = error;
     if (error > before) {
-      up(at);
+      up(heap, at);
     } else {
-      down(at);
+      down(heap, at);
     }
   }
 
   void remove(std::uint32_t item) {
     if (item >= position_.size() || position_[item] == kAbsent) return;
-    const std::uint32_t at = position_[item];
+    const std::uint32_t at = position_[item], rank = rank_[item];
     position_[item] = kAbsent;
-    const Entry last = heap_.back();
-    heap_.pop_back();
-    if (at == heap_.size()) return;
-    heap_[at] = last;
+    --size_;
+    std::vector<Entry>& heap = heaps_[rank];
+    const Entry last = heap.back();
+    heap.pop_back();
+    if (heap.empty()) {
+      filled_[rank / 64] &= ~(std::uint64_t{1} << rank % 64);
+      if (rank == first_ && size_ > 0) first_ = nextFilled(rank);
+      return;
+    }
+    if (at == heap.size()) return;
+    heap[at] = last;
     position_[last.item] = at;
-    if (at > 0 && heap_[(at - 1) / 2].error < last.error) {
-      up(at);
+    if (at > 0 && heap[(at - 1) / 2].error < last.error) {
+      up(heap, at);
     } else {
-      down(at);
+      down(heap, at);
     }
   }
 
+  // Every item's rank anew, from rankOf(item).
+  template <class RankOf>
+  void rerank(RankOf rankOf) {
+    std::vector<Entry> all;
+    for (const std::vector<Entry>& heap : heaps_) all.insert(all.end(), heap.begin(), heap.end());
+    clear();
+    for (const Entry& e : all) push(e.item, e.error, rankOf(e.item));
+  }
+
   void clear() {
-    heap_.clear();
+    for (std::vector<Entry>& heap : heaps_) heap.clear();
     position_.clear();
+    rank_.clear();
+    filled_.assign(filled_.size(), 0);
+    first_ = 0;
+    size_ = 0;
   }
 
  private:
@@ -63,37 +88,71 @@ class CandidateQueue {
     std::uint32_t item;
   };
 
-  void up(std::uint32_t at) {
-    const Entry e = heap_[at];
+  void push(std::uint32_t item, double error, std::uint32_t rank) {
+    if (item >= position_.size()) {
+      position_.resize(item + item / 2 + 16, kAbsent);
+      rank_.resize(position_.size(), 0);
+    }
+    if (rank >= heaps_.size()) {
+      heaps_.resize(rank + 1);
+      filled_.resize(rank / 64 + 1, 0);
+    }
+    std::vector<Entry>& heap = heaps_[rank];
+    if (heap.empty()) filled_[rank / 64] |= std::uint64_t{1} << rank % 64;
+    if (size_ == 0 || rank < first_) first_ = rank;
+    ++size_;
+    rank_[item] = rank;
+    heap.push_back({error, item});
+    up(heap, static_cast<std::uint32_t>(heap.size() - 1));
+  }
+
+  // The lowest rank above `after` whose heap holds an item; one must.
+  std::uint32_t nextFilled(std::uint32_t after) const {
+    std::uint32_t rank = after + 1;
+    while (filled_[rank / 64] >> rank % 64 == 0) rank = (rank / 64 + 1) * 64;
+    std::uint64_t bits = filled_[rank / 64] >> rank % 64;
+    while ((bits & 1) == 0) {
+      bits >>= 1;
+      ++rank;
+    }
+    return rank;
+  }
+
+  void up(std::vector<Entry>& heap, std::uint32_t at) {
+    const Entry e = heap[at];
     while (at > 0) {
       const std::uint32_t parent = (at - 1) / 2;
-      if (!(heap_[parent].error < e.error)) break;
-      heap_[at] = heap_[parent];
-      position_[heap_[at].item] = at;
+      if (!(heap[parent].error < e.error)) break;
+      heap[at] = heap[parent];
+      position_[heap[at].item] = at;
       at = parent;
     }
-    heap_[at] = e;
+    heap[at] = e;
     position_[e.item] = at;
   }
 
-  void down(std::uint32_t at) {
-    const Entry e = heap_[at];
-    const auto n = static_cast<std::uint32_t>(heap_.size());
+  void down(std::vector<Entry>& heap, std::uint32_t at) {
+    const Entry e = heap[at];
+    const auto n = static_cast<std::uint32_t>(heap.size());
     for (;;) {
       std::uint32_t child = 2 * at + 1;
       if (child >= n) break;
-      if (child + 1 < n && heap_[child].error < heap_[child + 1].error) ++child;
-      if (!(e.error < heap_[child].error)) break;
-      heap_[at] = heap_[child];
-      position_[heap_[at].item] = at;
+      if (child + 1 < n && heap[child].error < heap[child + 1].error) ++child;
+      if (!(e.error < heap[child].error)) break;
+      heap[at] = heap[child];
+      position_[heap[at].item] = at;
       at = child;
     }
-    heap_[at] = e;
+    heap[at] = e;
     position_[e.item] = at;
   }
 
-  std::vector<Entry> heap_;
-  std::vector<std::uint32_t> position_;  // per item: its index in heap_, or kAbsent
+  std::vector<std::vector<Entry>> heaps_;  // per rank
+  std::vector<std::uint32_t> position_;    // per item: its index in its rank's heap, or kAbsent
+  std::vector<std::uint32_t> rank_;        // per item in the queue: its rank
+  std::vector<std::uint64_t> filled_;      // a bit per rank whose heap holds an item
+  std::uint32_t first_ = 0;                // the lowest rank whose heap holds an item
+  std::size_t size_ = 0;
 };
 
 }  // namespace geocdt::terrain

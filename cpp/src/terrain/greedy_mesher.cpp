@@ -113,6 +113,20 @@ void GreedyMesher::addBoundary(std::uint32_t a, std::uint32_t b) {
   }
 }
 
+std::uint32_t GreedyMesher::rankOf(std::int64_t pixel) const {
+  return tiled_ ? tiles_.rank(pixel) : 0;
+}
+
+// Once the mesh outgrows the cache (and no limit asks for the largest errors first), the
+// queues take the tiles' order.
+void GreedyMesher::orderByTiles() {
+  if (tiled_ || triangles_ < TileOrder::kFromTriangles) return;
+  if (limits_.maxTriangles > 0 || limits_.maxVertices > 0) return;
+  tiled_ = true;
+  triangleQueue_.rerank([&](std::uint32_t t) { return rankOf(candidate_[t]); });
+  segmentQueue_.rerank([&](std::uint32_t s) { return rankOf(segments_[s].pixel); });
+}
+
 void GreedyMesher::measureTriangle(std::int32_t t) {
   std::copy(&topo_.tri[3 * t], &topo_.tri[3 * t] + 3, &corners_[3 * t]);
   if (!inside(t)) {
@@ -130,7 +144,7 @@ void GreedyMesher::measureTriangle(std::int32_t t) {
   error_[t] = r.error;
   candidate_[t] = r.pixel;
   if (r.pixel >= 0 && r.error > limits_.maxError) {
-    triangleQueue_.set(static_cast<std::uint32_t>(t), r.error);
+    triangleQueue_.set(static_cast<std::uint32_t>(t), r.error, rankOf(r.pixel));
   } else {
     triangleQueue_.remove(static_cast<std::uint32_t>(t));
   }
@@ -140,7 +154,7 @@ void GreedyMesher::measureSegment(std::uint32_t s) {
   stats_.scannedPixels += segments_.scan(s, d_.xy.data(), z_.data(), raster_);
   const BorderSegment& seg = segments_[s];
   if (seg.pixel >= 0 && seg.error > limits_.maxError) {
-    segmentQueue_.set(s, seg.error);
+    segmentQueue_.set(s, seg.error, rankOf(seg.pixel));
   } else {
     segmentQueue_.remove(s);
   }
@@ -152,8 +166,11 @@ bool GreedyMesher::run(std::uint64_t& inserted) {
   for (;;) {
     const bool triangle = !triangleQueue_.empty(), segment = !segmentQueue_.empty();
     if (!triangle && !segment) break;
+    orderByTiles();
     const bool takeSegment =
-        segment && (!triangle || segmentQueue_.topError() >= triangleQueue_.topError());
+        segment && (!triangle || segmentQueue_.topRank() < triangleQueue_.topRank() ||
+                    (segmentQueue_.topRank() == triangleQueue_.topRank() &&
+                     segmentQueue_.topError() >= triangleQueue_.topError()));
     // A point on the border adds one triangle, one inside adds two.
     const std::uint64_t added = takeSegment ? 1 : 2;
     if (limits_.maxTriangles > 0 && triangles_ + added > limits_.maxTriangles) break;
@@ -451,7 +468,7 @@ void GreedyMesher::moveSlot(std::int32_t from, std::int32_t to) {
   triangleQueue_.remove(static_cast<std::uint32_t>(to));
   if (queued) {
     triangleQueue_.remove(static_cast<std::uint32_t>(from));
-    triangleQueue_.set(static_cast<std::uint32_t>(to), error_[to]);
+    triangleQueue_.set(static_cast<std::uint32_t>(to), error_[to], rankOf(candidate_[to]));
   }
   for (std::int32_t e = 3 * to; e < 3 * to + 3; ++e)
     if (topo_.tri[e] != kGhost) vertexEdge_[topo_.tri[e]] = e;

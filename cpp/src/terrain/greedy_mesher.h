@@ -4,7 +4,8 @@
 // surface; the largest of them all goes in next, through the exact incremental core (split,
 // then Lawson flips). Every triangle an insertion changes has the new vertex as a corner, so
 // only the new vertex's star is scanned again: each pixel is measured again only when its
-// triangle changed.
+// triangle changed. Once the mesh outgrows the cache, the largest error goes first tile by
+// tile (tile_order.h).
 #include <cstdint>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "terrain/border_segments.h"
 #include "terrain/candidate_queue.h"
 #include "terrain/raster_sampler.h"
+#include "terrain/tile_order.h"
 
 namespace geocdt::terrain {
 
@@ -82,6 +84,8 @@ class GreedyMesher {
 
  private:
   bool inside(std::int32_t t) const;
+  std::uint32_t rankOf(std::int64_t pixel) const;  // the queues' rank of a candidate
+  void orderByTiles();
   void measureTriangle(std::int32_t t);
   void measureSegment(std::uint32_t s);
   void markBoundary();
@@ -133,6 +137,8 @@ class GreedyMesher {
   std::uint32_t firstInserted_ = kGhost;  // the first vertex run() inserted
   std::vector<std::uint32_t> plan_;       // decimate()'s planned triangles
   CandidateQueue triangleQueue_, segmentQueue_;
+  TileOrder tiles_{raster_.width(), raster_.height()};
+  bool tiled_ = false;  // whether the queues rank by tile
   BorderSegments segments_;
 };
 

@@ -1,0 +1,65 @@
+#pragma once
+// The order of the greedy insertion once the mesh outgrows the cache: square tiles of pixels
+// in Morton order, the largest error first inside each. Greedy insertion otherwise jumps to
+// the largest error anywhere, a cache miss per triangle it touches in a mesh of megabytes;
+// tile by tile, the triangles it touches were made moments before. The order changes which
+// vertices go in, never the bound they meet (bench/EXPERIMENTS.md, TN30).
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+// The fuzz build takes tiles of 4 x 4 pixels from 32 triangles on, so that its small rasters
+// go through this order too.
+#ifndef GEOCDT_TERRAIN_TILE_SHIFT
+#define GEOCDT_TERRAIN_TILE_SHIFT 7
+#endif
+#ifndef GEOCDT_TERRAIN_TILES_FROM
+#define GEOCDT_TERRAIN_TILES_FROM 30000
+#endif
+
+namespace geocdt::terrain {
+
+class TileOrder {
+ public:
+  static constexpr std::uint32_t kTileShift = GEOCDT_TERRAIN_TILE_SHIFT;  // 128 x 128 pixels
+  // Greedy order until the mesh has this many triangles (about 2 MB of mesh and queue).
+  static constexpr std::uint64_t kFromTriangles = GEOCDT_TERRAIN_TILES_FROM;
+
+  TileOrder(std::uint32_t width, std::uint32_t height)
+      : width_(width), across_(width == 0 ? 0 : ((width - 1) >> kTileShift) + 1) {
+    const std::uint32_t down = height == 0 ? 0 : ((height - 1) >> kTileShift) + 1;
+    std::vector<std::uint64_t> keys;  // Morton code << 32 | tile
+    for (std::uint32_t ty = 0; ty < down; ++ty)
+      for (std::uint32_t tx = 0; tx < across_; ++tx)
+        keys.push_back(std::uint64_t{spread(tx) | spread(ty) << 1} << 32 | (ty * across_ + tx));
+    std::sort(keys.begin(), keys.end());
+    rank_.resize(keys.size());
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      rank_[keys[k] & 0xFFFFFFFFu] = static_cast<std::uint32_t>(k);
+  }
+
+  // The rank of a pixel's tile, below the number of tiles: lower ranks go first.
+  std::uint32_t rank(std::int64_t pixel) const {
+    if (pixel < 0) return 0;
+    const auto p = static_cast<std::uint64_t>(pixel);
+    const auto x = static_cast<std::uint32_t>(p % width_) >> kTileShift;
+    const auto y = static_cast<std::uint32_t>(p / width_) >> kTileShift;
+    return rank_[y * across_ + x];
+  }
+
+ private:
+  // The low 16 bits of v on the even bits of the result.
+  static std::uint32_t spread(std::uint32_t v) {
+    v &= 0xFFFFu;
+    v = (v | v << 8) & 0x00FF00FFu;
+    v = (v | v << 4) & 0x0F0F0F0Fu;
+    v = (v | v << 2) & 0x33333333u;
+    v = (v | v << 1) & 0x55555555u;
+    return v;
+  }
+
+  std::uint32_t width_, across_;     // pixels and tiles in a row
+  std::vector<std::uint32_t> rank_;  // per tile, row by row
+};
+
+}  // namespace geocdt::terrain
