@@ -11,7 +11,7 @@
 // The fuzz build takes tiles of 4 x 4 pixels from 32 triangles on, so that its small rasters
 // go through this order too.
 #ifndef GEOCDT_TERRAIN_TILE_SHIFT
-#define GEOCDT_TERRAIN_TILE_SHIFT 7
+#define GEOCDT_TERRAIN_TILE_SHIFT 6
 #endif
 #ifndef GEOCDT_TERRAIN_TILES_FROM
 #define GEOCDT_TERRAIN_TILES_FROM 30000
@@ -21,7 +21,7 @@ namespace geocdt::terrain {
 
 class TileOrder {
  public:
-  static constexpr std::uint32_t kTileShift = GEOCDT_TERRAIN_TILE_SHIFT;  // 128 x 128 pixels
+  static constexpr std::uint32_t kTileShift = GEOCDT_TERRAIN_TILE_SHIFT;  // 64 x 64 pixels
   // Greedy order until the mesh has this many triangles (about 2 MB of mesh and queue).
   static constexpr std::uint64_t kFromTriangles = GEOCDT_TERRAIN_TILES_FROM;
 
