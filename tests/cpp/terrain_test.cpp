@@ -490,7 +490,7 @@ TEST(Terrain, LimitsStopAtTheLargestErrorFirst) {
   EXPECT_LE(c.points.size() / 2, 300u);
 }
 
-// Past about 30,000 triangles the mesher takes the largest error tile by tile, for the cache;
+// Past 12,000 triangles the mesher takes the largest error tile by tile, for the cache;
 // a limit keeps the largest error first all the way. 30,000 vertices are more than greedy
 // insertion needs for 10 m on the DEM (about 28,300); tile by tile, the tiles after the first
 // would still be far coarser.

@@ -14,7 +14,7 @@
 #define GEOCDT_TERRAIN_TILE_SHIFT 6
 #endif
 #ifndef GEOCDT_TERRAIN_TILES_FROM
-#define GEOCDT_TERRAIN_TILES_FROM 30000
+#define GEOCDT_TERRAIN_TILES_FROM 12000
 #endif
 
 namespace geocdt::terrain {
@@ -22,7 +22,7 @@ namespace geocdt::terrain {
 class TileOrder {
  public:
   static constexpr std::uint32_t kTileShift = GEOCDT_TERRAIN_TILE_SHIFT;  // 64 x 64 pixels
-  // Greedy order until the mesh has this many triangles (about 2 MB of mesh and queue).
+  // Strict greedy order until the mesh has this many triangles (about 1 MB of mesh and queue).
   static constexpr std::uint64_t kFromTriangles = GEOCDT_TERRAIN_TILES_FROM;
 
   TileOrder(std::uint32_t width, std::uint32_t height)
