@@ -20,10 +20,7 @@ class CandidateQueue {
 
   // Puts item in the queue with this error and rank, or moves it there if it is in already.
   void set(std::uint32_t item, double error, std::uint32_t rank = 0) {
-    if (item >= position_.size()) {
-      position_.resize(item + item / 2 + 16, kAbsent);
-      rank_.resize(position_.size(), 0);
-    }
+    fit(item);
     if (position_[item] != kAbsent && rank_[item] != rank) remove(item);
     const std::uint32_t at = position_[item];
     if (at == kAbsent) {
@@ -88,11 +85,15 @@ class CandidateQueue {
     std::uint32_t item;
   };
 
+  // Room for item in the per-item arrays, grown by half again.
+  void fit(std::uint32_t item) {
+    if (item < position_.size()) return;
+    position_.resize(item + item / 2 + 16, kAbsent);
+    rank_.resize(position_.size(), 0);
+  }
+
   void push(std::uint32_t item, double error, std::uint32_t rank) {
-    if (item >= position_.size()) {
-      position_.resize(item + item / 2 + 16, kAbsent);
-      rank_.resize(position_.size(), 0);
-    }
+    fit(item);
     if (rank >= heaps_.size()) {
       heaps_.resize(rank + 1);
       filled_.resize(rank / 64 + 1, 0);
