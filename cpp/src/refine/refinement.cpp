@@ -82,15 +82,22 @@ void Refiner::rebuild() {
   }
   vertexEdge_.assign(d_.vertexCount(), -1);
   onSubsegment_.assign(d_.vertexCount(), 0);
+  // A byte per slot for whether it is a ghost: the twins' slots are read in no order, and
+  // their corners are three times the memory (bench/EXPERIMENTS.md, TN31).
+  const std::uint32_t* tri = topo_.tri.data();
+  const auto slots = static_cast<std::size_t>(topo_.slotCount());
+  ghostSlot_.resize(slots);
+  for (std::size_t t = 0; t < slots; ++t)
+    ghostSlot_[t] =
+        (tri[3 * t] == kGhost) | (tri[3 * t + 1] == kGhost) | (tri[3 * t + 2] == kGhost);
   // One pass: a half-edge out of each vertex (the last one), and the ends of subsegments
   // (the flag first, the corners of the triangle only for the few that have it).
-  const std::uint32_t* tri = topo_.tri.data();
   forChunks(0, topo_.tri.size(), [&](std::size_t begin, std::size_t end) {
     for (auto e = static_cast<std::int32_t>(begin); e < static_cast<std::int32_t>(end); ++e) {
       const std::uint32_t v = tri[e];
       if (v == kGhost) continue;  // (then a ghost triangle's edge, on no subsegment)
       vertexEdge_[v] = e;
-      if (isSubsegment(e) && !topo_.isGhost(e / 3)) onSubsegment_[v] = 1;
+      if (!ghostSlot_[e / 3] && startSubsegment(e)) onSubsegment_[v] = 1;
     }
   });
 }
@@ -248,7 +255,7 @@ void Refiner::start() {
            static_cast<std::uint64_t>(std::min(byArea, 1e18));
   }
   for (std::int32_t e = 0; keepAll_ && e < static_cast<std::int32_t>(topo_.tri.size()); ++e) {
-    if (topo_.isGhost(e / 3) || !topo_.isGhost(topo_.adj[e] / 3) || topo_.fixed[e]) continue;
+    if (ghostSlot_[e / 3] || !ghostSlot_[topo_.adj[e] / 3] || topo_.fixed[e]) continue;
     const std::uint32_t a = topo_.tri[e], b = topo_.tri[nextEdge(e)];
     hullOf_[ConstraintStore::key(a, b)] = static_cast<std::uint32_t>(hull_.size());
     hull_.push_back({x(a), y(a), x(b), y(b)});
@@ -259,14 +266,15 @@ void Refiner::start() {
   forChunks(
       0, static_cast<std::size_t>(topo_.slotCount()), [&](std::size_t begin, std::size_t end) {
         for (auto t = static_cast<std::int32_t>(begin); t < static_cast<std::int32_t>(end); ++t) {
+          if (ghostSlot_[t]) continue;
           checkTriangle(t);
-          if (topo_.isGhost(t)) continue;
           for (int k = 0; k < 3; ++k) {
             const std::int32_t e = 3 * t + k, twin = topo_.adj[e];
-            if (isSubsegment(e) && (topo_.isGhost(twin / 3) || e < twin)) queueIfEncroached(e);
+            if (startSubsegment(e) && (ghostSlot_[twin / 3] || e < twin)) queueIfEncroached(e);
           }
         }
       });
+  ghostSlot_ = {};
 }
 
 Status Refiner::resume() {

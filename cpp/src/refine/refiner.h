@@ -186,6 +186,10 @@ class Refiner {
   bool isSubsegment(std::int32_t e) const {
     return topo_.fixed[e] || (keepAll_ && topo_.isGhost(e / 3) != topo_.isGhost(topo_.adj[e] / 3));
   }
+  // The same, from ghostSlot_ (start() only).
+  bool startSubsegment(std::int32_t e) const {
+    return topo_.fixed[e] || (keepAll_ && ghostSlot_[e / 3] != ghostSlot_[topo_.adj[e] / 3]);
+  }
   // The segment a subsegment lies on, and a number naming it: an input segment's index, or
   // past 2^32 the hull edge it comes from; *source, if asked, the constraint store's entry
   // of an input subsegment (where the other segments on it are listed).
@@ -304,6 +308,7 @@ class Refiner {
   // Per vertex: 1 for an end of a subsegment. Most vertices are on none, and smallInputAngle
   // learns that here instead of turning round them.
   std::vector<std::uint8_t> onSubsegment_;
+  std::vector<std::uint8_t> ghostSlot_;   // per slot, during start() only
   std::vector<std::uint32_t> segmentAt_;  // per vertex (see segmentAt)
   std::vector<std::uint32_t> stamp_;  // per slot: the large cavity search (or count) that saw it
   std::uint32_t epoch_ = 0;
