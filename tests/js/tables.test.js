@@ -11,8 +11,10 @@ import { PHASES } from './support/progress.js';
 
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
 // The declarations of the package's main entry: index.d.ts and the files it exports.
-const typesText = ['index', 'polygon-types', 'raster-types', 'voronoi-types']
-  .map((name) => read(`../../web/${name}.d.ts`)).join('\n');
+const indexTypes = read('../../web/index.d.ts');
+const exported = [...indexTypes.matchAll(/^export \* from '\.\/(.+)\.js';$/gm)].map((m) => m[1]);
+const typesText = [indexTypes, ...exported.map((name) => read(`../../web/${name}.d.ts`))]
+  .join('\n');
 // The declarations without their comments, which may hold any character.
 const types = typesText.replace(/\/\*[\s\S]*?\*\//g, '').replace(/\/\/.*$/gm, '');
 const api = read('../../web/API.md');
