@@ -1,5 +1,6 @@
 // The public API, shared by the Node and browser entries; each entry passes the function that
 // instantiates the wasm module in its environment.
+import { checkOptionNames } from './call-options.js';
 import { Kernel } from './kernel.js';
 import { GeocdtError } from './errors.js';
 import {
@@ -24,11 +25,12 @@ function finish(mesh, started) {
 }
 
 // Options of the incremental insertions: only onProgress.
-function insertOptions(options) {
+function insertOptions(options, call) {
   if (options == null) return undefined;
   if (typeof options !== 'object') {
     throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
   }
+  checkOptionNames(options, call);
   return options.onProgress;
 }
 
@@ -56,6 +58,11 @@ export function createApi(instantiate) {
   // options.warmUp: false starts no warm-up worker (web/warm-up.js). options.threads: a
   // number of threads or 'auto'; more than 1 loads the threaded build where it can run.
   function init(options) {
+    try {
+      checkOptionNames(options, 'init()');
+    } catch (error) {
+      return Promise.reject(error);
+    }
     if (kernel !== null) return Promise.resolve();
     const warmUp = options?.warmUp;
     if (warmUp !== undefined && typeof warmUp !== 'boolean') {
@@ -74,6 +81,8 @@ export function createApi(instantiate) {
     const started = now();
     const k = ready();
     const o = k.meshOptions(options);
+    checkOptionNames(options, 'triangulate()');
+    checkOptionNames(options?.refine, 'options.refine');
     const valuesPerPoint = checkValuesPerPoint(options);
     const checked = checkInput(input, valuesPerPoint);
     const r = k.refineOptions(options?.refine);
@@ -85,12 +94,14 @@ export function createApi(instantiate) {
   function triangulateRaster(raster, options) {
     const started = now();
     const k = ready();
+    checkOptionNames(options, 'triangulateRaster()');
     const checked = checkHeightmap(raster);
     const mesh = k.triangulateRaster(checked, checkRasterOptions(options, checked));
     return finish(mesh, started);
   }
 
   function triangulateGeoJSON(geojson, options) {
+    checkOptionNames(options, 'triangulateGeoJSON()');
     const { output, rest: chosen } = geoJSONOutput(options);
     const { perFeature, rest } = perFeatureMode(chosen);
     const input = readGeoJSON(geojson);
@@ -109,6 +120,7 @@ export function createApi(instantiate) {
     const k = ready();
     const checked = checkPolygons(polygons);
     const fill = k.fillRuleOption(options);
+    checkOptionNames(options, 'triangulatePolygons()');
     const result = k.triangulatePolygons(checked, fill, 2, POLYGON_NAMES);
     result.stats.polygons = checked.polygonOffsets.length - 1;
     result.stats.milliseconds = now() - started;
@@ -132,6 +144,10 @@ export function createApi(instantiate) {
   function voronoi(input, options) {
     const started = now();
     const k = ready();
+    checkOptionNames(options, 'voronoi()');
+    if (options?.lloyd !== null && typeof options?.lloyd === 'object') {
+      checkOptionNames(options.lloyd, 'options.lloyd');
+    }
     const { points, lines } = checkInput(input, 1, 'voronoi');
     if (points.length === 0) {
       throw new RangeError('geocdt: voronoi() needs at least one site in input.points');
@@ -150,6 +166,7 @@ export function createApi(instantiate) {
   // feature's id and properties, or with { output: 'arrays' } voronoi()'s arrays and the
   // sites' features.
   function voronoiGeoJSON(geojson, options) {
+    checkOptionNames(options, 'voronoiGeoJSON()');
     const { output, rest } = geoJSONOutput(options);
     const input = readGeoJSON(geojson, { pointFeatures: true });
     const cells = voronoi(sitesAndRings(input), rest);
@@ -215,6 +232,7 @@ export function createApi(instantiate) {
       if (options != null && typeof options !== 'object') {
         throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
       }
+      checkOptionNames(options, 'new Triangulation()');
       this.#kernel = ready();
       this.#valuesPerPoint = checkValuesPerPoint(options);
       this.#incremental = this.#kernel.createIncremental(this.#valuesPerPoint);
@@ -227,7 +245,8 @@ export function createApi(instantiate) {
       const { values, options } = splitValues(maybeValues, maybeOptions);
       const checked = values == null ? undefined
         : checkValues(values, xy.length / 2, this.#valuesPerPoint, `${name} values`);
-      return this.#kernel.insert(live, xy, polyline, insertOptions(options), checked);
+      return this.#kernel.insert(live, xy, polyline,
+        insertOptions(options, polyline ? 'insertPolyline()' : 'insertPoints()'), checked);
     }
 
     #live() {
@@ -252,6 +271,7 @@ export function createApi(instantiate) {
     interpolate(points, options) {
       const live = this.#live();
       const method = this.#kernel.method(options);
+      checkOptionNames(options, 'interpolate()');
       return this.#kernel.interpolate(live, checkCoordinates(points, 'points'), method);
     }
 
@@ -259,6 +279,7 @@ export function createApi(instantiate) {
     rasterize(options) {
       const live = this.#live();
       const raster = checkRaster(options, this.#valuesPerPoint);
+      checkOptionNames(options, 'rasterize()');
       return this.#kernel.rasterize(live, raster, this.#kernel.method(options));
     }
 
@@ -320,6 +341,7 @@ export function createApi(instantiate) {
       if (options != null && typeof options !== 'object') {
         throw new TypeError(`geocdt: options must be an object, got ${describe(options)}`);
       }
+      checkOptionNames(options, 'refine()');
       const o = this.#kernel.meshOptions(
         options == null ? undefined : { keep: options.keep, fillRule: options.fillRule });
       const r = this.#kernel.refineOptions(options ?? {}, 'options');
@@ -332,6 +354,7 @@ export function createApi(instantiate) {
       const started = now();
       const live = this.#live();
       const o = this.#kernel.meshOptions(options);
+      checkOptionNames(options, 'results()');
       const polygons = options?.polygons == null ? undefined
         : checkOffsets(options.polygons, 'options.polygons', 'polygons', 'polyline');
       return finish(this.#kernel.mesh(live, o, options?.onProgress, polygons), started);

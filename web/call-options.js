@@ -2,6 +2,61 @@
 // fillRule and method accept come from the module's enums (passed in): no table is kept here.
 import { describe } from './input.js';
 
+// The options each call takes, by the name its errors give it. A name not listed is refused,
+// not ignored: a misspelt option would otherwise leave its default in place without a word.
+const MESH = ['keep', 'fillRule', 'insideFlags', 'segmentSources'];
+const TRIANGULATE = [...MESH, 'valuesPerPoint', 'refine', 'onProgress'];
+const VORONOI = ['clip', 'fillRule', 'lloyd'];
+const OPTION_NAMES = {
+  'init()': ['threads', 'warmUp', 'wasmUrl', 'wasmBinary'],
+  'createWorker()': ['threads'],
+  'triangulate()': TRIANGULATE,
+  'triangulateGeoJSON()': [...TRIANGULATE, 'output', 'perFeature'],
+  'triangulatePolygons()': ['fillRule'],
+  'triangulateRaster()': ['maxError', 'maxTriangles', 'maxVertices', 'decimate', 'noData',
+    'breaklines', 'breaklineHeights', 'minAngle', 'bbox'],
+  'voronoi()': VORONOI,
+  'voronoiGeoJSON()': [...VORONOI, 'output'],
+  'new Triangulation()': ['valuesPerPoint'],
+  'insertPoints()': ['onProgress'],
+  'insertPolyline()': ['onProgress'],
+  'interpolate()': ['method'],
+  'rasterize()': ['bbox', 'width', 'height', 'method'],
+  'refine()': ['minAngle', 'maxArea', 'maxSteinerPoints', 'keep', 'fillRule'],
+  'results()': [...MESH, 'polygons', 'onProgress'],
+  'options.refine': ['minAngle', 'maxArea', 'maxSteinerPoints'],
+  'options.lloyd': ['iterations', 'tolerance'],
+};
+
+// How many single-character edits turn a into b, when at most 2 (else 3).
+function editsApart(a, b) {
+  if (Math.abs(a.length - b.length) > 2) return 3;
+  let row = Array.from({ length: b.length + 1 }, (_, j) => j);
+  for (let i = 1; i <= a.length; i++) {
+    const next = [i];
+    for (let j = 1; j <= b.length; j++) {
+      next[j] = Math.min(row[j] + 1, next[j - 1] + 1, row[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1));
+    }
+    row = next;
+  }
+  return Math.min(row[b.length], 3);
+}
+
+// Throws a TypeError for the first own key of options that `what` (a key of OPTION_NAMES)
+// does not take; also: names the caller's side takes besides (the worker's transfer).
+export function checkOptionNames(options, what, also = []) {
+  if (options === null || typeof options !== 'object') return;
+  const names = [...OPTION_NAMES[what], ...also];
+  for (const key of Object.keys(options)) {
+    if (names.includes(key)) continue;
+    const near = names.find((n) => n.toLowerCase() === key.toLowerCase())
+      ?? names.find((n) => editsApart(key, n) <= 2);
+    const hint = near === undefined ? '' : ` (did you mean '${near}'?)`;
+    throw new TypeError(`geocdt: ${what} has no option '${key}'${hint}; it takes `
+      + `${names.join(', ')}`);
+  }
+}
+
 // An embind enum's names, indexed by value.
 export function enumNames(embindEnum) {
   const names = [];

@@ -2,6 +2,7 @@
 // Input arrays are transferred to the worker and results transferred back, never copied by
 // postMessage; the values are checked in the worker, by the core, as they are copied into
 // the heap.
+import { checkOptionNames } from './call-options.js';
 import { GeocdtError, reviveError } from './errors.js';
 import {
   checkCoordinates, checkEarcutInput, checkHeightmap, checkInput, checkOffsets, checkPolygons,
@@ -25,7 +26,9 @@ function transferable(values, transfer, buffers) {
   return sent;
 }
 
-function takeProgress(options) {
+// options: those of call `what` (call-options.js), and transfer.
+function takeProgress(options, what) {
+  checkOptionNames(options, what, ['transfer']);
   const { transfer = true, onProgress, ...rest } = options ?? {};
   if (onProgress != null && typeof onProgress !== 'function') {
     throw new TypeError(
@@ -99,7 +102,7 @@ export class GeocdtWorker {
   // options.transfer (default true): hand the caller's typed arrays to the worker instead of
   // copying them; they are detached afterwards. options.onProgress({ phase, fraction }).
   async triangulate(input, options) {
-    const { transfer, onProgress, rest } = takeProgress(options);
+    const { transfer, onProgress, rest } = takeProgress(options, 'triangulate()');
     const { points, lines, polygons, values } = checkInput(input, checkValuesPerPoint(rest));
     const buffers = new Set();
     const sent = { points: transferable(points, transfer, buffers) };
@@ -119,7 +122,7 @@ export class GeocdtWorker {
   // triangulatePolygons() in the worker: the batch's arrays are transferred (options.transfer
   // as for triangulate()), the three result arrays transferred back.
   async triangulatePolygons(polygons, options) {
-    const { transfer, rest } = takeProgress(options);
+    const { transfer, rest } = takeProgress(options, 'triangulatePolygons()');
     const { coords, ringOffsets, polygonOffsets } = checkPolygons(polygons);
     const buffers = new Set();
     const sent = {
@@ -142,6 +145,7 @@ export class GeocdtWorker {
   // The heights (and the breaklines' arrays) go to the worker as triangulate()'s points do:
   // transferred unless options.transfer is false.
   async triangulateRaster(raster, options) {
+    checkOptionNames(options, 'triangulateRaster()', ['transfer']);
     const { transfer = true, ...rest } = options ?? {};
     const { heights, width, height } = checkHeightmap(raster);
     const { lines } = checkRasterOptions(rest, { width, height });
@@ -166,6 +170,7 @@ export class GeocdtWorker {
   // worker as transferred arrays, and the triangles come back as GeoJSON or as arrays. The
   // features of the regions stay here.
   async triangulateGeoJSON(geojson, options) {
+    checkOptionNames(options, 'triangulateGeoJSON()', ['transfer']);
     const { output, rest: chosen } = geoJSONOutput(options);
     const { perFeature, rest } = perFeatureMode(chosen);
     const input = readGeoJSON(geojson);
@@ -183,7 +188,7 @@ export class GeocdtWorker {
   // The sites and rings are transferred as triangulate()'s are; the options are checked in the
   // worker, by the same code as the main API's.
   async voronoi(input, options) {
-    const { transfer, rest } = takeProgress(options);
+    const { transfer, rest } = takeProgress(options, 'voronoi()');
     const { points, lines } = checkInput(input, 1, 'voronoi');
     const buffers = new Set();
     const sent = { points: transferable(points, transfer, buffers) };
@@ -198,6 +203,7 @@ export class GeocdtWorker {
 
   // As triangulateGeoJSON(): read here, the cells made in the worker, the features kept here.
   async voronoiGeoJSON(geojson, options) {
+    checkOptionNames(options, 'voronoiGeoJSON()', ['transfer']);
     const { output, rest } = geoJSONOutput(options);
     const input = readGeoJSON(geojson, { pointFeatures: true });
     const cells = await this.voronoi(sitesAndRings(input), { ...rest, transfer: true });
@@ -211,6 +217,7 @@ export class GeocdtWorker {
 
   // options.valuesPerPoint: as new Triangulation()'s.
   createTriangulation(options) {
+    checkOptionNames(options, 'new Triangulation()');
     const valuesPerPoint = checkValuesPerPoint(options);
     const id = this.#nextTriangulation++;
     const created = this.request('create', [id, { valuesPerPoint }]);
@@ -249,7 +256,7 @@ export class RemoteTriangulation {
       && !ArrayBuffer.isView(values)) {
       [values, options] = [undefined, values];
     }
-    const { transfer, onProgress } = takeProgress(options);
+    const { transfer, onProgress } = takeProgress(options, `${op}()`);
     const buffers = new Set();
     const sent = transferable(checkCoordinates(xy, name), transfer, buffers);
     const sentValues = values == null ? undefined : transferable(
@@ -268,7 +275,7 @@ export class RemoteTriangulation {
 
   // options.transfer as for insertPoints(); options.method 'linear' or 'natural'.
   async interpolate(points, options) {
-    const { transfer, rest } = takeProgress(options);
+    const { transfer, rest } = takeProgress(options, 'interpolate()');
     const buffers = new Set();
     const sent = transferable(checkCoordinates(points, 'points'), transfer, buffers);
     return this.#call('interpolate', [sent, rest], [...buffers]);
@@ -276,6 +283,7 @@ export class RemoteTriangulation {
 
   async rasterize(options) {
     checkRaster(options, this.#valuesPerPoint);
+    checkOptionNames(options, 'rasterize()');
     const { bbox, width, height, method } = options;
     return this.#call('rasterize', [{ bbox: Array.from(bbox), width, height, method }]);
   }
@@ -296,7 +304,7 @@ export class RemoteTriangulation {
   hasVertex(id) { return this.#call('hasVertex', [id]); }
 
   async results(options) {
-    const { onProgress, rest } = takeProgress(options);
+    const { onProgress, rest } = takeProgress(options, 'results()');
     if (rest.polygons != null) {
       checkOffsets(rest.polygons, 'options.polygons', 'polygons', 'polyline');
     }

@@ -1,6 +1,7 @@
 // geocdt/worker for browsers: the calls run in a module Web Worker. Bundlers (Vite, webpack,
 // Rollup plugins) recognise the `new Worker(new URL(...), { type: 'module' })` form and bundle
 // the worker with the wasm it loads.
+import { checkOptionNames } from './call-options.js';
 import { GeocdtWorker } from './worker-client.js';
 import { GeocdtError } from './errors.js';
 import { threadsError } from './input.js';
@@ -10,6 +11,7 @@ export { GeocdtError } from './errors.js';
 
 // options.threads: as init()'s (the worker loads the threaded build where it can).
 export function createWorker(options) {
+  checkOptionNames(options, 'createWorker()');
   const wrongThreads = threadsError(options?.threads);
   if (wrongThreads) throw wrongThreads;
   // Written in the one form bundlers recognise: the URL inline in the Worker call.

@@ -1,6 +1,7 @@
 // geocdt/worker for Node: the calls run in a worker_threads Worker. The worker does not keep
 // the process alive while no request is pending.
 import { Worker } from 'node:worker_threads';
+import { checkOptionNames } from './call-options.js';
 import { GeocdtWorker } from './worker-client.js';
 import { GeocdtError } from './errors.js';
 import { threadsError } from './input.js';
@@ -21,6 +22,7 @@ function workerFlags() {
 
 // options.threads: as init()'s (the worker loads the threaded build).
 export function createWorker(options) {
+  checkOptionNames(options, 'createWorker()');
   const wrongThreads = threadsError(options?.threads);
   if (wrongThreads) throw wrongThreads;
   const url = new URL('./worker-thread.node.js', import.meta.url);

@@ -2,7 +2,10 @@
 // working afterwards.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
-import { init, triangulate, Triangulation, memoryUsage } from 'geocdt';
+import {
+  init, triangulate, triangulateGeoJSON, triangulatePolygons, triangulateRaster, Triangulation,
+  memoryUsage, voronoi, voronoiGeoJSON,
+} from 'geocdt';
 import { throwsWith } from './support/throws.js';
 
 before(() => init());
@@ -119,6 +122,67 @@ test('bad options', () => {
     /options.insideFlags must be a boolean/);
   throwsWith(() => triangulate(ok, 'inside'), TypeError, /options must be an object/);
   stillWorks();
+});
+
+test('an option a call does not take is refused by name, with the nearest one', () => {
+  const ok = { points: [0, 0, 1, 0, 0, 1] };
+  throwsWith(() => triangulate(ok, { kep: 'inside' }), TypeError,
+    /triangulate\(\) has no option 'kep' \(did you mean 'keep'\?\); it takes keep, fillRule,/);
+  throwsWith(() => triangulate(ok, { refine: { minAngel: 25 } }), TypeError,
+    /options\.refine has no option 'minAngel' \(did you mean 'minAngle'\?\)/);
+  throwsWith(() => triangulate(ok, { maxError: 1 }), TypeError,
+    /triangulate\(\) has no option 'maxError'; it takes/);
+  const raster = { heights: new Float64Array(9), width: 3, height: 3 };
+  throwsWith(() => triangulateRaster(raster, { maxErorr: 5 }), TypeError,
+    /triangulateRaster\(\) has no option 'maxErorr' \(did you mean 'maxError'\?\)/);
+  throwsWith(() => triangulateRaster(raster, { MinAngle: 20 }), TypeError,
+    /did you mean 'minAngle'/);
+  const square = { type: 'Polygon', coordinates: [[[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]] };
+  throwsWith(() => triangulateGeoJSON(square, { outptu: 'arrays' }), TypeError,
+    /triangulateGeoJSON\(\) has no option 'outptu' \(did you mean 'output'\?\)/);
+  const polygons = { coords: [0, 0, 1, 0, 0, 1], ringOffsets: [0, 3], polygonOffsets: [0, 1] };
+  throwsWith(() => triangulatePolygons(polygons, { fill: 'nonzero' }), TypeError,
+    /triangulatePolygons\(\) has no option 'fill'/);
+  throwsWith(() => voronoi(ok, { lloyd: { iteration: 3 } }), TypeError,
+    /options\.lloyd has no option 'iteration' \(did you mean 'iterations'\?\)/);
+  throwsWith(() => voronoiGeoJSON({ type: 'MultiPoint', coordinates: [[0, 0], [1, 1]] },
+    { clipp: 'hull' }), TypeError, /voronoiGeoJSON\(\) has no option 'clipp'/);
+  // Every option each call documents is taken (undefined: its default).
+  triangulate(ok, { keep: 'all', fillRule: 'evenodd', insideFlags: false,
+    segmentSources: false, valuesPerPoint: 1, refine: { minAngle: 20, maxArea: undefined,
+      maxSteinerPoints: undefined }, onProgress: undefined });
+  triangulateRaster(raster, { maxError: 1, maxTriangles: undefined, maxVertices: undefined,
+    decimate: false, noData: undefined, breaklines: undefined, breaklineHeights: undefined,
+    minAngle: 0, bbox: undefined });
+  stillWorks();
+});
+
+test('the incremental class refuses options it does not take', () => {
+  throwsWith(() => new Triangulation({ valuesPerPoints: 2 }), TypeError,
+    /new Triangulation\(\) has no option 'valuesPerPoints' \(did you mean 'valuesPerPoint'\?\)/);
+  const t = new Triangulation();
+  try {
+    throwsWith(() => t.insertPoints([0, 0, 1, 0, 0, 1], { onprogress() {} }), TypeError,
+      /insertPoints\(\) has no option 'onprogress' \(did you mean 'onProgress'\?\)/);
+    assert.equal(t.vertexCount, 0, 'nothing inserted');
+    t.insertPoints([0, 0, 1, 0, 0, 1]);
+    throwsWith(() => t.interpolate([0.2, 0.2], { methd: 'natural' }), TypeError,
+      /interpolate\(\) has no option 'methd'/);
+    throwsWith(() => t.refine({ minAngle: 20, maxAera: 1 }), TypeError,
+      /refine\(\) has no option 'maxAera' \(did you mean 'maxArea'\?\)/);
+    throwsWith(() => t.results({ insideflags: true }), TypeError,
+      /results\(\) has no option 'insideflags' \(did you mean 'insideFlags'\?\)/);
+    throwsWith(() => t.rasterize({ bbox: [0, 0, 1, 1], width: 2, height: 2, mehtod: 'linear' }),
+      TypeError, /rasterize\(\) has no option 'mehtod'/);
+    assert.equal(t.results().triangles.length, 3);
+  } finally {
+    t.dispose();
+  }
+});
+
+test('init() refuses an option it does not take, as a rejected promise', async () => {
+  await assert.rejects(init({ warmup: false }), (error) => error instanceof TypeError
+    && /init\(\) has no option 'warmup' \(did you mean 'warmUp'\?\)/.test(error.message));
 });
 
 test('the incremental class checks its input too, and keeps its state on bad input', () => {

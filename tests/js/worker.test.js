@@ -241,3 +241,31 @@ test('createWorker({ threads }): the worker loads the threaded build', async () 
     worker.terminate();
   }
 });
+
+test('the worker refuses options a call does not take, as the main entry does', async () => {
+  const rejectsWith = (promise, pattern) => assert.rejects(promise,
+    (e) => e instanceof TypeError && pattern.test(e.message));
+  const xy = uniform(100, 35);
+  await rejectsWith(worker.triangulate({ points: xy }, { trasnfer: false }),
+    /triangulate\(\) has no option 'trasnfer' \(did you mean 'transfer'\?\)/);
+  assert.equal(xy.length, 200, 'refused before anything was sent');
+  await rejectsWith(worker.triangulate({ points: xy }, { transfer: false,
+    refine: { maxarea: 1 } }),
+    /options\.refine has no option 'maxarea' \(did you mean 'maxArea'\?\)/);
+  await rejectsWith(worker.triangulateRaster({ heights: [1, 2, 3, 4], width: 2, height: 2 },
+    { maxErr: 1 }), /triangulateRaster\(\) has no option 'maxErr'/);
+  await rejectsWith(worker.voronoi({ points: xy }, { transfer: false, lloyds: true }),
+    /voronoi\(\) has no option 'lloyds' \(did you mean 'lloyd'\?\)/);
+  assert.throws(() => worker.createTriangulation({ valuePerPoint: 2 }),
+    /new Triangulation\(\) has no option 'valuePerPoint'/);
+  assert.throws(() => createWorker({ thread: 2 }),
+    /createWorker\(\) has no option 'thread' \(did you mean 'threads'\?\)/);
+  const t = worker.createTriangulation();
+  await rejectsWith(t.insertPoints(xy, { onProgres() {} }),
+    /insertPoints\(\) has no option 'onProgres' \(did you mean 'onProgress'\?\)/);
+  await rejectsWith(t.refine({ minAngel: 20 }), /refine\(\) has no option 'minAngel'/);
+  await rejectsWith(t.results({ polygon: [0] }),
+    /results\(\) has no option 'polygon' \(did you mean 'polygons'\?\)/);
+  assert.equal((await t.insertPoints(xy, { transfer: false })).length, 100);
+  await t.dispose();
+});
