@@ -113,8 +113,23 @@ void GreedyMesher::addBoundary(std::uint32_t a, std::uint32_t b) {
   }
 }
 
-std::uint32_t GreedyMesher::rankOf(std::int64_t pixel) const {
-  return tiled_ ? tiles_.rank(pixel) : 0;
+// A triangle goes with the first tile it touches, the one holding its box's lower corner: a
+// triangle across a border then goes before the tile it starts in is left, and the meshes
+// come nearer to strict greedy insertion's (bench/EXPERIMENTS.md, TN35).
+std::uint32_t GreedyMesher::rankOf(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
+  if (!tiled_) return 0;
+  const double* xy = d_.xy.data();
+  return tiles_.rankAt(std::min({xy[2 * a], xy[2 * b], xy[2 * c]}),
+                       std::min({xy[2 * a + 1], xy[2 * b + 1], xy[2 * c + 1]}));
+}
+
+std::uint32_t GreedyMesher::triangleRank(std::int32_t t) const {
+  const std::uint32_t* c = &corners_[3 * t];
+  return rankOf(c[0], c[1], c[2]);
+}
+
+std::uint32_t GreedyMesher::segmentRank(std::uint32_t s) const {
+  return rankOf(segments_[s].a, segments_[s].b, segments_[s].b);
 }
 
 // Once the mesh outgrows the cache (and no limit asks for the largest errors first), the
@@ -123,8 +138,9 @@ void GreedyMesher::orderByTiles() {
   if (tiled_ || triangles_ < TileOrder::kFromTriangles) return;
   if (limits_.maxTriangles > 0 || limits_.maxVertices > 0) return;
   tiled_ = true;
-  triangleQueue_.rerank([&](std::uint32_t t) { return rankOf(candidate_[t]); });
-  segmentQueue_.rerank([&](std::uint32_t s) { return rankOf(segments_[s].pixel); });
+  triangleQueue_.rerank(
+      [&](std::uint32_t t) { return triangleRank(static_cast<std::int32_t>(t)); });
+  segmentQueue_.rerank([&](std::uint32_t s) { return segmentRank(s); });
 }
 
 void GreedyMesher::measureTriangle(std::int32_t t) {
@@ -144,7 +160,7 @@ void GreedyMesher::measureTriangle(std::int32_t t) {
   error_[t] = r.error;
   candidate_[t] = r.pixel;
   if (r.pixel >= 0 && r.error > limits_.maxError) {
-    triangleQueue_.set(static_cast<std::uint32_t>(t), r.error, rankOf(r.pixel));
+    triangleQueue_.set(static_cast<std::uint32_t>(t), r.error, triangleRank(t));
   } else {
     triangleQueue_.remove(static_cast<std::uint32_t>(t));
   }
@@ -154,7 +170,7 @@ void GreedyMesher::measureSegment(std::uint32_t s) {
   stats_.scannedPixels += segments_.scan(s, d_.xy.data(), z_.data(), raster_);
   const BorderSegment& seg = segments_[s];
   if (seg.pixel >= 0 && seg.error > limits_.maxError) {
-    segmentQueue_.set(s, seg.error, rankOf(seg.pixel));
+    segmentQueue_.set(s, seg.error, segmentRank(s));
   } else {
     segmentQueue_.remove(s);
   }
@@ -468,7 +484,7 @@ void GreedyMesher::moveSlot(std::int32_t from, std::int32_t to) {
   triangleQueue_.remove(static_cast<std::uint32_t>(to));
   if (queued) {
     triangleQueue_.remove(static_cast<std::uint32_t>(from));
-    triangleQueue_.set(static_cast<std::uint32_t>(to), error_[to], rankOf(candidate_[to]));
+    triangleQueue_.set(static_cast<std::uint32_t>(to), error_[to], triangleRank(to));
   }
   for (std::int32_t e = 3 * to; e < 3 * to + 3; ++e)
     if (topo_.tri[e] != kGhost) vertexEdge_[topo_.tri[e]] = e;

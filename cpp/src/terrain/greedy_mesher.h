@@ -84,7 +84,10 @@ class GreedyMesher {
 
  private:
   bool inside(std::int32_t t) const;
-  std::uint32_t rankOf(std::int64_t pixel) const;  // the queues' rank of a candidate
+  // The queues' ranks (0 until the order is tiled).
+  std::uint32_t rankOf(std::uint32_t a, std::uint32_t b, std::uint32_t c) const;
+  std::uint32_t triangleRank(std::int32_t t) const;  // of the triangle measured in slot t
+  std::uint32_t segmentRank(std::uint32_t s) const;
   void orderByTiles();
   void measureTriangle(std::int32_t t);
   void measureSegment(std::uint32_t s);

@@ -1,9 +1,10 @@
 #pragma once
 // The order of the greedy insertion once the mesh outgrows the cache: square tiles of pixels
-// in Morton order, the largest error first inside each. Greedy insertion otherwise jumps to
-// the largest error anywhere, a cache miss per triangle it touches in a mesh of megabytes;
-// tile by tile, the triangles it touches were made moments before. The order changes which
-// vertices go in, never the bound they meet (bench/EXPERIMENTS.md, TN30).
+// in Morton order, the largest error first inside each, a triangle going with the first tile
+// it touches. Greedy insertion otherwise jumps to the largest error anywhere, a cache miss per
+// triangle it touches in a mesh of megabytes; tile by tile, the triangles it touches were made
+// moments before. The order changes which vertices go in, never the bound they meet
+// (bench/EXPERIMENTS.md, TN30, TN35).
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -26,7 +27,7 @@ class TileOrder {
   static constexpr std::uint64_t kFromTriangles = GEOCDT_TERRAIN_TILES_FROM;
 
   TileOrder(std::uint32_t width, std::uint32_t height)
-      : width_(width), across_(width == 0 ? 0 : ((width - 1) >> kTileShift) + 1) {
+      : width_(width), height_(height), across_(width == 0 ? 0 : ((width - 1) >> kTileShift) + 1) {
     const std::uint32_t down = height == 0 ? 0 : ((height - 1) >> kTileShift) + 1;
     std::vector<std::uint64_t> keys;  // Morton code << 32 | tile
     for (std::uint32_t ty = 0; ty < down; ++ty)
@@ -38,13 +39,13 @@ class TileOrder {
       rank_[keys[k] & 0xFFFFFFFFu] = static_cast<std::uint32_t>(k);
   }
 
-  // The rank of a pixel's tile, below the number of tiles: lower ranks go first.
-  std::uint32_t rank(std::int64_t pixel) const {
-    if (pixel < 0) return 0;
-    const auto p = static_cast<std::uint64_t>(pixel);
-    const auto x = static_cast<std::uint32_t>(p % width_) >> kTileShift;
-    const auto y = static_cast<std::uint32_t>(p / width_) >> kTileShift;
-    return rank_[y * across_ + x];
+  // The rank of the tile holding (x, y), clamped into the raster, below the number of tiles:
+  // lower ranks go first. Ranks grow with x and with y (Morton codes do), so the first tile a
+  // box touches is the one holding its lower corner.
+  std::uint32_t rankAt(double x, double y) const {
+    const auto i = static_cast<std::uint32_t>(std::clamp(x, 0.0, width_ - 1.0)) >> kTileShift;
+    const auto j = static_cast<std::uint32_t>(std::clamp(y, 0.0, height_ - 1.0)) >> kTileShift;
+    return rank_[j * across_ + i];
   }
 
  private:
@@ -58,7 +59,8 @@ class TileOrder {
     return v;
   }
 
-  std::uint32_t width_, across_;     // pixels and tiles in a row
+  double width_, height_;            // pixels
+  std::uint32_t across_;             // tiles in a row
   std::vector<std::uint32_t> rank_;  // per tile, row by row
 };
 
