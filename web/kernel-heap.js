@@ -189,16 +189,21 @@ export class KernelHeap {
     return new Uint8Array(this.output.size(id));
   }
 
+  // The arrays every mesh has: points, triangles, halfedges, constrained.
+  readTriangles() {
+    return {
+      points: this.read('points'),
+      triangles: this.read('triangles'),
+      halfedges: this.read('halfedges'),
+      constrained: this.readConstrained(),
+    };
+  }
+
   // Copies the output's mesh out, then frees it; the flags say which optional arrays to take
   // (the Steiner records come whenever there are any, or refinement was asked for).
   takeMesh({ inputToVertex, inside, regions, values, steiner, segmentSources, vertexIds }) {
     try {
-      const mesh = {
-        points: this.read('points'),
-        triangles: this.read('triangles'),
-        halfedges: this.read('halfedges'),
-        constrained: this.readConstrained(),
-      };
+      const mesh = this.readTriangles();
       if (inputToVertex) mesh.inputToVertex = this.read('inputToVertex');
       if (vertexIds) mesh.vertexIds = this.read('vertexIds');
       mesh.constraintEdges = this.read('constraintEdges');

@@ -148,10 +148,7 @@ export class Kernel extends KernelHeap {
         ` of breakline ${line}`)));
     try {
       const mesh = {
-        points: this.read('points'),
-        triangles: this.read('triangles'),
-        halfedges: this.read('halfedges'),
-        constrained: this.readConstrained(),
+        ...this.readTriangles(),
         constraintEdges: this.read('constraintEdges'),
         sourceOffsets: this.read('sourceOffsets'),
         sources: this.read('sources'),
