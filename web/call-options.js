@@ -4,10 +4,11 @@ import { describe } from './input.js';
 
 // The options each call takes, by the name its errors give it. A name not listed is refused,
 // not ignored: a misspelt option would otherwise leave its default in place without a word.
+// tests/js/tables.test.js checks these lists against the declarations in web/*.d.ts.
 const MESH = ['keep', 'fillRule', 'insideFlags', 'segmentSources'];
 const TRIANGULATE = [...MESH, 'valuesPerPoint', 'refine', 'onProgress'];
 const VORONOI = ['clip', 'fillRule', 'lloyd'];
-const OPTION_NAMES = {
+export const OPTION_NAMES = {
   'init()': ['threads', 'warmUp', 'wasmUrl', 'wasmBinary'],
   'createWorker()': ['threads'],
   'triangulate()': TRIANGULATE,

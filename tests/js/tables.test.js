@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import createGeocdtModule from '../../web/dist/geocdt.mjs';
 import { init, triangulate, Triangulation, voronoi } from 'geocdt';
 import { MAX_COORDINATE } from '../../web/input.js';
+import { OPTION_NAMES } from '../../web/call-options.js';
 import { PHASES } from './support/progress.js';
 
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
@@ -48,6 +49,45 @@ function members(name) {
   const match = types.match(new RegExp(`export interface ${name}\\b[^{]*\\{([^}]*)\\}`));
   assert.ok(match, `web/*.d.ts declare interface ${name}`);
   return [...match[1].matchAll(/^\s*(\w+)\??:/gm)].map((m) => m[1]);
+}
+
+// Every member of `export interface Name`, merged over its declarations, with those of the
+// interfaces it extends; nested braces and parentheses (inline types) are not members.
+function allMembers(name, text = types) {
+  const found = [];
+  for (const m of text.matchAll(new RegExp(`export interface ${name}\\b([^{]*)\\{`, 'g'))) {
+    let depth = 1;
+    let end = m.index + m[0].length;
+    for (; depth > 0; end++) depth += { '{': 1, '}': -1 }[text[end]] ?? 0;
+    let body = text.slice(m.index + m[0].length, end - 1);
+    for (let before = ''; before !== body;) {
+      before = body;
+      body = body.replace(/\{[^{}]*\}|\([^()]*\)/g, '');
+    }
+    found.push(...[...body.matchAll(/^\s*(\w+)\??:/gm)].map((x) => x[1]));
+    const base = m[1].match(/extends ([\w\s,]+)/);
+    if (base) for (const b of base[1].split(',')) found.push(...allMembers(b.trim(), text));
+  }
+  assert.ok(found.length > 0, `web/*.d.ts declare interface ${name}`);
+  return [...new Set(found)];
+}
+
+// The option names a call's declarations take, over all its overloads: the members of the
+// options parameter's type (the interfaces named in it, and inline objects).
+function declaredOptions(declaration, text = types) {
+  const names = new Set();
+  for (const m of text.matchAll(new RegExp(`${declaration}\\(([^)]*)\\)`, 'g'))) {
+    const type = m[1].match(/options\??: ([^]*?),?\s*$/)?.[1];
+    if (type === undefined) continue;
+    for (const object of type.matchAll(/\{([^}]*)\}/g)) {
+      for (const x of object[1].matchAll(/(\w+)\??:/g)) names.add(x[1]);
+    }
+    for (const x of type.replace(/\{[^}]*\}/g, '').matchAll(/\b([A-Z]\w*Options)\b/g)) {
+      for (const member of allMembers(x[1], text)) names.add(member);
+    }
+  }
+  assert.ok(names.size > 0, `web/*.d.ts declare ${declaration}() with options`);
+  return [...names];
 }
 
 const sorted = (list) => [...list].sort();
@@ -138,6 +178,34 @@ test('statistics: the module\'s counters are the documented ones', () => {
   const all = Object.keys(triangulate({ points: [0, 0, 1, 0, 0, 1] }).stats);
   assert.deepEqual(sorted(all), sorted([...core, ...members('Stats')]));
   for (const stat of all) assert.ok(api.includes(`| \`${stat}\` |`), `web/API.md lists ${stat}`);
+});
+
+test('option names: what each call accepts is what its declarations say', () => {
+  const workerTypes = read('../../web/worker.d.ts').replace(/\/\*[\s\S]*?\*\//g, '')
+    .replace(/\/\/.*$/gm, '');
+  const declared = {
+    'init()': declaredOptions('function init'),
+    'createWorker()': declaredOptions('function createWorker', workerTypes),
+    'triangulate()': declaredOptions('function triangulate'),
+    'triangulateGeoJSON()': declaredOptions('function triangulateGeoJSON'),
+    'triangulatePolygons()': declaredOptions('function triangulatePolygons'),
+    'triangulateRaster()': declaredOptions('function triangulateRaster'),
+    'voronoi()': declaredOptions('function voronoi'),
+    'voronoiGeoJSON()': declaredOptions('function voronoiGeoJSON'),
+    'new Triangulation()': declaredOptions('constructor'),
+    'insertPoints()': declaredOptions('insertPoints'),
+    'insertPolyline()': declaredOptions('insertPolyline'),
+    'interpolate()': declaredOptions('interpolate'),
+    'rasterize()': declaredOptions('rasterize'),
+    'refine()': declaredOptions('refine'),
+    'results()': declaredOptions('results'),
+    'options.refine': allMembers('RefineOptions'),
+    'options.lloyd': allMembers('LloydOptions'),
+  };
+  assert.deepEqual(sorted(Object.keys(OPTION_NAMES)), sorted(Object.keys(declared)));
+  for (const [call, names] of Object.entries(declared)) {
+    assert.deepEqual(sorted(OPTION_NAMES[call]), sorted(names), call);
+  }
 });
 
 test('the coordinate bound', () => {
