@@ -273,6 +273,7 @@ Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
     r.keep = b.rings ? Keep::Inside : Keep::All;
     refinement::Refiner refiner(d, r);
     refiner.start();
+    refiner.trackChanges();
     terrain::GreedyMesher::Listener listener;
     listener.context = &refiner;
     listener.inserted = [](void* context, std::int32_t from, std::uint32_t a, std::uint32_t v,
@@ -288,10 +289,7 @@ Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
       ++stats.refineRounds;
       stats.steinerPoints += d.steiner.size() - before;
       steinerHeights(b, d, before, raster);
-      const std::vector<std::int32_t>& all = refiner.windings();
-      std::vector<std::int32_t> windings;
-      if (b.rings) windings.assign(all.begin(), all.begin() + d.topo.slotCount());
-      mesher.measure(std::move(windings));
+      mesher.measure(refiner.changedSlots(), refiner.windings().data());
       if (!mesher.run(inserted)) return d.lastError();
       if (inserted == 0) break;
     }

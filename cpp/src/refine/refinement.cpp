@@ -58,6 +58,8 @@ inline Shape Refiner::shape(std::int32_t t) const {
 }
 
 void Refiner::checkTriangle(std::int32_t t) {
+  // Every slot an insertion or a flip rewrites is checked: the place to list them.
+  if (trackChanges_) changed_.push_back(t);
   if (!inRegion(t)) return;
   const Shape s = shape(t);
   const bool skinny = s.skinny(sin2_);
@@ -278,6 +280,7 @@ void Refiner::start() {
 }
 
 Status Refiner::resume() {
+  changed_.clear();
   std::vector<BadTriangle> retry;
   Step step = Step::Go;
   while (step == Step::Go) step = refineSteps(retry, unresolved_);

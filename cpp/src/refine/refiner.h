@@ -164,6 +164,10 @@ class Refiner {
   void noteInsertion(std::int32_t from, std::uint32_t a, std::uint32_t b, bool onSubsegment);
   // Every slot's winding number, kept up to date (resize to the slots after insertions).
   const std::vector<std::int32_t>& windings() const { return winding_; }
+  // From trackChanges() on, each resume() lists the slots it rewrote (some more than once):
+  // a caller that keeps its own record of every triangle updates those alone.
+  void trackChanges() { trackChanges_ = true; }
+  const std::vector<std::int32_t>& changedSlots() const { return changed_; }
   // The slots' windings after run(), kept up to date through it; empty if run() had nothing
   // to refine.
   void takeWindings(std::vector<std::int32_t>& out) {
@@ -302,6 +306,8 @@ class Refiner {
   double maxArea_, minAngle_, sin2_ = 0, offCentre_ = 0;
   std::uint64_t cap_ = 0, added_ = 0, reported_ = 0;  // reported_: added_ in Stats so far
   bool capped_ = false;
+  bool trackChanges_ = false;
+  std::vector<std::int32_t> changed_;      // the slots the last resume() rewrote
   std::vector<std::int32_t> winding_;      // per slot
   std::vector<std::int32_t> vertexEdge_;   // per vertex: a half-edge out of it
   std::vector<std::uint8_t> steinerFlag_;  // per vertex: 1 for refinement's vertices

@@ -45,7 +45,42 @@ void GreedyMesher::measure(std::vector<std::int32_t> windings) {
   const std::uint32_t* tri = topo_.tri.data();
   for (std::int32_t e = 0; e < 3 * slots; ++e)
     if (tri[e] != kGhost) vertexEdge_[tri[e]] = e;
-  // Vertices on pixels are never proposed again.
+  noteNewVertices();
+  markBoundary();
+  for (std::int32_t t = 0; t < slots; ++t) {
+    const std::uint32_t* c = &corners_[3 * t];
+    if (t < known && c[0] == tri[3 * t] && c[1] == tri[3 * t + 1] && c[2] == tri[3 * t + 2])
+      continue;
+    measureTriangle(t);
+  }
+}
+
+// Passes over every slot after each refinement round took a tenth of a minAngle mesh's
+// instructions and a third of its last-level misses (bench/EXPERIMENTS.md, TN36).
+void GreedyMesher::measure(const std::vector<std::int32_t>& changed, const std::int32_t* windings) {
+  d_.constraints.scatter();
+  grow();
+  const std::uint32_t* tri = topo_.tri.data();
+  const auto rewritten = [&](std::int32_t t) {
+    const std::uint32_t* c = &corners_[3 * t];
+    return c[0] != tri[3 * t] || c[1] != tri[3 * t + 1] || c[2] != tri[3 * t + 2];
+  };
+  // The windings first, which the border needs; a vertex whose half-edge pointed into a
+  // rewritten slot is a corner of a rewritten slot.
+  for (const std::int32_t t : changed) {
+    if (!rewritten(t)) continue;
+    if (rings_) winding_[t] = windings[t];
+    for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e)
+      if (tri[e] != kGhost) vertexEdge_[tri[e]] = e;
+  }
+  noteNewVertices();
+  markBoundary();
+  for (const std::int32_t t : changed)
+    if (rewritten(t)) measureTriangle(t);
+}
+
+// Vertices on pixels are never proposed again.
+void GreedyMesher::noteNewVertices() {
   const std::uint32_t w = raster_.width(), h = raster_.height();
   if (skip_.empty()) skip_.assign(static_cast<std::size_t>(w) * h, 0);
   if (projected_.empty()) projected_.assign(skip_.size(), 0);
@@ -55,27 +90,21 @@ void GreedyMesher::measure(std::vector<std::int32_t> windings) {
       skip_[raster_.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))] = 1;
   }
   skipped_ = d_.vertexCount();
-  markBoundary();
-  triangles_ = 0;
-  for (std::int32_t t = 0; t < slots; ++t) {
-    triangles_ += inside(t);
-    const std::uint32_t* c = &corners_[3 * t];
-    if (t < known && c[0] == tri[3 * t] && c[1] == tri[3 * t + 1] && c[2] == tri[3 * t + 2])
-      continue;
-    measureTriangle(t);
-  }
 }
 
 // The border segments: the edges between a triangle of the mesh and one outside it (a ghost,
 // or outside the rings). Their pixels are the border's, which triangles do not propose.
 // Without rings they are the hull's edges, found by a turn round the ghost vertex; with rings
-// every slot is looked at.
+// every slot is looked at. The mesh's triangles are counted on the way.
 void GreedyMesher::markBoundary() {
   segments_.clear();
   segmentQueue_.clear();
+  const std::int32_t slots = topo_.slotCount();
   if (!rings_) {
+    // Every slot holds a triangle of the mesh but the ghosts, one a hull edge.
+    triangles_ = static_cast<std::uint64_t>(slots);
     std::int32_t start = 0;
-    const std::int32_t halfEdges = 3 * topo_.slotCount();
+    const std::int32_t halfEdges = 3 * slots;
     while (start < halfEdges && topo_.tri[start] != kGhost) ++start;
     if (start == halfEdges) return;
     // Each ghost triangle (g, a, b) has the hull edge a -> b; its twin b -> a is the mesh's.
@@ -83,13 +112,15 @@ void GreedyMesher::markBoundary() {
     do {
       const std::int32_t hull = nextEdge(e);
       addBoundary(topo_.tri[topo_.adj[hull]], topo_.tri[nextEdge(topo_.adj[hull])]);
+      --triangles_;
       e = topo_.adj[prevEdge(e)];
     } while (e != start);
     return;
   }
-  const std::int32_t slots = topo_.slotCount();
+  triangles_ = 0;
   for (std::int32_t t = 0; t < slots; ++t) {
     if (!inside(t)) continue;
+    ++triangles_;
     for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e)
       if (!inside(topo_.adj[e] / 3)) addBoundary(topo_.tri[e], topo_.tri[nextEdge(e)]);
   }

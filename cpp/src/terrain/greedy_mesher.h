@@ -57,6 +57,9 @@ class GreedyMesher {
   // triangle than they did are measured again. windings: every slot's, when the caller has
   // them (refinement hands them back), else computed here.
   void measure(std::vector<std::int32_t> windings = {});
+  // The same after a change that lists the slots it rewrote, some more than once (a
+  // refinement round): only those are looked at. windings: every slot's, with rings.
+  void measure(const std::vector<std::int32_t>& changed, const std::int32_t* windings);
   // Inserts pixels, largest error first, until none is above maxError or a limit stops it.
   // Returns the number inserted; a failure of the core is in d.lastError() (returns false).
   bool run(std::uint64_t& inserted);
@@ -91,6 +94,7 @@ class GreedyMesher {
   void orderByTiles();
   void measureTriangle(std::int32_t t);
   void measureSegment(std::uint32_t s);
+  void noteNewVertices();
   void markBoundary();
   void addBoundary(std::uint32_t a, std::uint32_t b);
   // Inserts the pixel at (i, j) as vertex, located by h; false on a failure of the core.
