@@ -265,6 +265,8 @@ class Refiner {
   GEOCDT_NOINLINE Step refineSteps(std::vector<BadTriangle>& retry,
                                    std::vector<BadTriangle>& unresolved);
   void weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], double cx, double cy) const;
+  void edgeWeights(std::uint32_t (&parent)[3], double (&weight)[3], double cx, double cy) const;
+  void weightsOnEdge(std::uint32_t (&parent)[3], double (&weight)[3], double cx, double cy) const;
   std::uint32_t newVertex(double px, double py) {
     d_.xy.push_back(px);
     d_.xy.push_back(py);

@@ -14,6 +14,32 @@
 
 namespace geocdt::refinement {
 
+// The weights of (cx, cy) on the edge from parent[0] to parent[1], by its projection;
+// parent[2] becomes kNoVertex.
+void Refiner::edgeWeights(std::uint32_t (&parent)[3], double (&weight)[3], double cx,
+                          double cy) const {
+  parent[2] = kNoVertex;
+  const double w = projection(x(parent[0]), y(parent[0]), x(parent[1]), y(parent[1]), cx, cy);
+  weight[0] = 1 - w;
+  weight[1] = w;
+  weight[2] = 0;
+}
+
+// (cx, cy) on an edge of the triangle of corners `parent` (exactly): that edge's ends and
+// weights, as a point located on the edge gets them.
+void Refiner::weightsOnEdge(std::uint32_t (&parent)[3], double (&weight)[3], double cx,
+                            double cy) const {
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t a = parent[k], b = parent[k == 2 ? 0 : k + 1];
+    if (orient2d(x(a), y(a), x(b), y(b), cx, cy) != Sign::Zero) continue;
+    parent[0] = a;
+    parent[1] = b;
+    edgeWeights(parent, weight, cx, cy);
+    return;
+  }
+  weightsInFace(parent, weight, cx, cy);
+}
+
 // The barycentric weights of (cx, cy) in the triangle of corners `parent`; in a sliver, where
 // they miss the point, an edge's ends and weights instead (parent[2] then kNoVertex).
 void Refiner::weightsInFace(std::uint32_t (&parent)[3], double (&weight)[3], double cx,
@@ -202,21 +228,26 @@ inline bool Refiner::findCavity(std::int32_t cur, double cx, double cy) {
   return subsegments_.size() > before;
 }
 
-// The candidate as a new vertex, its cavity found from slot cur. Strictly inside cur, the
-// cavity's border joined to the point is its insertion; on an edge, or where the border does
-// not make a star, the point is located and inserted with flips (which repeat the cavity's
-// in-circle tests).
+// The candidate as a new vertex, its cavity found from slot cur: the cavity's border joined to
+// the point is its insertion. Where the border does not make a star (the point on it: on a
+// subsegment, or on a vertex), the point is located and inserted with flips (which repeat
+// the cavity's in-circle tests). A point on an edge inside the cavity, which lattice meshes
+// (terrain) give often, takes the border too (bench/EXPERIMENTS.md, TN37).
 inline Outcome Refiner::insertCandidate(std::int32_t cur, bool onEdge, double cx, double cy) {
   if (capReached()) {
     capped_ = true;
     return Outcome::Done;
   }
   const std::uint32_t v = newVertex(cx, cy);
-  if (onEdge || !orderStarBoundary(topo_, d_.xy, cavity_.size(), cx, cy, boundary_))
+  if (!orderStarBoundary(topo_, d_.xy, cavity_.size(), cx, cy, boundary_))
     return insertWithFlips(cur, v, cx, cy);
   std::uint32_t parent[3] = {topo_.tri[3 * cur], topo_.tri[3 * cur + 1], topo_.tri[3 * cur + 2]};
   double weight[3];
-  weightsInFace(parent, weight, cx, cy);
+  if (onEdge) {
+    weightsOnEdge(parent, weight, cx, cy);
+  } else {
+    weightsInFace(parent, weight, cx, cy);
+  }
   // The cavity is one region, joined across unconstrained edges: one winding for it all.
   const std::int32_t winding = winding_[cur];
   const std::int32_t from = d_.fillStar(v, cavity_, boundary_);
@@ -242,10 +273,7 @@ Outcome Refiner::insertWithFlips(std::int32_t cur, std::uint32_t v, double cx, d
   } else {
     parent[0] = topo_.tri[h.edge];
     parent[1] = topo_.tri[nextEdge(h.edge)];
-    parent[2] = kNoVertex;
-    const double w = projection(x(parent[0]), y(parent[0]), x(parent[1]), y(parent[1]), cx, cy);
-    weight[0] = 1 - w;
-    weight[1] = w;
+    edgeWeights(parent, weight, cx, cy);
   }
   if (h.kind == Hit::Kind::Edge && isSubsegment(h.edge)) markOnSubsegment(v);
   if (d_.insertLocated(h, v) != v) {
