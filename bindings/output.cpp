@@ -195,6 +195,7 @@ emscripten::val Output::terrainStats() const {
   object.set("scannedPixels", static_cast<double>(terrain.scannedPixels));
   object.set("steinerPoints", static_cast<double>(terrain.steinerPoints));
   object.set("refineRounds", static_cast<double>(terrain.refineRounds));
+  object.set("refineSkipped", static_cast<double>(terrain.refineSkipped));
   return object;
 }
 

@@ -41,7 +41,8 @@ export interface RasterMeshOptions {
   breaklineHeights?: Coordinates;
   /**
    * Delaunay refinement to this smallest angle in degrees, [0, 60); its Steiner points take
-   * their heights from the raster, and the error bound still holds.
+   * their heights from the raster, and the error bound still holds. Breakline pieces shorter
+   * than 1/16 pixel are not split (stats.refineSkipped counts the triangles left below it).
    */
   minAngle?: number;
   /**
@@ -66,6 +67,11 @@ export interface RasterStats {
   steinerPoints: number;
   /** Refinements, each followed by insertions where the refined mesh missed the bound. */
   refineRounds: number;
+  /**
+   * Triangles the last refinement left below minAngle: where breaklines meet at a smaller
+   * angle, or run closer than 1/16 pixel (their pieces are not split that fine).
+   */
+  refineSkipped: number;
   vertices: number;
   triangles: number;
   constraintEdges: number;

@@ -248,6 +248,12 @@ void steinerHeights(Build& b, const Delaunay& d, std::size_t first, const Raster
   }
 }
 
+// Breakline pieces shorter than this (in pixels) are not split by refinement: below a
+// raster's resolution more vertices say nothing, and two breaklines that run a hair apart
+// (a road digitised twice) would have the gap between them filled with triangles its width,
+// millions of them.
+constexpr double kShortestSplit = 1.0 / 16;
+
 // Greedy insertion; then with minAngle, rounds of refinement and of insertion where the
 // refined mesh misses the bound, until a round inserts nothing (or after a few). One refiner
 // serves every round, told of the pixels inserted between them: setting one up again each
@@ -274,6 +280,7 @@ Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
     refinement::Refiner refiner(d, r);
     refiner.start();
     refiner.trackChanges();
+    refiner.setShortestSplit(kShortestSplit);
     terrain::GreedyMesher::Listener listener;
     listener.context = &refiner;
     listener.inserted = [](void* context, std::int32_t from, std::uint32_t a, std::uint32_t v,
@@ -288,6 +295,7 @@ Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
       if (!s.ok()) return s;
       ++stats.refineRounds;
       stats.steinerPoints += d.steiner.size() - before;
+      stats.refineSkipped = d.stats.refineSkipped;
       steinerHeights(b, d, before, raster);
       mesher.measure(refiner.changedSlots(), refiner.windings().data());
       if (!mesher.run(inserted)) return d.lastError();

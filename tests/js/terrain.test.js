@@ -266,6 +266,16 @@ test('minAngle refines and keeps the bound', () => {
     }
   }
   assert.ok(worst >= 20 - 1e-9, `smallest angle ${worst}`);
+  assert.equal(r.stats.refineSkipped, 0);
+  // Two breaklines a hair apart: their gap is not filled with triangles its width, and the
+  // thin triangles left there are counted.
+  const hairline = triangulateRaster(raster, { maxError: 5, minAngle: 20,
+    breaklines: [[3.3, 5.7, 95.1, 80.2], [3.3, 5.7001, 95.1, 80.2001]] });
+  checkMesh(hairline);
+  withinBound(hairline, raster, 5);
+  assert.ok(hairline.stats.refineSkipped > 0);
+  assert.ok(hairline.stats.steinerPoints < r.stats.steinerPoints + 20000,
+    `${hairline.stats.steinerPoints} Steiner points`);
 });
 
 test('bad input is a clear RangeError or TypeError, and the module stays usable', () => {

@@ -167,6 +167,10 @@ class Refiner {
   // From trackChanges() on, each resume() lists the slots it rewrote (some more than once):
   // a caller that keeps its own record of every triangle updates those alone.
   void trackChanges() { trackChanges_ = true; }
+  // Subsegments shorter than this are not split (their encroached triangles are left as they
+  // are, skipped): where two constraints run closer than a scale that means something (a
+  // raster's pixel), refinement would otherwise fill the gap with triangles its width.
+  void setShortestSplit(double length) { shortestSplit2_ = length * length; }
   const std::vector<std::int32_t>& changedSlots() const { return changed_; }
   // The slots' windings after run(), kept up to date through it; empty if run() had nothing
   // to refine.
@@ -309,6 +313,7 @@ class Refiner {
   std::uint64_t cap_ = 0, added_ = 0, reported_ = 0;  // reported_: added_ in Stats so far
   bool capped_ = false;
   bool trackChanges_ = false;
+  double shortestSplit2_ = 0;              // squared
   std::vector<std::int32_t> changed_;      // the slots the last resume() rewrote
   std::vector<std::int32_t> winding_;      // per slot
   std::vector<std::int32_t> vertexEdge_;   // per vertex: a half-edge out of it

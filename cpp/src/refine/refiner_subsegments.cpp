@@ -25,6 +25,8 @@ bool Refiner::encroached(std::int32_t e) const {
 void Refiner::queueSubsegment(std::int32_t e, bool forced) {
   const std::uint32_t u = topo_.tri[e], v = topo_.tri[nextEdge(e)];
   if (unsplittable_.count(ConstraintStore::key(u, v))) return;
+  const double dx = x(v) - x(u), dy = y(v) - y(u);
+  if (dx * dx + dy * dy < shortestSplit2_) return;
   subsegments_.push_back({u, v, forced});
 }
 
