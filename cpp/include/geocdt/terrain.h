@@ -64,8 +64,9 @@ struct TerrainStats {
   std::uint64_t scannedPixels = 0;  // pixel errors computed, rescans included
   std::uint64_t steinerPoints = 0;  // added by refinement
   std::uint32_t refineRounds = 0;   // refinements, each followed by insertions where needed
-  // Triangles the last refinement left below minAngle: at breaklines that meet at a smaller
-  // angle, or that run closer than 1/16 pixel, whose pieces it does not split.
+  // Triangles the last refinement left below minAngle: where breaklines meet each other or
+  // the raster's edges at a smaller angle, or run closer than 1/16 pixel (whose pieces it
+  // does not split).
   std::uint64_t refineSkipped = 0;
 };
 

@@ -167,11 +167,11 @@ class Refiner {
   // From trackChanges() on, each resume() lists the slots it rewrote (some more than once):
   // a caller that keeps its own record of every triangle updates those alone.
   void trackChanges() { trackChanges_ = true; }
+  const std::vector<std::int32_t>& changedSlots() const { return changed_; }
   // Subsegments shorter than this are not split (their encroached triangles are left as they
   // are, skipped): where two constraints run closer than a scale that means something (a
   // raster's pixel), refinement would otherwise fill the gap with triangles its width.
   void setShortestSplit(double length) { shortestSplit2_ = length * length; }
-  const std::vector<std::int32_t>& changedSlots() const { return changed_; }
   // The slots' windings after run(), kept up to date through it; empty if run() had nothing
   // to refine.
   void takeWindings(std::vector<std::int32_t>& out) {

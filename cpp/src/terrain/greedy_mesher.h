@@ -53,9 +53,9 @@ class GreedyMesher {
         limits_(limits) {}
 
   // Measures every triangle and border segment of the mesh as it is now: at the start, and
-  // after anything else changed it (refinement), when only the slots that hold another
-  // triangle than they did are measured again. windings: every slot's, when the caller has
-  // them (refinement hands them back), else computed here.
+  // after anything else changed it, when only the slots that hold another triangle than they
+  // did are measured again. windings: every slot's, when the caller has them, else computed
+  // here.
   void measure(std::vector<std::int32_t> windings = {});
   // The same after a change that lists the slots it rewrote, some more than once (a
   // refinement round): only those are looked at. windings: every slot's, with rings.
