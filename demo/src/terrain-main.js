@@ -93,7 +93,9 @@ function showStats(m, request) {
   $('stat-triangles').textContent = n(m.triangles.length / 3);
   $('stat-max-error').textContent = `${stats.maxError.toFixed(2)} m (bound ${
     request.maxError.toFixed(2)} m)`;
-  $('stat-min-angle').textContent = `${smallestAngle(m).toFixed(1)}°`;
+  // Below minAngle only where breaklines meet at a smaller angle or run a hair apart.
+  const skipped = stats.refineSkipped > 0 ? ` (${n(stats.refineSkipped)} triangles below)` : '';
+  $('stat-min-angle').textContent = `${smallestAngle(m).toFixed(1)}°${skipped}`;
   $('stat-steiner').textContent = n(stats.steinerPoints);
   $('stat-decimated').textContent = n(stats.decimated);
   let constrained = 0;

@@ -76,7 +76,7 @@ async function stats() {
       vertices: number('stat-vertices'),
       maxError: Number(text('stat-max-error').split(' ')[0]),
       bound: Number(/bound ([\d.]+)/.exec(text('stat-max-error'))?.[1]),
-      angle: Number(text('stat-min-angle').replace('°', '')),
+      angle: parseFloat(text('stat-min-angle')),
       steiner: number('stat-steiner'),
       decimated: number('stat-decimated'),
       constrained: number('stat-constrained'),
