@@ -56,7 +56,7 @@ void GreedyMesher::measure(std::vector<std::int32_t> windings) {
 }
 
 // Passes over every slot after each refinement round took a tenth of a minAngle mesh's
-// instructions and a third of its last-level misses (bench/EXPERIMENTS.md, TN36).
+// instructions and over a quarter of its last-level read misses (bench/EXPERIMENTS.md, TN36).
 void GreedyMesher::measure(const std::vector<std::int32_t>& changed, const std::int32_t* windings) {
   d_.constraints.scatter();
   grow();
