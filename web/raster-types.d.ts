@@ -68,9 +68,9 @@ export interface RasterStats {
   /** Refinements, each followed by insertions where the refined mesh missed the bound. */
   refineRounds: number;
   /**
-   * Triangles the last refinement left below minAngle: where breaklines meet each other or
-   * the raster's edges at a smaller angle, or run closer than 1/16 pixel (their pieces are not
-   * split that fine).
+   * Triangles of the result below minAngle: where breaklines meet each other or the raster's
+   * edges at a smaller angle, or run closer than 1/16 pixel (their pieces are not split that
+   * fine).
    */
   refineSkipped: number;
   vertices: number;

@@ -301,6 +301,9 @@ Status mesh(Build& b, const RasterSampler& raster, const TerrainOptions& o,
       if (!mesher.run(inserted)) return d.lastError();
       if (inserted == 0) break;
     }
+    // Stopped by the limit: the pixels the last round put back may have made bad triangles,
+    // which the refiner was told of but no resume() counted.
+    if (inserted > 0) stats.refineSkipped = refiner.countLeft();
   }
   stats.maxError = mesher.maxError();
   stats.insertions = mesher.stats().insertions;

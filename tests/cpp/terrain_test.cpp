@@ -19,6 +19,7 @@
 #include "invariants.h"
 #include "point_generators.h"
 #include "raster_file.h"
+#include "refinement_checks.h"
 #include "terrain_checks.h"
 
 namespace geocdt {
@@ -620,6 +621,10 @@ TEST(Terrain, RandomRastersBreaklinesAndHoles) {
     EXPECT_EQ(e.problem, "");
     EXPECT_LE(e.maxError, std::max(o.maxError, 1e-9) * (1 + 1e-12) + 1e-9);
     EXPECT_LE(stats.maxError, std::max(o.maxError, 1e-9));
+    if (o.minAngle > 0)  // what refinement left below minAngle, all of it counted
+      EXPECT_EQ(testing::countBadTriangles(m, o.minAngle, 0, !m.inside.empty()),
+                stats.refineSkipped)
+          << stats.refineRounds << " rounds";
     if (HasFailure()) break;
   }
 }

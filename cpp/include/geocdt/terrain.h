@@ -63,10 +63,10 @@ struct TerrainStats {
   std::uint64_t decimated = 0;      // of them, removed again by decimate
   std::uint64_t scannedPixels = 0;  // pixel errors computed, rescans included
   std::uint64_t steinerPoints = 0;  // added by refinement
-  std::uint32_t refineRounds = 0;   // refinements, each followed by insertions where needed
-  // Triangles the last refinement left below minAngle: where breaklines meet each other or
-  // the raster's edges at a smaller angle, or run closer than 1/16 pixel (whose pieces it
-  // does not split).
+  std::uint32_t refineRounds = 0;   // refinements (8 at most), each followed by insertions
+  // Triangles of the result below minAngle: where breaklines meet each other or the raster's
+  // edges at a smaller angle, or run closer than 1/16 pixel (whose pieces refinement does not
+  // split), and what the pixels put back after the last round made.
   std::uint64_t refineSkipped = 0;
 };
 

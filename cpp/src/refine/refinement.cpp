@@ -285,11 +285,16 @@ Status Refiner::resume() {
   Step step = Step::Go;
   while (step == Step::Go) step = refineSteps(retry, unresolved_);
   if (step == Step::Failed) return d_.lastError();
+  unresolved_.insert(unresolved_.end(), retry.begin(), retry.end());
+  countLeft();
+  return Status::success();
+}
+
+std::uint64_t Refiner::countLeft() {
   // What is left bad: every triangle was checked when it was made, and a bad one queued; a
   // queued one was split (then it is gone, or it is among these), skipped, or is still
   // waiting. A pass over all the slots instead missed the cache for every one of them.
   // (Those left by an earlier resume() that still hold are among them too.)
-  unresolved_.insert(unresolved_.end(), retry.begin(), retry.end());
   bad_.drainInto(unresolved_);
   std::uint64_t left = 0;
   ++epoch_;
@@ -312,7 +317,7 @@ Status Refiner::resume() {
   reported_ = added_;
   d_.stats.refineSkipped = left;
   d_.stats.refineCapped = capped_;
-  return Status::success();
+  return left;
 }
 
 void Refiner::noteInsertion(std::int32_t from, std::uint32_t a, std::uint32_t b,

@@ -161,6 +161,9 @@ class Refiner {
   // vertex; a, b the ends of the edge it split (kGhost for none), a subsegment or not.
   void start();
   Status resume();
+  // Counts what is left bad (into Stats::refineSkipped, returned), as each resume() does at
+  // its end: after insertions of the caller's that no resume() followed.
+  std::uint64_t countLeft();
   void noteInsertion(std::int32_t from, std::uint32_t a, std::uint32_t b, bool onSubsegment);
   // Every slot's winding number, kept up to date (resize to the slots after insertions).
   const std::vector<std::int32_t>& windings() const { return winding_; }
