@@ -193,6 +193,56 @@ test('tiles that share a border get the same vertices along it', () => {
   checkMesh(a, {}, { delaunay: false });  // mapped: rounding may break cocircular ties
 });
 
+test('elevation tiles made a pixel larger from their neighbours match (API.md\'s recipe)', () => {
+  // The DEM as 64 x 64 Terrain-RGB tiles, each 1000 units a side, y = -1000 * row of tiles.
+  const size = 64, extent = 1000;
+  const rgb = (tx, ty) => {
+    const bytes = new Uint8Array(4 * size * size);
+    for (let y = 0; y < size; y++) {
+      for (let x = 0; x < size; x++) {
+        const h = dem.heights[(ty * size + y) * dem.width + tx * size + x];
+        const v = Math.round((h + 10000) * 10), i = 4 * (y * size + x);
+        bytes.set([v >> 16, (v >> 8) & 255, v & 255, 255], i);
+      }
+    }
+    return bytes;
+  };
+  const mesh = (tx, ty, backfill = false) => {
+    const tile = rgb(tx, ty);
+    // backfill: the last column and row copied from the tile itself, as martini's examples do
+    const right = backfill ? tile : rgb(tx + 1, ty), below = backfill ? tile : rgb(tx, ty + 1);
+    const belowRight = backfill ? tile : rgb(tx + 1, ty + 1);
+    const n = size + 1, heights = new Float32Array(n * n);
+    for (let y = 0; y < n; y++) {
+      for (let x = 0; x < n; x++) {
+        const from = y < size ? (x < size ? tile : right) : (x < size ? below : belowRight);
+        const i = backfill ? 4 * (Math.min(y, size - 1) * size + Math.min(x, size - 1))
+          : 4 * ((y % size) * size + (x % size));
+        heights[y * n + x] = -10000 + 0.1 * (from[i] * 65536 + from[i + 1] * 256 + from[i + 2]);
+      }
+    }
+    const west = tx * extent, east = west + extent, north = -ty * extent, south = north - extent;
+    const h = (east - west) / (2 * size), v = (north - south) / (2 * size);
+    return triangulateRaster({ heights, width: n, height: n },
+      { maxError: 3, bbox: [west + h, south - v, east + h, north - v] });
+  };
+  const along = (r, axis, at) => {
+    const out = [];
+    for (let k = 0; k < r.points.length / 2; k++) {
+      if (r.points[2 * k + axis] === at) out.push(`${r.points[2 * k + 1 - axis]} ${r.values[k]}`);
+    }
+    return out.sort();
+  };
+  const tile = mesh(1, 1), right = mesh(2, 1), below = mesh(1, 2);
+  const seamX = 2 * extent + extent / (2 * size), seamY = -2 * extent - extent / (2 * size);
+  const east = along(tile, 0, seamX), south = along(tile, 1, seamY);
+  assert.ok(east.length > 3 && south.length > 3, `${east.length}, ${south.length} seam vertices`);
+  assert.deepEqual(east, along(right, 0, seamX));
+  assert.deepEqual(south, along(below, 1, seamY));
+  // Backfilled, the same seam takes the tile's own last column: the neighbours' meshes part.
+  assert.notDeepEqual(along(mesh(1, 1, true), 0, seamX), along(right, 0, seamX));
+});
+
 test('a flat raster is two triangles, a single row its profile, one pixel one vertex', () => {
   const flat = triangulateRaster({ heights: new Float32Array(64 * 48).fill(7), width: 64,
     height: 48 });
