@@ -4,9 +4,13 @@
 // 257 x 257 crop, the size it needs), alternating in one process, medians of wall and
 // main-thread CPU time. Each mesh's largest error is measured over every pixel, the same way
 // for all (pixel-error.js). Then breaklines and minAngle 20 against geocdt's plain mesh.
-// Prints the targets, met or missed. With --chromium, the comparisons also run in a headless
-// Chromium page (wall time there).
-//   node --expose-gc bench/js/terrain.js [--rounds N] [--quick] [--chromium]
+// Then each one's first call in a fresh process (cold: wall time, medians of --cold-runs
+// processes). Prints the targets, met or missed. With --chromium, the comparisons also run in
+// a headless Chromium page (wall time there), warm and cold (the first call in a fresh page).
+//   node --expose-gc bench/js/terrain.js [--rounds N] [--cold-runs N] [--quick] [--chromium]
+//   node bench/js/terrain.js --first geocdt|geocdt-later|delatin --error E   (one cold call,
+//     printed as JSON)
+import { execFileSync } from 'node:child_process';
 import Delatin from 'delatin';
 import Martini from '@mapbox/martini';
 import { init, triangulateRaster } from 'geocdt';
@@ -21,10 +25,34 @@ const option = (name, fallback) => {
 };
 const quick = process.argv.includes('--quick');
 const rounds = option('--rounds', quick ? 3 : 7);
+const coldRuns = option('--cold-runs', 3);
 const errors = quick ? [5, 20] : [1, 5, 10, 20];
 const n = (x) => x.toLocaleString('en-US');
 const ms = (x) => (x < 10 ? x.toFixed(2) : x.toFixed(1));
 const ratio = (x) => `${x.toFixed(2)}×`;
+
+// One contender's first call in this fresh process, the DEM loaded before it: what a tile's
+// first mesh in a new worker costs. geocdt made at once after init() (its warm-up thread
+// left out), or 1 s after it (the warm-up done, as when the caller fetches its tile).
+const firstOf = process.argv[process.argv.indexOf('--first') + 1];
+if (process.argv.includes('--first')) {
+  const raster = jacksboro(), maxError = option('--error', 5);
+  if (firstOf === 'geocdt') await init({ warmUp: false });
+  if (firstOf === 'geocdt-later') {
+    await init();
+    await new Promise((resolve) => { setTimeout(resolve, 1000); });
+  }
+  const started = performance.now();
+  const triangles = firstOf.startsWith('geocdt')
+    ? triangulateRaster(raster, { maxError }).triangles.length / 3
+    : (() => {
+      const d = new Delatin(raster.heights, raster.width, raster.height);
+      d.run(maxError);
+      return d.triangles.length / 3;
+    })();
+  console.log(JSON.stringify({ ms: performance.now() - started, triangles }));
+  process.exit(0);
+}
 
 await init();
 const cpuClock = threadCpuClock();
@@ -199,6 +227,37 @@ console.log(`## Breaklines and minAngle 20 at 5 m and 20 m, ${rounds} rounds\n`)
   console.log();
 }
 
+// Cold: each contender's first call in a fresh process, the processes alternating.
+const coldErrors = quick ? [5] : [5, 20];
+console.log('## The first call in a fresh Node process (cold; wall time, medians of '
+  + `${coldRuns})\n`);
+{
+  console.log('| max error | geocdt ms, at once after init() | 1 s after init() | delatin ms '
+    + '| geocdt / delatin | triangles, geocdt / delatin |');
+  console.log('|--:|--:|--:|--:|--:|--:|');
+  const fresh = (who, e) => JSON.parse(execFileSync(process.execPath, [
+    new URL(import.meta.url).pathname, '--first', who, '--error', String(e)],
+  { encoding: 'utf8' }).trim().split('\n').pop());
+  for (const e of coldErrors) {
+    const runs = { geocdt: [], 'geocdt-later': [], delatin: [] };
+    let counts;
+    for (let r = 0; r < coldRuns; r++) {
+      for (const who of Object.keys(runs)) {
+        const first = fresh(who, e);
+        runs[who].push(first.ms);
+        counts = { ...counts, [who]: first.triangles };
+      }
+    }
+    const [g, later, d] = Object.values(runs).map(median);
+    console.log(`| ${e} m | ${ms(g)} | ${ms(later)} | ${ms(d)} | ${ratio(g / d)}, `
+      + `${ratio(later / d)} | ${n(counts.geocdt)} / ${n(counts.delatin)} |`);
+    target(`cold, ${e} m: at most 0.25× delatin's time`, g <= 0.25 * d,
+      `${ratio(g / d)} at once after init(), ${ratio(later / d)} 1 s after it (wall: ${ms(g)}`
+      + ` and ${ms(later)} against ${ms(d)} ms)`);
+  }
+  console.log();
+}
+
 // --- Chromium: the same alternations in a page, wall time. ---
 
 // Runs in the page: geocdt (the browser build), delatin and martini on the DEM's bytes.
@@ -249,12 +308,32 @@ async function measureInPage(rounds, errors) {
   return rows;
 }
 
+// Runs in a fresh page: one contender's first call, as --first does in Node.
+async function firstInPage(who, maxError) {
+  const bytes = await (await fetch('/data/dem')).arrayBuffer();
+  const [width, height] = new Uint32Array(bytes, 0, 2);
+  const heights = new Int16Array(bytes, 8, width * height);
+  let run;
+  if (who === 'delatin') {
+    const { default: Delatin } = await import('/node_modules/delatin/index.js');
+    run = () => new Delatin(heights, width, height).run(maxError);
+  } else {
+    const api = await import('/web/index.browser.js');
+    await api.init(who === 'geocdt' ? { warmUp: false } : {});
+    if (who === 'geocdt-later') await new Promise((resolve) => { setTimeout(resolve, 1000); });
+    run = () => api.triangulateRaster({ heights, width, height }, { maxError });
+  }
+  const started = performance.now();
+  run();
+  return performance.now() - started;
+}
+
 async function chromiumRun() {
   const bytes = new Uint8Array(8 + 2 * dem.width * dem.height);
   new Uint32Array(bytes.buffer, 0, 2).set([dem.width, dem.height]);
   new Int16Array(bytes.buffer, 8).set(dem.heights);
-  const rows = await inChromium(measureInPage, [rounds, errors],
-    { data: new Map([['dem', bytes]]) });
+  const data = { data: new Map([['dem', bytes]]) };
+  const rows = await inChromium(measureInPage, [rounds, errors], data);
   console.log(`## Chromium (${rounds} rounds, wall time medians)\n`);
   console.log('| max error | geocdt | delatin | geocdt / delatin | geocdt, crop | martini, crop '
     + '| crop triangles, geocdt / martini |');
@@ -264,6 +343,24 @@ async function chromiumRun() {
       + `${ms(gc.ms)} ms | ${ms(m.ms)} ms | ${ratio(gc.triangles / m.triangles)} |`);
     target(`Chromium, ${e} m: at most 0.25× delatin's time`, g.ms <= 0.25 * d.ms,
       ratio(g.ms / d.ms));
+  }
+  console.log();
+  console.log(`## Chromium, the first call in a fresh page (cold; medians of ${coldRuns})\n`);
+  console.log('| max error | geocdt ms, at once after init() | 1 s after init() | delatin ms '
+    + '| geocdt / delatin |');
+  console.log('|--:|--:|--:|--:|--:|');
+  for (const e of coldErrors) {
+    const runs = { geocdt: [], 'geocdt-later': [], delatin: [] };
+    for (let r = 0; r < coldRuns; r++) {
+      for (const who of Object.keys(runs)) {
+        runs[who].push(await inChromium(firstInPage, [who, e], data));
+      }
+    }
+    const [g, later, d] = Object.values(runs).map(median);
+    console.log(`| ${e} m | ${ms(g)} | ${ms(later)} | ${ms(d)} | ${ratio(g / d)}, `
+      + `${ratio(later / d)} |`);
+    target(`Chromium, cold, ${e} m: at most 0.25× delatin's time`, g <= 0.25 * d,
+      `${ratio(g / d)} at once after init(), ${ratio(later / d)} 1 s after it`);
   }
   console.log();
 }
