@@ -199,9 +199,12 @@ function editWarmUp(Triangulation, next, size) {
 // Runs the warm-up with the worker's own calls (api: its functions and Triangulation class):
 // first a call so small that its time is compiling the functions every call reaches (the
 // caller's call then finds them compiled), then calls long enough for the engine to optimise
-// them: triangulate()'s first, then triangulatePolygons(), then voronoi(),
-// triangulateRaster() and edits. Returns the triangles made (with the Voronoi cells' ring
-// points), which the worker reports when it is done (read by the tests only).
+// them, round after round over every part: triangulate(), triangulatePolygons(), voronoi(),
+// triangulateRaster() and edits. Every part is reached in the first round, so a first call
+// of any of them made while later rounds run finds its code warmed (part after part, the
+// terrain's came 0.7 s after the start, bench/EXPERIMENTS.md, F30). Returns the triangles
+// made (with the Voronoi cells' ring points), which the worker reports when it is done (read
+// by the tests only).
 export function runWarmUp(api, rounds = 3) {
   const { triangulate, triangulatePolygons, voronoi, triangulateRaster, Triangulation } = api;
   let triangles = triangulate({ polylines: [[0, 0, 1, 1, 0, 1, 0, 0], [0.5, -1, 0.5, 2]] },
@@ -209,19 +212,15 @@ export function runWarmUp(api, rounds = 3) {
   const inputs = warmUpInputs();
   const next = random(777);
   const batches = [polygonWarmUpBatch(next, true), polygonWarmUpBatch(next, false)];
-  for (let round = 0; round < rounds; round++) {
-    for (const [input, options] of inputs) triangles += triangulate(input, options).stats.triangles;
-  }
-  // The polygon path after (a caller of triangulate() gets its warm-up as soon as before).
-  for (let round = 0; round < rounds; round++) {
-    for (const batch of batches) triangles += triangulatePolygons(batch).triangles.length / 3;
-  }
-  // Then the cells, the terrain and the edits, whose own code triangulate() does not reach.
+  // The cells, the terrain and the edits have code of their own that triangulate() does not
+  // reach.
   const points = inputs[0][0].points.subarray(0, 2 * 5000);
   const { coords, offsets } = inputs[1][0].polylines;
   const rings = { coords: coords.subarray(0, 2 * offsets[32]), offsets: offsets.subarray(0, 33) };
   const { raster, breaklines } = rasterWarmUp(160, 120);
   for (let round = 0; round < rounds; round++) {
+    for (const [input, options] of inputs) triangles += triangulate(input, options).stats.triangles;
+    for (const batch of batches) triangles += triangulatePolygons(batch).triangles.length / 3;
     triangles += voronoi({ points }).coords.length / 2;
     triangles += voronoi({ points, polylines: rings }).coords.length / 2;
     triangles += triangulateRaster(raster, { maxError: 2, noData: -9999 }).triangles.length / 3;
