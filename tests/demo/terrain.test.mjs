@@ -77,6 +77,8 @@ async function stats() {
       maxError: Number(text('stat-max-error').split(' ')[0]),
       bound: Number(/bound ([\d.]+)/.exec(text('stat-max-error'))?.[1]),
       angle: parseFloat(text('stat-min-angle')),
+      below: Number(/\(([\d,]+) triangles below\)/.exec(text('stat-min-angle'))?.[1]
+        .replace(/,/g, '') ?? 0),
       steiner: number('stat-steiner'),
       decimated: number('stat-decimated'),
       constrained: number('stat-constrained'),
@@ -123,11 +125,15 @@ test('a larger error gives fewer triangles; minAngle gives angles of at least it
   const refined = await stats();
   assert.equal(refined.status, 'ready', refined.error);
   assert.ok(refined.steiner > 0);
-  // Breaklines meet the raster's edges and each other at angles below 20 degrees here and
-  // there: those corners keep theirs. Without them, every angle is at least 20.
+  // Where breaklines meet each other or the raster's edges at a smaller angle, those corners
+  // keep theirs, and the page says how many triangles they leave below (a test below draws
+  // one). Without breaklines, every angle is at least 20.
+  assert.equal(refined.below > 0, refined.angle < 20 - 0.05,
+    `smallest angle ${refined.angle}, ${refined.below} triangles below`);
   await remeshed(() => page.click('#use-breaklines'));
   const plain = await stats();
   assert.ok(plain.angle >= 20 - 0.05, `smallest angle ${plain.angle}`);
+  assert.equal(plain.below, 0);
   assert.ok(plain.maxError <= plain.bound);
   assert.equal(plain.constrained, 0);
   await page.screenshot({ path: join(OUTPUT, 'terrain-refined.png') });
@@ -164,3 +170,25 @@ test('a breakline drawn by clicking becomes constrained edges', async () => {
   assert.equal((await stats()).constrained, 0);
   assert.deepEqual(consoleErrors, []);
 });
+
+test('a breakline folding back on itself keeps its sharp corner, counted below minAngle',
+  async () => {
+    await setSlider('min-angle', 20);
+    const box = await page.locator('#terrain').boundingBox();
+    const at = (fx, fy) => ({ x: box.x + fx * box.width, y: box.y + fy * box.height });
+    // Its two segments meet at b at a few degrees, which refinement cannot open.
+    const a = at(0.2, 0.3), b = at(0.7, 0.55), c = at(0.2, 0.38);
+    await page.mouse.click(a.x, a.y);
+    await page.mouse.click(b.x, b.y);
+    await remeshed(() => page.mouse.dblclick(c.x, c.y));
+    const sharp = await stats();
+    assert.equal(sharp.status, 'ready', sharp.error);
+    assert.ok(sharp.angle < 20 && sharp.below > 0,
+      `smallest angle ${sharp.angle}, ${sharp.below} triangles below`);
+    assert.ok(sharp.maxError <= sharp.bound);
+    await remeshed(() => page.click('#clear-lines'));
+    const cleared = await stats();
+    assert.ok(cleared.angle >= 20 - 0.05 && cleared.below === 0,
+      `smallest angle ${cleared.angle}, ${cleared.below} triangles below`);
+    assert.deepEqual(consoleErrors, []);
+  });
