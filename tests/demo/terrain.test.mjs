@@ -154,14 +154,20 @@ test('decimate removes vertices and triangles, keeping the bound', async () => {
   assert.equal(again.triangles, before.triangles);
 });
 
-test('a breakline drawn by clicking becomes constrained edges', async () => {
-  await setSlider('min-angle', 0);
+// Draws a breakline of three points (fractions of the canvas) as a user does: two clicks and
+// a double click, which ends it; then waits for the page to have meshed again.
+async function drawBreakline([[ax, ay], [bx, by], [cx, cy]]) {
   const box = await page.locator('#terrain').boundingBox();
   const at = (fx, fy) => ({ x: box.x + fx * box.width, y: box.y + fy * box.height });
-  const a = at(0.2, 0.3), b = at(0.5, 0.6), c = at(0.8, 0.4);
+  const a = at(ax, ay), b = at(bx, by), c = at(cx, cy);
   await page.mouse.click(a.x, a.y);
   await page.mouse.click(b.x, b.y);
   await remeshed(() => page.mouse.dblclick(c.x, c.y));
+}
+
+test('a breakline drawn by clicking becomes constrained edges', async () => {
+  await setSlider('min-angle', 0);
+  await drawBreakline([[0.2, 0.3], [0.5, 0.6], [0.8, 0.4]]);
   const s = await stats();
   assert.equal(s.status, 'ready', s.error);
   assert.ok(s.constrained >= 2, `${s.constrained} constrained edges`);
@@ -174,13 +180,9 @@ test('a breakline drawn by clicking becomes constrained edges', async () => {
 test('a breakline folding back on itself keeps its sharp corner, counted below minAngle',
   async () => {
     await setSlider('min-angle', 20);
-    const box = await page.locator('#terrain').boundingBox();
-    const at = (fx, fy) => ({ x: box.x + fx * box.width, y: box.y + fy * box.height });
-    // Its two segments meet at b at a few degrees, which refinement cannot open.
-    const a = at(0.2, 0.3), b = at(0.7, 0.55), c = at(0.2, 0.38);
-    await page.mouse.click(a.x, a.y);
-    await page.mouse.click(b.x, b.y);
-    await remeshed(() => page.mouse.dblclick(c.x, c.y));
+    // Its two segments meet at the middle point at a few degrees, which refinement cannot
+    // open.
+    await drawBreakline([[0.2, 0.3], [0.7, 0.55], [0.2, 0.38]]);
     const sharp = await stats();
     assert.equal(sharp.status, 'ready', sharp.error);
     assert.ok(sharp.angle < 20 && sharp.below > 0,
