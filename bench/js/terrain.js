@@ -33,9 +33,9 @@ const ratio = (x) => `${x.toFixed(2)}×`;
 
 // One contender's first call in this fresh process, the DEM loaded before it: what a tile's
 // first mesh in a new worker costs. geocdt made at once after init() (its warm-up thread
-// left out), or 1 s after it (the warm-up done, as when the caller fetches its tile).
-const firstOf = process.argv[process.argv.indexOf('--first') + 1];
+// left out), or 1 s after it (the warm-up's head start while a caller fetches its tile).
 if (process.argv.includes('--first')) {
+  const firstOf = process.argv[process.argv.indexOf('--first') + 1];
   const raster = jacksboro(), maxError = option('--error', 5);
   if (firstOf === 'geocdt') await init({ warmUp: false });
   if (firstOf === 'geocdt-later') {
@@ -227,36 +227,37 @@ console.log(`## Breaklines and minAngle 20 at 5 m and 20 m, ${rounds} rounds\n`)
   console.log();
 }
 
-// Cold: each contender's first call in a fresh process, the processes alternating.
+// Cold: each contender's first call, firstCall(who, maxError) resolving to { ms, triangles }
+// in a fresh process or page, the three alternating; a table and the targets, as `where`.
 const coldErrors = quick ? [5] : [5, 20];
-console.log('## The first call in a fresh Node process (cold; wall time, medians of '
-  + `${coldRuns})\n`);
-{
+async function coldTable(where, firstCall) {
+  console.log(`## ${where}: the first call (cold; wall time, medians of ${coldRuns})\n`);
   console.log('| max error | geocdt ms, at once after init() | 1 s after init() | delatin ms '
     + '| geocdt / delatin | triangles, geocdt / delatin |');
   console.log('|--:|--:|--:|--:|--:|--:|');
-  const fresh = (who, e) => JSON.parse(execFileSync(process.execPath, [
-    new URL(import.meta.url).pathname, '--first', who, '--error', String(e)],
-  { encoding: 'utf8' }).trim().split('\n').pop());
   for (const e of coldErrors) {
     const runs = { geocdt: [], 'geocdt-later': [], delatin: [] };
-    let counts;
+    const triangles = {};
     for (let r = 0; r < coldRuns; r++) {
       for (const who of Object.keys(runs)) {
-        const first = fresh(who, e);
+        const first = await firstCall(who, e);
         runs[who].push(first.ms);
-        counts = { ...counts, [who]: first.triangles };
+        triangles[who] = first.triangles;
       }
     }
     const [g, later, d] = Object.values(runs).map(median);
     console.log(`| ${e} m | ${ms(g)} | ${ms(later)} | ${ms(d)} | ${ratio(g / d)}, `
-      + `${ratio(later / d)} | ${n(counts.geocdt)} / ${n(counts.delatin)} |`);
-    target(`cold, ${e} m: at most 0.25× delatin's time`, g <= 0.25 * d,
+      + `${ratio(later / d)} | ${n(triangles.geocdt)} / ${n(triangles.delatin)} |`);
+    target(`${where}, cold, ${e} m: at most 0.25× delatin's time`, g <= 0.25 * d,
       `${ratio(g / d)} at once after init(), ${ratio(later / d)} 1 s after it (wall: ${ms(g)}`
       + ` and ${ms(later)} against ${ms(d)} ms)`);
   }
   console.log();
 }
+
+await coldTable('Node, a fresh process', (who, e) => JSON.parse(execFileSync(process.execPath, [
+  new URL(import.meta.url).pathname, '--first', who, '--error', String(e)],
+{ encoding: 'utf8' }).trim().split('\n').pop()));
 
 // --- Chromium: the same alternations in a page, wall time. ---
 
@@ -316,16 +317,21 @@ async function firstInPage(who, maxError) {
   let run;
   if (who === 'delatin') {
     const { default: Delatin } = await import('/node_modules/delatin/index.js');
-    run = () => new Delatin(heights, width, height).run(maxError);
+    run = () => {
+      const d = new Delatin(heights, width, height);
+      d.run(maxError);
+      return d.triangles.length / 3;
+    };
   } else {
     const api = await import('/web/index.browser.js');
     await api.init(who === 'geocdt' ? { warmUp: false } : {});
     if (who === 'geocdt-later') await new Promise((resolve) => { setTimeout(resolve, 1000); });
-    run = () => api.triangulateRaster({ heights, width, height }, { maxError });
+    run = () => api.triangulateRaster({ heights, width, height }, { maxError }).triangles.length
+      / 3;
   }
   const started = performance.now();
-  run();
-  return performance.now() - started;
+  const triangles = run();
+  return { ms: performance.now() - started, triangles };
 }
 
 async function chromiumRun() {
@@ -345,24 +351,7 @@ async function chromiumRun() {
       ratio(g.ms / d.ms));
   }
   console.log();
-  console.log(`## Chromium, the first call in a fresh page (cold; medians of ${coldRuns})\n`);
-  console.log('| max error | geocdt ms, at once after init() | 1 s after init() | delatin ms '
-    + '| geocdt / delatin |');
-  console.log('|--:|--:|--:|--:|--:|');
-  for (const e of coldErrors) {
-    const runs = { geocdt: [], 'geocdt-later': [], delatin: [] };
-    for (let r = 0; r < coldRuns; r++) {
-      for (const who of Object.keys(runs)) {
-        runs[who].push(await inChromium(firstInPage, [who, e], data));
-      }
-    }
-    const [g, later, d] = Object.values(runs).map(median);
-    console.log(`| ${e} m | ${ms(g)} | ${ms(later)} | ${ms(d)} | ${ratio(g / d)}, `
-      + `${ratio(later / d)} |`);
-    target(`Chromium, cold, ${e} m: at most 0.25× delatin's time`, g <= 0.25 * d,
-      `${ratio(g / d)} at once after init(), ${ratio(later / d)} 1 s after it`);
-  }
-  console.log();
+  await coldTable('Chromium, a fresh page', (who, e) => inChromium(firstInPage, [who, e], data));
 }
 
 if (process.argv.includes('--chromium')) await chromiumRun();
