@@ -185,8 +185,8 @@ void GreedyMesher::measureTriangle(std::int32_t t) {
   const std::uint32_t* c = &topo_.tri[3 * t];
   const double* xy = d_.xy.data();
   const auto corner = [&](std::uint32_t v) { return Corner{xy[2 * v], xy[2 * v + 1], z_[v]}; };
-  const ScanResult r =
-      scanTriangle(corner(c[0]), corner(c[1]), corner(c[2]), raster_, skip_.data());
+  const ScanResult r = scanTriangle(corner(c[0]), corner(c[1]), corner(c[2]), raster_, skip_.data(),
+                                    &blocks_, &scratch_);
   stats_.scannedPixels += r.scanned;
   error_[t] = r.error;
   candidate_[t] = r.pixel;
@@ -494,7 +494,7 @@ std::int32_t GreedyMesher::removableEdge(std::uint32_t v) {
   skip_[pixel] = 0;
   for (std::size_t k = 0; k < plan_.size(); k += 3) {
     const ScanResult r = scanTriangle(corner(plan_[k]), corner(plan_[k + 1]), corner(plan_[k + 2]),
-                                      raster_, skip_.data());
+                                      raster_, skip_.data(), &blocks_, &scratch_);
     stats_.scannedPixels += r.scanned;
     if (r.pixel >= 0 && r.error > limits_.maxError) {
       skip_[pixel] = 1;

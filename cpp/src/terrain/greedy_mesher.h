@@ -12,8 +12,10 @@
 #include "delaunay/delaunay.h"
 #include "terrain/border_segments.h"
 #include "terrain/candidate_queue.h"
+#include "terrain/height_blocks.h"
 #include "terrain/raster_sampler.h"
 #include "terrain/tile_order.h"
+#include "terrain/triangle_scan.h"
 
 namespace geocdt::terrain {
 
@@ -147,6 +149,8 @@ class GreedyMesher {
   TileOrder tiles_{raster_.width(), raster_.height()};
   bool tiled_ = false;  // whether the queues rank by tile
   BorderSegments segments_;
+  HeightBlocks blocks_{raster_};  // for scans of large triangles
+  ScanScratch scratch_;
 };
 
 }  // namespace geocdt::terrain

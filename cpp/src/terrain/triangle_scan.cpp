@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "terrain/height_blocks.h"
+
 namespace geocdt::terrain {
 
 namespace {
@@ -62,6 +64,123 @@ void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t f
       if (e > best && !r.skip[rowStart + static_cast<std::size_t>(i)]) {
         best = e;
         bestPixel = static_cast<std::int64_t>(rowStart) + i;
+      }
+    }
+  }
+  out.error = best;
+  out.pixel = bestPixel;
+  out.scanned += scanned;
+}
+
+// A triangle's rows first..last: rows before middle lie between edges lowLeft and lowRight,
+// the others between highLeft and highRight.
+struct RowSpans {
+  Edge lowLeft, lowRight, highLeft, highRight;
+  std::int64_t first, middle, last, lastColumn;
+  // Row j's first and last column, as scanRows finds them (empty when last < first).
+  void of(std::int64_t j, std::int64_t& i0, std::int64_t& i1) const {
+    const Edge& left = j < middle ? lowLeft : highLeft;
+    const Edge& right = j < middle ? lowRight : highRight;
+    const auto y = static_cast<double>(j);
+    i0 = std::max<std::int64_t>(0, ceilOf(left.at(y) - kEdgeReach));
+    i1 = std::min(lastColumn, std::int64_t{floorOf(right.at(y) + kEdgeReach)});
+  }
+};
+
+// The pixels of rows.first..rows.last, block by block: first the block whose heights may lie
+// farthest from the plane, then the others in order, each passed over when its bound is below
+// the largest error found. Ties go to the first pixel in row order, as in scanRows.
+void scanByBlocks(const Rows& r, const RowSpans& rows, const HeightBlocks& blocks,
+                  ScanScratch& scratch, ScanResult& out) {
+  constexpr std::uint32_t kShift = HeightBlocks::kShift;
+  constexpr std::int64_t kSide = HeightBlocks::kSide;
+  const std::int64_t first = rows.first, last = rows.last;
+  if (last < first) return;
+  const Plane& p = r.plane;
+  const double planeSize = std::fabs(p.base) + std::fabs(p.gx) * static_cast<double>(r.width) +
+                           std::fabs(p.gy) * static_cast<double>(last + 1);
+  // Each block's bound: its heights against the plane's lowest and highest over the columns
+  // the block row's rows reach. Those columns come from the block row's first and last rows
+  // and the rows beside the middle corner (where the sides bend), widened by one against
+  // rounding.
+  std::vector<ScanScratch::Block>& todo = scratch.blocks;
+  std::vector<std::int32_t>& spans = scratch.spans;
+  todo.clear();
+  std::size_t largest = 0;
+  const std::int64_t middle = rows.middle;
+  for (std::int64_t row = first >> kShift; row <= last >> kShift; ++row) {
+    const std::int64_t r0 = std::max(first, row << kShift);
+    const std::int64_t r1 = std::min(last, (row << kShift) + kSide - 1);
+    std::int64_t lo = rows.lastColumn + 1, hi = -1;
+    for (const std::int64_t j : {r0, r1, middle - 1, middle}) {
+      if (j < r0 || j > r1) continue;
+      std::int64_t i0, i1;
+      rows.of(j, i0, i1);
+      lo = std::min(lo, i0);
+      hi = std::max(hi, i1);
+    }
+    lo = std::max<std::int64_t>(0, lo - 1);
+    hi = std::min(rows.lastColumn, hi + 1);
+    if (hi < lo) continue;
+    const double y0 = p.gy * static_cast<double>(r0), y1 = p.gy * static_cast<double>(r1);
+    const double yLow = p.base + std::min(y0, y1), yHigh = p.base + std::max(y0, y1);
+    for (std::int64_t column = lo >> kShift; column <= hi >> kShift; ++column) {
+      const float* range =
+          blocks.range(static_cast<std::uint32_t>(column), static_cast<std::uint32_t>(row));
+      const double low = range[0], high = range[1];
+      if (!(low <= high)) continue;  // no height but NaN
+      const double x0 = p.gx * static_cast<double>(std::max(lo, column << kShift));
+      const double x1 = p.gx * static_cast<double>(std::min(hi, (column << kShift) + kSide - 1));
+      const double planeLow = yLow + std::min(x0, x1), planeHigh = yHigh + std::max(x0, x1);
+      // The scan evaluates the plane in another order: a margin far above its rounding.
+      const double margin = 0x1p-40 * (planeSize + std::max(std::fabs(low), std::fabs(high)));
+      const double bound = std::max(high - planeLow, planeHigh - low) + margin;
+      if (!todo.empty() && bound > todo[largest].bound) largest = todo.size();
+      todo.push_back({bound, static_cast<std::uint32_t>(column), static_cast<std::uint32_t>(row)});
+    }
+  }
+  // Each block row's spans, found when one of its blocks is first scanned.
+  const std::int64_t firstBlockRow = first >> kShift;
+  std::vector<std::uint8_t>& found = scratch.found;
+  found.assign(static_cast<std::size_t>((last >> kShift) - firstBlockRow + 1), 0);
+  spans.resize(2 * found.size() * kSide);
+  double best = out.error;
+  std::int64_t bestPixel = out.pixel;
+  std::uint64_t scanned = 0;
+  if (todo.empty()) return;
+  std::swap(todo[0], todo[largest]);
+  for (const ScanScratch::Block& block : todo) {
+    if (block.bound < best) continue;  // (a tie may hold an earlier pixel: scanned)
+    const std::int64_t row = block.row, c0 = std::int64_t{block.column} << kShift;
+    const std::int64_t r0 = std::max(first, row << kShift);
+    const std::int64_t r1 = std::min(last, (row << kShift) + kSide - 1);
+    std::int32_t* span = &spans[static_cast<std::size_t>(2 * ((row - firstBlockRow) << kShift))];
+    if (!found[static_cast<std::size_t>(row - firstBlockRow)]) {
+      found[static_cast<std::size_t>(row - firstBlockRow)] = 1;
+      for (std::int64_t j = r0; j <= r1; ++j) {
+        std::int64_t i0, i1;
+        rows.of(j, i0, i1);
+        span[2 * (j - (row << kShift))] = static_cast<std::int32_t>(i0);
+        span[2 * (j - (row << kShift)) + 1] = static_cast<std::int32_t>(i1);
+      }
+    }
+    for (std::int64_t j = r0; j <= r1; ++j) {
+      const std::int64_t k = 2 * (j - (row << kShift));
+      const std::int64_t i0 = std::max<std::int64_t>(span[k], c0);
+      const std::int64_t i1 = std::min<std::int64_t>(span[k + 1], c0 + kSide - 1);
+      if (i1 < i0) continue;
+      scanned += static_cast<std::uint64_t>(i1 - i0 + 1);
+      const std::size_t rowStart = static_cast<std::size_t>(j) * r.width;
+      const double* line = r.heights + rowStart;
+      const double rowBase = p.base + p.gy * static_cast<double>(j);
+      double x = static_cast<double>(i0);
+      for (std::int64_t i = i0; i <= i1; ++i, x += 1) {
+        const double e = std::fabs(line[i] - (rowBase + p.gx * x));
+        const auto pixel = static_cast<std::int64_t>(rowStart) + i;
+        if (e >= best && (e > best || pixel < bestPixel) && !r.skip[pixel]) {
+          best = e;
+          bestPixel = pixel;
+        }
       }
     }
   }
@@ -135,7 +254,8 @@ bool planeOf(Corner a, Corner b, Corner c, Plane& plane) {
 }
 
 ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raster,
-                        const std::uint8_t* skip) {
+                        const std::uint8_t* skip, const HeightBlocks* blocks,
+                        ScanScratch* scratch) {
   sortCorners(a, b, c);
   ScanResult r;
   const double det = determinant(a, b, c);
@@ -166,6 +286,20 @@ ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raste
   const std::int64_t middle = ceilOf(b.y);
   const std::int64_t last = std::min(lastRow, std::int64_t{floorOf(c.y + kEdgeReach)});
   const bool bRight = det > 0;
+  if (blocks && scratch && std::fabs(det) >= 2 * scratch->fromArea) {
+    const Edge ab = edge(a, b);
+    const Edge bc = b.y < c.y ? edge(b, c) : Edge{b.x, b.y, 0.0};
+    const RowSpans spans{bRight ? ac : ab,
+                         bRight ? ab : ac,
+                         bRight ? ac : bc,
+                         bRight ? bc : ac,
+                         first,
+                         middle,
+                         last,
+                         static_cast<std::int64_t>(raster.width()) - 1};
+    scanByBlocks(rows, spans, *blocks, *scratch, r);
+    return r;
+  }
   if (middle > first) {
     const Edge ab = edge(a, b);
     const std::int64_t end = std::min(middle - 1, last);

@@ -1,8 +1,10 @@
 #pragma once
 // The pixel of a triangle farthest from the triangle's plane: the candidate that greedy
 // insertion puts in next. A row at a time, from edge to edge: each pixel costs a load, a
-// multiply-add and a compare.
+// multiply-add and a compare. A large triangle goes block by block instead, and passes over
+// the blocks whose heights cannot beat the largest error found (height_blocks.h).
 #include <cstdint>
+#include <vector>
 
 #include "terrain/raster_sampler.h"
 
@@ -36,13 +38,38 @@ struct ScanResult {
   std::uint64_t scanned = 0;
 };
 
+class HeightBlocks;
+
+// Triangles this large (in square pixels) and larger are scanned by blocks; below, the
+// blocks' bounds cost about what they save (bench/EXPERIMENTS.md, TN43). The fuzz build
+// lowers it, so that its small rasters go through the blocks too.
+#ifndef GEOCDT_TERRAIN_BLOCK_SCAN_AREA
+#define GEOCDT_TERRAIN_BLOCK_SCAN_AREA 512
+#endif
+constexpr double kBlockScanArea = GEOCDT_TERRAIN_BLOCK_SCAN_AREA;
+
+// What a scan by blocks reuses from call to call.
+struct ScanScratch {
+  double fromArea = kBlockScanArea;  // (tests lower it, to take small triangles by blocks)
+  struct Block {
+    double bound;  // of its pixels' errors
+    std::uint32_t column, row;
+  };
+  std::vector<Block> blocks;
+  std::vector<std::int32_t> spans;  // per row: its first and last column
+  std::vector<std::uint8_t> found;  // per block row: whether spans holds its rows
+};
+
 // Scans the pixels in the closed triangle abc (any orientation, not degenerate), skipping
 // those whose byte in skip is set (vertices, and pixels of the mesh's boundary, which
 // border segments take care of). Where an edge passes exactly through pixels, both
 // triangles beside it scan them. An edge is intersected with a row from its end lower in
 // (y, x) order whichever triangle asks, so that a pixel that rounding puts just outside one
 // of the two is inside the other: every pixel the mesh covers is scanned by some triangle.
+// With blocks and scratch, a triangle of scratch->fromArea or more is scanned block by block:
+// the same result, from fewer pixels.
 ScanResult scanTriangle(Corner a, Corner b, Corner c, const RasterSampler& raster,
-                        const std::uint8_t* skip);
+                        const std::uint8_t* skip, const HeightBlocks* blocks = nullptr,
+                        ScanScratch* scratch = nullptr);
 
 }  // namespace geocdt::terrain
