@@ -2,6 +2,8 @@
 // data; scripts/ensure-deps.sh installs the package for the tests and the demo):
 //   jacksboro()  the Jacksboro fault DEM: 403 x 344 int16 metres, with its lon/lat bounds
 //   topobathy()  a 120 x 91 float32 topography and bathymetry grid, metres
+// and upsampled(raster, k): a raster k times finer, bilinear (the size of a high-resolution
+// model of the same ground).
 import { readFileSync } from 'node:fs';
 import { readNpz } from '../web/npy.js';
 
@@ -34,6 +36,21 @@ export function crop({ heights, width }, size) {
     out.set(heights.subarray(j * width, j * width + size), j * size);
   }
   return { heights: out, width: size, height: size };
+}
+
+// (width - 1) k + 1 by (height - 1) k + 1 float32 heights, bilinear between the pixels.
+export function upsampled({ heights, width, height }, k) {
+  const w = (width - 1) * k + 1, h = (height - 1) * k + 1;
+  const out = new Float32Array(w * h);
+  for (let y = 0; y < h; y++) {
+    const j = Math.min(Math.floor(y / k), height - 2), v = y / k - j;
+    for (let x = 0; x < w; x++) {
+      const i = Math.min(Math.floor(x / k), width - 2), u = x / k - i, p = j * width + i;
+      out[y * w + x] = (heights[p] * (1 - u) + heights[p + 1] * u) * (1 - v)
+        + (heights[p + width] * (1 - u) + heights[p + width + 1] * u) * v;
+    }
+  }
+  return { heights: out, width: w, height: h };
 }
 
 export function topobathy() {

@@ -2,8 +2,9 @@
 // python-matplotlib-data): geocdt's triangulateRaster (wasm; plain, and with decimate)
 // against delatin (greedy Delaunay insertion) and @mapbox/martini (RTIN, on the top-left
 // 257 x 257 crop, the size it needs), alternating in one process, medians of wall and
-// main-thread CPU time. Each mesh's largest error is measured over every pixel, the same way
-// for all (pixel-error.js). Then breaklines and minAngle 20 against geocdt's plain mesh.
+// main-thread CPU time; against delatin on the DEM upsampled 4 times too (no target). Each
+// mesh's largest error is measured over every pixel, the same way for all (pixel-error.js).
+// Then breaklines and minAngle 20 against geocdt's plain mesh.
 // Then each one's first call in a fresh process (cold: wall time, medians of --cold-runs
 // processes). Prints the targets, met or missed. With --chromium, the comparisons also run in
 // a headless Chromium page (wall time there), warm and cold (the first call in a fresh page).
@@ -14,7 +15,7 @@ import { execFileSync } from 'node:child_process';
 import Delatin from 'delatin';
 import Martini from '@mapbox/martini';
 import { init, triangulateRaster } from 'geocdt';
-import { crop, jacksboro } from '../../scripts/usgs-dems.mjs';
+import { crop, jacksboro, upsampled } from '../../scripts/usgs-dems.mjs';
 import { maxPixelError } from './pixel-error.js';
 import { median, threadCpuClock } from './timing.js';
 import { inChromium } from './chromium-page.js';
@@ -57,11 +58,11 @@ if (process.argv.includes('--first')) {
 await init();
 const cpuClock = threadCpuClock();
 
-// Runs the contenders in alternation, round after round; each returns a mesh summary
+// Runs the contenders in alternation, `times` rounds; each returns a mesh summary
 // { triangles, maxError }, measured after the timing from the last run's output.
-function alternate(contenders) {
+function alternate(contenders, times = rounds) {
   const results = contenders.map(() => ({ wall: [], cpu: [], output: null }));
-  for (let round = 0; round < rounds; round++) {
+  for (let round = 0; round < times; round++) {
     for (let k = 0; k < contenders.length; k++) {
       const i = (k + round) % contenders.length;
       globalThis.gc?.();
@@ -144,6 +145,27 @@ console.log(`## Jacksboro DEM, ${dem.width} x ${dem.height}, ${rounds} rounds\n`
     }
   }
   table(rows);
+}
+
+// A high-resolution model's size: the DEM 4 times finer (bilinear), against delatin; no
+// target. Large triangles are scanned by blocks (bench/EXPERIMENTS.md, TN43).
+{
+  const fine = upsampled(dem, 4);
+  const fineRounds = Math.min(rounds, 3);
+  console.log(`## The DEM upsampled 4 times, ${fine.width} x ${fine.height}, ${fineRounds} `
+    + 'rounds\n');
+  const rows = [];
+  for (const e of quick ? [20] : [5, 20]) {
+    const [g, d] = alternate([geocdt(fine, e), delatin(fine, e)], fineRounds);
+    rows.push({ e, r: g }, { e, r: d });
+  }
+  table(rows);
+  const time = (r) => (cpuClock ? r.cpu : r.wall);
+  for (let k = 0; k < rows.length; k += 2) {
+    console.log(`- ${rows[k].e} m: geocdt ${ratio(time(rows[k].r) / time(rows[k + 1].r))} `
+      + `delatin's time, ${ratio(rows[k].r.triangles / rows[k + 1].r.triangles)} its triangles`);
+  }
+  console.log();
 }
 
 // Against martini on the 257 x 257 crop it can take.
