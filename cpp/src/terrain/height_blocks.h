@@ -17,7 +17,6 @@ class HeightBlocks {
 
   explicit HeightBlocks(const RasterSampler& raster);
 
-  std::uint32_t columns() const { return columns_; }
   // Block (column, row)'s lowest and highest height (rounded outwards to floats; NaN left
   // out, which no scan picks): low > high when there are none. Pixels without data count as
   // any other: a scan measures whatever pixel its triangle covers.
