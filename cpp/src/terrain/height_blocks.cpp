@@ -23,12 +23,12 @@ float above(double z) {
 }  // namespace
 
 HeightBlocks::HeightBlocks(const RasterSampler& raster)
-    : columns_((raster.width() + kSide - 1) >> kShift),
-      rows_((raster.height() + kSide - 1) >> kShift),
-      range_(2 * static_cast<std::size_t>(columns_) * rows_) {
+    : columns_((raster.width() + kSide - 1) >> kShift) {
   const std::uint32_t width = raster.width(), height = raster.height();
+  const std::uint32_t rows = (height + kSide - 1) >> kShift;
+  range_.resize(2 * static_cast<std::size_t>(columns_) * rows);
   std::vector<double> low(columns_), high(columns_);
-  for (std::uint32_t row = 0; row < rows_; ++row) {
+  for (std::uint32_t row = 0; row < rows; ++row) {
     std::fill(low.begin(), low.end(), std::numeric_limits<double>::infinity());
     std::fill(high.begin(), high.end(), -std::numeric_limits<double>::infinity());
     for (std::uint32_t j = row << kShift; j < std::min(height, (row + 1) << kShift); ++j) {

@@ -25,7 +25,7 @@ class HeightBlocks {
   }
 
  private:
-  std::uint32_t columns_, rows_;
+  std::uint32_t columns_;
   std::vector<float> range_;
 };
 
