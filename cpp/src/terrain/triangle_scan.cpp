@@ -43,6 +43,14 @@ struct Rows {
   Plane plane;
 };
 
+// Row y's first and last column between left and right, as every scan takes them (empty when
+// i1 < i0).
+void spanOf(const Edge& left, const Edge& right, double y, std::int64_t lastColumn,
+            std::int64_t& i0, std::int64_t& i1) {
+  i0 = std::max<std::int64_t>(0, ceilOf(left.at(y) - kEdgeReach));
+  i1 = std::min(lastColumn, std::int64_t{floorOf(right.at(y) + kEdgeReach)});
+}
+
 void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t first,
               std::int64_t last, ScanResult& out) {
   double best = out.error;
@@ -51,8 +59,8 @@ void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t f
   const auto lastColumn = static_cast<std::int64_t>(r.width) - 1;
   for (std::int64_t j = first; j <= last; ++j) {
     const auto y = static_cast<double>(j);
-    const std::int64_t i0 = std::max<std::int64_t>(0, ceilOf(left.at(y) - kEdgeReach));
-    const std::int64_t i1 = std::min(lastColumn, std::int64_t{floorOf(right.at(y) + kEdgeReach)});
+    std::int64_t i0, i1;
+    spanOf(left, right, y, lastColumn, i0, i1);
     if (i1 < i0) continue;
     scanned += static_cast<std::uint64_t>(i1 - i0 + 1);
     const std::size_t rowStart = static_cast<std::size_t>(j) * r.width;
@@ -77,13 +85,10 @@ void scanRows(const Rows& r, const Edge& left, const Edge& right, std::int64_t f
 struct RowSpans {
   Edge lowLeft, lowRight, highLeft, highRight;
   std::int64_t first, middle, last, lastColumn;
-  // Row j's first and last column, as scanRows finds them (empty when last < first).
+  // Row j's first and last column, as scanRows finds them (empty when i1 < i0).
   void of(std::int64_t j, std::int64_t& i0, std::int64_t& i1) const {
-    const Edge& left = j < middle ? lowLeft : highLeft;
-    const Edge& right = j < middle ? lowRight : highRight;
-    const auto y = static_cast<double>(j);
-    i0 = std::max<std::int64_t>(0, ceilOf(left.at(y) - kEdgeReach));
-    i1 = std::min(lastColumn, std::int64_t{floorOf(right.at(y) + kEdgeReach)});
+    spanOf(j < middle ? lowLeft : highLeft, j < middle ? lowRight : highRight,
+           static_cast<double>(j), lastColumn, i0, i1);
   }
 };
 
