@@ -17,6 +17,7 @@ Delaunay& Delaunay::operator=(Delaunay&& other) noexcept {
   constraints = std::move(other.constraints);
   stats = other.stats;
   steiner = std::move(other.steiner);
+  cocircular = other.cocircular;
   options_ = other.options_;
   grid_ = std::move(other.grid_);
   gridStale_ = other.gridStale_;
@@ -286,8 +287,10 @@ void Delaunay::legalizeAround(std::uint32_t p) {
     const std::uint32_t a = tri[e], b = tri[e + 1], d = tri[fp];
     bool flip;
     if (std::max(std::max(a, b), d) != kGhost) {
-      flip = incircle(q[2 * b], q[2 * b + 1], q[2 * a], q[2 * a + 1], q[2 * d], q[2 * d + 1], px,
-                      py) == Sign::Positive;
+      const Sign side =
+          incircle(q[2 * b], q[2 * b + 1], q[2 * a], q[2 * a + 1], q[2 * d], q[2 * d + 1], px, py);
+      flip = side == Sign::Positive || (side == Sign::Zero && cocircular.flipToPd &&
+                                        cocircular.flipToPd(cocircular.context, a, b, d, p));
     } else if (d == kGhost) {
       flip = false;  // a->b is a hull edge and p lies inside it
     } else {

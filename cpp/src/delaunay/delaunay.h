@@ -59,6 +59,17 @@ class Delaunay {
   Stats stats;
   std::vector<SteinerVertex> steiner;
 
+  // Four points on one circle make two Delaunay triangulations of their quad, and insertion
+  // keeps the edge it finds. A caller may choose instead: asked about edge a->b, the corner d
+  // beyond it and the vertex p being inserted, all four on one circle, true flips a-b to p-d.
+  // Each such flip adds a spoke to p, which no later flip of the insertion takes back.
+  struct CocircularChoice {
+    bool (*flipToPd)(void* context, std::uint32_t a, std::uint32_t b, std::uint32_t d,
+                     std::uint32_t p) = nullptr;
+    void* context = nullptr;
+  };
+  CocircularChoice cocircular;
+
   bool built() const { return built_; }
   // Whether any edge is or was constrained: only then do splits and flips carry the flags;
   // without, every flag in topo.fixed is 0.

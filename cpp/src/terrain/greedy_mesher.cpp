@@ -6,6 +6,7 @@
 
 #include "geocdt/predicates.h"
 #include "labels/slot_windings.h"
+#include "terrain/diagonal_fit.h"
 #include "terrain/triangle_scan.h"
 
 namespace geocdt::terrain {
@@ -77,6 +78,19 @@ void GreedyMesher::measure(const std::vector<std::int32_t>& changed, const std::
   markBoundary();
   for (const std::int32_t t : changed)
     if (rewritten(t)) measureTriangle(t);
+}
+
+// Vertices the refiner adds have no height yet while it inserts them: quads with one keep
+// the edge insertion finds.
+bool GreedyMesher::chooseDiagonal(void* mesher, std::uint32_t a, std::uint32_t b, std::uint32_t d,
+                                  std::uint32_t p) {
+  const GreedyMesher& m = *static_cast<const GreedyMesher*>(mesher);
+  const std::size_t heights = m.z_.size();
+  if (m.skip_.empty() || std::max({a, b, d, p}) >= heights) return false;
+  const double* xy = m.d_.xy.data();
+  const auto corner = [&](std::uint32_t v) { return Corner{xy[2 * v], xy[2 * v + 1], m.z_[v]}; };
+  return otherDiagonalFitsBetter(corner(a), corner(b), corner(d), corner(p), m.raster_,
+                                 m.skip_.data());
 }
 
 // Vertices on pixels are never proposed again.

@@ -52,7 +52,12 @@ class GreedyMesher {
         z_(z),
         given_(given),
         rings_(rings),
-        limits_(limits) {}
+        limits_(limits) {
+    d_.cocircular = {&GreedyMesher::chooseDiagonal, this};
+  }
+  ~GreedyMesher() { d_.cocircular = {}; }
+  GreedyMesher(const GreedyMesher&) = delete;
+  GreedyMesher& operator=(const GreedyMesher&) = delete;
 
   // Measures every triangle and border segment of the mesh as it is now: at the start, and
   // after anything else changed it, when only the slots that hold another triangle than they
@@ -89,6 +94,9 @@ class GreedyMesher {
 
  private:
   bool inside(std::int32_t t) const;
+  // Delaunay's choice between the diagonals of a cocircular quad (diagonal_fit.h).
+  static bool chooseDiagonal(void* mesher, std::uint32_t a, std::uint32_t b, std::uint32_t d,
+                             std::uint32_t p);
   // The queues' ranks (0 until the order is tiled).
   std::uint32_t rankOf(std::uint32_t a, std::uint32_t b, std::uint32_t c) const;
   std::uint32_t triangleRank(std::int32_t t) const;  // of the triangle measured in slot t
