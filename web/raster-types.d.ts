@@ -100,7 +100,7 @@ export interface RasterMesh {
 
 /**
  * A triangulated irregular network (TIN) from a heightmap, by greedy insertion of the pixel
- * farthest from the surface (tile by tile once the mesh has 12,000 triangles): vertices on
+ * farthest from the surface (tile by tile once the mesh has 8,000 triangles): vertices on
  * pixel positions, heights in values.
  * @throws TypeError on wrong types; RangeError on a width or height that does not match
  *   heights.length, NaN heights without noData, a negative maxError, a bad bbox or minAngle;

@@ -492,7 +492,7 @@ TEST(Terrain, LimitsStopAtTheLargestErrorFirst) {
   EXPECT_LE(c.points.size() / 2, 300u);
 }
 
-// Past 12,000 triangles the mesher takes the largest error tile by tile, for the cache;
+// Past 8,000 triangles the mesher takes the largest error tile by tile, for the cache;
 // a limit keeps the largest error first all the way. 30,000 vertices are more than greedy
 // insertion needs for 10 m on the DEM (about 27,800); tile by tile, the tiles after the first
 // would still be far coarser (32 m). The largest error is not quite monotone in the number of

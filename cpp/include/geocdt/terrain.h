@@ -1,7 +1,7 @@
 #pragma once
 // Terrain: a triangulated irregular network (TIN) from a heightmap, by greedy insertion
 // (Garland and Heckbert): the pixel farthest from the surface goes in next (once the mesh has
-// 12,000 triangles, the farthest within each 64-pixel tile, tile after tile, for the cache),
+// 8,000 triangles, the farthest within each 64-pixel tile, tile after tile, for the cache),
 // until every pixel is within maxError of it. Breaklines stay chains of constrained edges, pixels
 // without data are left out, and minAngle refines the triangles' shapes.
 //

@@ -15,7 +15,7 @@
 #define GEOCDT_TERRAIN_TILE_SHIFT 6
 #endif
 #ifndef GEOCDT_TERRAIN_TILES_FROM
-#define GEOCDT_TERRAIN_TILES_FROM 12000
+#define GEOCDT_TERRAIN_TILES_FROM 8000
 #endif
 
 namespace geocdt::terrain {
@@ -23,7 +23,7 @@ namespace geocdt::terrain {
 class TileOrder {
  public:
   static constexpr std::uint32_t kTileShift = GEOCDT_TERRAIN_TILE_SHIFT;  // 64 x 64 pixels
-  // Strict greedy order until the mesh has this many triangles (about 1 MB of mesh and queue).
+  // Strict greedy order until the mesh has this many triangles (under 1 MB of mesh and queue).
   static constexpr std::uint64_t kFromTriangles = GEOCDT_TERRAIN_TILES_FROM;
 
   TileOrder(std::uint32_t width, std::uint32_t height)
