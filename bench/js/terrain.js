@@ -240,8 +240,7 @@ console.log(`## Breaklines and minAngle 20 at 5 m and 20 m, ${rounds} rounds\n`)
     const plain = results[0];
     const time = (r) => (cpuClock ? r.cpu : r.wall);
     // The median of each round's ratio: the two ran side by side in that round, so a drift in
-    // the host's speed over the rounds cancels out of it, as it does not out of the ratio of
-    // the two medians.
+    // the host's speed over the rounds cancels out of it; it stays in the ratio of the medians.
     const paired = (r) => median(r.runs.map((t, round) => t / plain.runs[round]));
     for (const r of results) {
       console.log(`| ${e} m | ${r.name} | ${n(r.triangles)} | ${n(r.steiner)} | ${ms(r.wall)} | `
