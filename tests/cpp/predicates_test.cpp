@@ -17,6 +17,7 @@
 
 #include "exact/predicates_bigint.h"
 #include "exact/predicates_range.h"
+#include "exact/scaled_filters.h"
 #include "geocdt/predicates.h"
 
 namespace geocdt {
@@ -505,6 +506,68 @@ TEST(Predicates, MixedMagnitudesInOneCall) {
   });
   EXPECT_GT(t.too_wide, 1000);
   EXPECT_GT(t.zero, 5000);
+}
+
+// Points in columns far apart, as fuzz_strips once made 33,000 of them (seed 7108): every call
+// spans too many binades for the expansions. Most only overflowed the filter, which decides
+// them on the differences scaled by a power of two; the nearly cocircular ones and the
+// rectangles (exactly cocircular) go to the big integers.
+TEST(Predicates, ColumnsFarApart) {
+  // Columns 1e131 apart, points along them about 1e2 apart, a few with y near 1e-240; a
+  // quarter of the cases are rectangles across two columns.
+  const auto columns = [](Rng& r, double* v) {
+    const auto y = [&r] { return pick(r, 10) ? 1000 * symmetric(r) : 1e-240 * symmetric(r); };
+    for (int i = 0; i < 4; ++i) {
+      v[2 * i] = 7.5464049804045463e+131 * pick(r, 4);
+      v[2 * i + 1] = y();
+    }
+    if (pick(r, 4) == 0) {
+      const double left = v[0], right = v[2] == v[0] ? 2 * v[0] + 1e131 : v[2];
+      const double low = v[1], high = v[3];
+      const double corners[8] = {left, low, right, low, right, high, left, high};
+      const int turn = pick(r, 4);  // which corner comes first, counter-clockwise
+      for (int i = 0; i < 8; ++i) v[i] = corners[(i + 2 * turn) % 8];
+    }
+  };
+  auto t = check_incircle(20000, 41, columns);
+  EXPECT_GT(t.too_wide, 15000);
+  EXPECT_GT(t.zero, 2000);
+  // Columns 1e150 apart with y near 1e-150: orient2d spans too wide.
+  const auto far = [](Rng& r, double* v) {
+    for (int i = 0; i < 3; ++i) {
+      v[2 * i] = 1e150 * pick(r, 3);
+      v[2 * i + 1] = 1e-150 * symmetric(r);
+    }
+  };
+  auto o = check_orient2d(20000, 42, far);
+  EXPECT_GT(o.too_wide, 15000);
+  // The scaled filters alone: each sign they give is the oracle's, and they give most.
+  Rng rng(43);
+  double v[8];
+  int decided = 0, wrong = 0, rectangles = 0, rectangles_decided = 0;
+  for (int i = 0; i < 20000; ++i) {
+    columns(rng, v);
+    const Sign scaled = detail::incircle_scaled_filter(v), expected = oracle_incircle(v);
+    decided += scaled != Sign::Zero;
+    wrong += scaled != Sign::Zero && scaled != expected;
+    if (expected == Sign::Zero) {
+      ++rectangles;
+      rectangles_decided += scaled != Sign::Zero;
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(decided, 8000);
+  EXPECT_GT(rectangles, 2000);
+  EXPECT_EQ(rectangles_decided, 0);
+  decided = 0;
+  for (int i = 0; i < 20000; ++i) {
+    far(rng, v);
+    const Sign scaled = detail::orient2d_scaled_filter(v);
+    decided += scaled != Sign::Zero;
+    wrong += scaled != Sign::Zero && scaled != oracle_orient2d(v);
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(decided, 15000);
 }
 
 TEST(Predicates, SubnormalsAndZeros) {

@@ -13,8 +13,10 @@
 //  - otherwise, when the span from the largest exponent to the lowest significant bit is
 //    at most 950 bits (orient2d) or 475 bits (incircle), all coordinates are multiplied by
 //    one power of two, which is exact and keeps the sign, to land in that window;
-//  - wider spans (say 1e150 with 1e-300, or 1.0 with a subnormal, in one call) are
-//    evaluated with fixed-point big integers on the common lowest exponent.
+//  - wider spans (say 1e150 with 1e-300, or 1.0 with a subnormal, in one call) take the
+//    filter again on the differences scaled by one power of two, which most of them had
+//    only overflowed, and are otherwise evaluated with fixed-point big integers on the
+//    common lowest exponent.
 // So the answers are in fact exact for every finite double; kMaxCoordinate is the limit
 // the triangulation accepts, not a limit of these functions. Non-finite inputs give Zero.
 // Requires IEEE binary64 arithmetic rounding to nearest (x86-64 SSE2, ARM64, wasm). The
@@ -63,25 +65,25 @@ inline constexpr double kUnderflowSlack = 0x1p-1022;
 // EXPERIMENTS.md, P2).
 inline double magnitude(double x) { return std::fabs(x); }
 
-}  // namespace detail
-
-inline Sign orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
-  const double left = (ax - cx) * (by - cy);
-  const double right = (ay - cy) * (bx - cx);
+// The filters, on coordinate differences (each rounded once): Positive or Negative when the
+// bound decides, else whatever undecided() returns (the exact path's answer, for the public
+// predicates).
+template <class Undecided>
+inline Sign orient2d_filter(double acx, double acy, double bcx, double bcy, Undecided undecided) {
+  const double left = acx * bcy;
+  const double right = acy * bcx;
   const double det = left - right;
   const double magnitude = detail::magnitude(left) + detail::magnitude(right);
-  // Overflow makes the bound infinite or NaN, so both tests fail and the exact path runs.
-  const double bound = detail::kOrient2dBound * magnitude + detail::kUnderflowSlack;
+  // Overflow makes the bound infinite or NaN, so both tests fail and undecided() answers.
+  const double bound = kOrient2dBound * magnitude + kUnderflowSlack;
   if (det > bound) return Sign::Positive;
   if (-det > bound) return Sign::Negative;
-  return detail::orient2d_exact(ax, ay, bx, by, cx, cy);
+  return undecided();
 }
 
-inline Sign incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
-                     double dy) {
-  const double adx = ax - dx, ady = ay - dy;
-  const double bdx = bx - dx, bdy = by - dy;
-  const double cdx = cx - dx, cdy = cy - dy;
+template <class Undecided>
+inline Sign incircle_filter(double adx, double ady, double bdx, double bdy, double cdx, double cdy,
+                            Undecided undecided) {
   const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
   const double cdxady = cdx * ady, adxcdy = adx * cdy;
   const double adxbdy = adx * bdy, bdxady = bdx * ady;
@@ -90,17 +92,31 @@ inline Sign incircle(double ax, double ay, double bx, double by, double cx, doub
   const double clift = cdx * cdx + cdy * cdy;
   const double det =
       alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const double across = detail::magnitude(bdxcdy) + detail::magnitude(cdxbdy);
-  const double bcross = detail::magnitude(cdxady) + detail::magnitude(adxcdy);
-  const double ccross = detail::magnitude(adxbdy) + detail::magnitude(bdxady);
+  const double across = magnitude(bdxcdy) + magnitude(cdxbdy);
+  const double bcross = magnitude(cdxady) + magnitude(adxcdy);
+  const double ccross = magnitude(adxbdy) + magnitude(bdxady);
   const double permanent = alift * across + blift * bcross + clift * ccross;
   // An underflowing product's absolute error gets multiplied by a lift or a cross term:
   // bound those amplifiers by their sum.
   const double amplifiers = (alift + blift + clift) + (across + bcross + ccross) + 1.0;
-  const double bound = detail::kIncircleBound * permanent + detail::kUnderflowSlack * amplifiers;
+  const double bound = kIncircleBound * permanent + kUnderflowSlack * amplifiers;
   if (det > bound) return Sign::Positive;
   if (-det > bound) return Sign::Negative;
-  return detail::incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
+  return undecided();
+}
+
+}  // namespace detail
+
+inline Sign orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
+  return detail::orient2d_filter(ax - cx, ay - cy, bx - cx, by - cy,
+                                 [&] { return detail::orient2d_exact(ax, ay, bx, by, cx, cy); });
+}
+
+inline Sign incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                     double dy) {
+  return detail::incircle_filter(ax - dx, ay - dy, bx - dx, by - dy, cx - dx, cy - dy, [&] {
+    return detail::incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
+  });
 }
 
 }  // namespace geocdt

@@ -7,6 +7,7 @@
 #include "exact/expansion.h"
 #include "exact/predicates_bigint.h"
 #include "exact/predicates_range.h"
+#include "exact/scaled_filters.h"
 
 namespace geocdt::detail {
 namespace {
@@ -219,7 +220,10 @@ Sign orient2d_exact(double ax, double ay, double bx, double by, double cx, doubl
   switch (range.range) {
     case Range::NotFinite:
     case Range::AllZero: return Sign::Zero;
-    case Range::TooWide: return orient2d_bigint(v);
+    case Range::TooWide: {
+      const Sign scaled = orient2d_scaled_filter(v);
+      return scaled != Sign::Zero ? scaled : orient2d_bigint(v);
+    }
     case Range::Shiftable: shift_exponents(v, 6, range.shift); break;
     case Range::Inside: break;
   }
@@ -235,7 +239,10 @@ Sign incircle_exact(double ax, double ay, double bx, double by, double cx, doubl
   switch (range.range) {
     case Range::NotFinite:
     case Range::AllZero: return Sign::Zero;
-    case Range::TooWide: return incircle_bigint(v);
+    case Range::TooWide: {
+      const Sign scaled = incircle_scaled_filter(v);
+      return scaled != Sign::Zero ? scaled : incircle_bigint(v);
+    }
     case Range::Shiftable: shift_exponents(v, 8, range.shift); break;
     case Range::Inside: break;
   }
