@@ -525,7 +525,7 @@ TEST(Predicates, ColumnsFarApart) {
       const double left = v[0], right = v[2] == v[0] ? 2 * v[0] + 1e131 : v[2];
       const double low = v[1], high = v[3];
       const double corners[8] = {left, low, right, low, right, high, left, high};
-      const int turn = pick(r, 4);  // which corner comes first, counter-clockwise
+      const int turn = pick(r, 4);  // which corner comes first
       for (int i = 0; i < 8; ++i) v[i] = corners[(i + 2 * turn) % 8];
     }
   };
@@ -544,21 +544,21 @@ TEST(Predicates, ColumnsFarApart) {
   // The scaled filters alone: each sign they give is the oracle's, and they give most.
   Rng rng(43);
   double v[8];
-  int decided = 0, wrong = 0, rectangles = 0, rectangles_decided = 0;
+  int decided = 0, wrong = 0, cocircular = 0, cocircular_decided = 0;
   for (int i = 0; i < 20000; ++i) {
     columns(rng, v);
     const Sign scaled = detail::incircle_scaled_filter(v), expected = oracle_incircle(v);
     decided += scaled != Sign::Zero;
     wrong += scaled != Sign::Zero && scaled != expected;
     if (expected == Sign::Zero) {
-      ++rectangles;
-      rectangles_decided += scaled != Sign::Zero;
+      ++cocircular;
+      cocircular_decided += scaled != Sign::Zero;
     }
   }
   EXPECT_EQ(wrong, 0);
   EXPECT_GT(decided, 8000);
-  EXPECT_GT(rectangles, 2000);
-  EXPECT_EQ(rectangles_decided, 0);
+  EXPECT_GT(cocircular, 2000);
+  EXPECT_EQ(cocircular_decided, 0);
   decided = 0;
   for (int i = 0; i < 20000; ++i) {
     far(rng, v);
